@@ -1,0 +1,37 @@
+// The jumoctl command dispatcher: picks the command from the arguments, gives every
+// command its own --help, and reports errors on stderr with a non-zero exit code.
+#pragma once
+
+#include <QObject>
+#include <QStringList>
+#include <QTextStream>
+
+#include <optional>
+
+namespace jumo {
+
+class FamilyRegistry;
+
+class CommandLineTool : public QObject
+{
+    Q_OBJECT
+
+public:
+    CommandLineTool(QTextStream &out, QTextStream &err, QObject *parent = nullptr);
+    ~CommandLineTool() override;
+
+    // Runs a command. Returns its exit code, or nullopt when the command works on the
+    // event loop and will emit finished() later.
+    std::optional<int> run(const QStringList &arguments);
+
+signals:
+    void finished(int exitCode);
+
+private:
+    QString usage() const;
+
+    QTextStream &m_out;
+    QTextStream &m_err;
+};
+
+} // namespace jumo

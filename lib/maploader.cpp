@@ -1,0 +1,548 @@
+#include "maploader.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLoggingCategory>
+#include <QRegularExpression>
+#include <QSet>
+
+#include <cmath>
+
+Q_LOGGING_CATEGORY(lcMap, "jumo.map")
+
+namespace jumo {
+
+namespace {
+
+const QRegularExpression &idPattern()
+{
+    static const QRegularExpression pattern(QStringLiteral("^[a-z][a-z0-9_]*$"));
+    return pattern;
+}
+
+const QRegularExpression &addressPattern()
+{
+    static const QRegularExpression pattern(QStringLiteral("^0x[0-9A-Fa-f]{4}$"));
+    return pattern;
+}
+
+// Walks one JSON document and collects every problem instead of stopping at the first,
+// so a user fixing a file sees all that is wrong in one go.
+class MapParser
+{
+    Q_DECLARE_TR_FUNCTIONS(jumo::MapLoader)
+
+public:
+    explicit MapParser(QString source) : m_source(std::move(source)) { }
+
+    MapLoadResult parse(const QByteArray &json)
+    {
+        QJsonParseError parseError;
+        const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
+        if (parseError.error != QJsonParseError::NoError) {
+            fail(QString(), tr("malformed JSON at byte %1: %2").arg(parseError.offset).arg(parseError.errorString()));
+            return finish(std::nullopt);
+        }
+        if (!doc.isObject()) {
+            fail(QString(), tr("the top level must be a JSON object"));
+            return finish(std::nullopt);
+        }
+        return finish(parseMap(doc.object()));
+    }
+
+private:
+    QString m_source;
+    QStringList m_errors;
+
+    void fail(const QString &where, const QString &problem)
+    {
+        m_errors << (where.isEmpty() ? QStringLiteral("%1: %2").arg(m_source, problem)
+                                     : QStringLiteral("%1: %2: %3").arg(m_source, where, problem));
+    }
+
+    MapLoadResult finish(std::optional<RegisterMap> map)
+    {
+        MapLoadResult result;
+        result.errors = m_errors;
+        if (m_errors.isEmpty())
+            result.map = std::move(map);
+        for (const QString &e : std::as_const(m_errors))
+            qCDebug(lcMap).noquote() << e;
+        return result;
+    }
+
+    void checkKeys(const QJsonObject &object, const QStringList &allowed, const QString &where)
+    {
+        for (auto it = object.begin(); it != object.end(); ++it) {
+            if (!allowed.contains(it.key()))
+                fail(where, tr("unknown key '%1'").arg(it.key()));
+        }
+    }
+
+    QString requireString(const QJsonObject &object, const QString &key, const QString &where)
+    {
+        const QJsonValue v = object.value(key);
+        if (!v.isString() || v.toString().isEmpty()) {
+            fail(where, tr("'%1' is missing or not a non-empty string").arg(key));
+            return {};
+        }
+        return v.toString();
+    }
+
+    std::optional<int> optionalInt(const QJsonObject &object, const QString &key, const QString &where)
+    {
+        const QJsonValue v = object.value(key);
+        if (v.isUndefined() || v.isNull())
+            return std::nullopt;
+        if (!v.isDouble() || std::floor(v.toDouble()) != v.toDouble()) {
+            fail(where, tr("'%1' must be a whole number").arg(key));
+            return std::nullopt;
+        }
+        return v.toInt();
+    }
+
+    int requireInt(const QJsonObject &object, const QString &key, const QString &where)
+    {
+        if (!object.contains(key)) {
+            fail(where, tr("'%1' is missing").arg(key));
+            return 0;
+        }
+        return optionalInt(object, key, where).value_or(0);
+    }
+
+    std::optional<double> optionalNumber(const QJsonObject &object, const QString &key, const QString &where)
+    {
+        const QJsonValue v = object.value(key);
+        if (v.isUndefined() || v.isNull())
+            return std::nullopt;
+        if (!v.isDouble()) {
+            fail(where, tr("'%1' must be a number").arg(key));
+            return std::nullopt;
+        }
+        return v.toDouble();
+    }
+
+    std::optional<quint16> parseHex16(const QJsonValue &value, const QString &key, const QString &where)
+    {
+        const QString text = value.toString();
+        if (!value.isString() || !addressPattern().match(text).hasMatch()) {
+            fail(where, tr("'%1' must be 0x followed by 4 hex digits, not '%2'")
+                            .arg(key, value.isString() ? text : QJsonDocument(QJsonArray{value}).toJson(QJsonDocument::Compact)));
+            return std::nullopt;
+        }
+        return quint16(text.mid(2).toUInt(nullptr, 16));
+    }
+
+    QList<int> intList(const QJsonObject &object, const QString &key, const QString &where)
+    {
+        QList<int> out;
+        const QJsonValue v = object.value(key);
+        if (!v.isArray() || v.toArray().isEmpty()) {
+            fail(where, tr("'%1' must be a non-empty array of numbers").arg(key));
+            return out;
+        }
+        for (const QJsonValue &item : v.toArray()) {
+            if (!item.isDouble())
+                fail(where, tr("'%1' must contain only numbers").arg(key));
+            else
+                out << item.toInt();
+        }
+        return out;
+    }
+
+    std::optional<RegisterMap> parseMap(const QJsonObject &root)
+    {
+        checkKeys(root, {"format", "family", "name", "models", "manual", "description", "protocol",
+                         "identify", "scanPriority", "exceptions", "errorValues", "entries"},
+                  QString());
+        RegisterMap map;
+        map.sourceFile = m_source;
+        if (root.value("format").toInt(-1) != 1)
+            fail(QString(), tr("'format' must be 1"));
+        map.family = requireString(root, "family", QString());
+        if (!map.family.isEmpty() && !idPattern().match(map.family).hasMatch())
+            fail(QString(), tr("family id '%1' must be lower case letters, digits and '_'").arg(map.family));
+        map.name = requireString(root, "name", QString());
+        map.manual = root.value("manual").toString();
+        map.description = root.value("description").toString();
+        for (const QJsonValue &m : root.value("models").toArray())
+            map.models << m.toString();
+        map.scanPriority = optionalInt(root, "scanPriority", QString()).value_or(100);
+
+        parseProtocol(root.value("protocol"), map.protocol);
+        parseIdentify(root.value("identify"), map.identify);
+        parseExceptions(root.value("exceptions"), map.exceptions);
+        parseErrorValues(root, map.errorValues);
+
+        const QJsonValue entries = root.value("entries");
+        if (!entries.isArray() || entries.toArray().isEmpty()) {
+            fail(QString(), tr("'entries' must be a non-empty array"));
+            return std::nullopt;
+        }
+        QList<RegisterEntry> parsed;
+        int index = 0;
+        for (const QJsonValue &value : entries.toArray()) {
+            if (std::optional<RegisterEntry> e = parseEntry(value, index++))
+                parsed << *e;
+        }
+        checkEntries(parsed);
+        map.setEntries(std::move(parsed));
+        return map;
+    }
+
+    void parseProtocol(const QJsonValue &value, ProtocolInfo &p)
+    {
+        const QString where = QStringLiteral("protocol");
+        if (!value.isObject()) {
+            fail(QString(), tr("'protocol' must be an object"));
+            return;
+        }
+        const QJsonObject o = value.toObject();
+        checkKeys(o, {"readFunctions", "writeFunctions", "maxReadWords", "maxWriteWords", "floatWordOrder",
+                      "int32WordOrder", "baudRates", "dataFormats", "addressMin", "addressMax",
+                      "alwaysAnswersAddress", "broadcast", "processingTimeMaxMs", "turnaroundMs",
+                      "minResponseTimeMaxMs", "busErrorTimeoutMs", "notes"},
+                  where);
+        p.readFunctions = intList(o, "readFunctions", where);
+        p.writeFunctions = intList(o, "writeFunctions", where);
+        p.maxReadWords = requireInt(o, "maxReadWords", where);
+        p.maxWriteWords = requireInt(o, "maxWriteWords", where);
+        if (p.maxReadWords < 1 || p.maxReadWords > 127)
+            fail(where, tr("'maxReadWords' must be 1..127, not %1").arg(p.maxReadWords));
+        if (p.maxWriteWords < 1 || p.maxWriteWords > 127)
+            fail(where, tr("'maxWriteWords' must be 1..127, not %1").arg(p.maxWriteWords));
+        for (const char *key : {"floatWordOrder", "int32WordOrder"}) {
+            const QString name = o.value(key).toString();
+            const std::optional<WordOrder> order = wordOrderFromName(name);
+            if (!order)
+                fail(where, tr("'%1' must be ABCD, CDAB, BADC or DCBA, not '%2'").arg(key, name));
+            else if (QLatin1String(key) == QLatin1String("floatWordOrder"))
+                p.floatWordOrder = *order;
+            else
+                p.int32WordOrder = *order;
+        }
+        p.baudRates = intList(o, "baudRates", where);
+        for (const QJsonValue &f : o.value("dataFormats").toArray()) {
+            static const QStringList known{"8N1", "8E1", "8O1", "8N2"};
+            if (!known.contains(f.toString()))
+                fail(where, tr("unknown data format '%1'").arg(f.toString()));
+            p.dataFormats << f.toString();
+        }
+        if (p.dataFormats.isEmpty())
+            fail(where, tr("'dataFormats' must list at least one format"));
+        p.addressMin = requireInt(o, "addressMin", where);
+        p.addressMax = requireInt(o, "addressMax", where);
+        if (p.addressMin < 1 || p.addressMax > 255 || p.addressMin > p.addressMax)
+            fail(where, tr("address range %1..%2 is not within 1..255").arg(p.addressMin).arg(p.addressMax));
+        p.alwaysAnswersAddress = optionalInt(o, "alwaysAnswersAddress", where);
+        p.broadcast = o.value("broadcast").toBool(false);
+        p.processingTimeMaxMs = optionalNumber(o, "processingTimeMaxMs", where).value_or(-1);
+        if (p.processingTimeMaxMs < 0)
+            fail(where, tr("'processingTimeMaxMs' is missing or negative"));
+        p.turnaroundMs = optionalNumber(o, "turnaroundMs", where).value_or(0);
+        p.minResponseTimeMaxMs = optionalNumber(o, "minResponseTimeMaxMs", where).value_or(0);
+        p.busErrorTimeoutMs = optionalInt(o, "busErrorTimeoutMs", where);
+        p.notes = o.value("notes").toString();
+    }
+
+    void parseIdentify(const QJsonValue &value, QList<IdentifyProbe> &probes)
+    {
+        if (!value.isArray() || value.toArray().isEmpty()) {
+            fail(QString(), tr("'identify' must be a non-empty array of probes"));
+            return;
+        }
+        int index = 0;
+        for (const QJsonValue &v : value.toArray()) {
+            const QString where = QStringLiteral("identify[%1]").arg(index++);
+            const QJsonObject o = v.toObject();
+            checkKeys(o, {"address", "words", "textContains", "maskNonZero", "answers", "exception"}, where);
+            IdentifyProbe probe;
+            probe.address = parseHex16(o.value("address"), "address", where).value_or(0);
+            probe.words = o.value("words").toInt(1);
+            int tests = 0;
+            if (o.contains("textContains")) {
+                probe.test = ProbeTest::TextContains;
+                probe.text = o.value("textContains").toString();
+                ++tests;
+            }
+            if (o.contains("maskNonZero")) {
+                probe.test = ProbeTest::MaskNonZero;
+                probe.mask = parseHex16(o.value("maskNonZero"), "maskNonZero", where).value_or(0);
+                ++tests;
+            }
+            if (o.contains("answers")) {
+                probe.test = ProbeTest::Answers;
+                ++tests;
+            }
+            if (o.contains("exception")) {
+                probe.test = ProbeTest::Exception;
+                probe.exceptionCode = o.value("exception").toInt();
+                ++tests;
+            }
+            if (tests != 1)
+                fail(where, tr("a probe needs exactly one of textContains, maskNonZero, answers, exception"));
+            if (probe.words < 1 || probe.words > 125)
+                fail(where, tr("'words' must be 1..125"));
+            probes << probe;
+        }
+    }
+
+    void parseExceptions(const QJsonValue &value, QMap<int, QString> &exceptions)
+    {
+        if (!value.isObject() || value.toObject().isEmpty()) {
+            fail(QString(), tr("'exceptions' must be an object mapping codes to meanings"));
+            return;
+        }
+        const QJsonObject o = value.toObject();
+        for (auto it = o.begin(); it != o.end(); ++it) {
+            bool ok = false;
+            const int code = it.key().toInt(&ok);
+            if (!ok || code < 1 || code > 255 || !it.value().isString())
+                fail(QStringLiteral("exceptions"), tr("'%1' is not an exception code with a text").arg(it.key()));
+            else
+                exceptions.insert(code, it.value().toString());
+        }
+    }
+
+    void parseErrorValues(const QJsonObject &root, std::optional<ErrorValueTexts> &out)
+    {
+        const QJsonValue value = root.value("errorValues");
+        if (value.isNull())
+            return;
+        if (!value.isObject()) {
+            fail(QString(), tr("'errorValues' must be an object or null"));
+            return;
+        }
+        const QJsonObject o = value.toObject();
+        const QString where = QStringLiteral("errorValues");
+        checkKeys(o, {"underrange", "overrange", "invalid"}, where);
+        out = ErrorValueTexts{requireString(o, "underrange", where), requireString(o, "overrange", where),
+                              requireString(o, "invalid", where)};
+    }
+
+    std::optional<RegisterEntry> parseEntry(const QJsonValue &value, int index)
+    {
+        if (!value.isObject()) {
+            fail(tr("entry #%1").arg(index), tr("an entry must be an object"));
+            return std::nullopt;
+        }
+        const QJsonObject o = value.toObject();
+        RegisterEntry e;
+        const QString rawId = o.value("id").toString();
+        const QString where = rawId.isEmpty()
+                ? tr("entry #%1 (%2)").arg(index).arg(o.value("address").toString())
+                : tr("entry '%1' (%2)").arg(rawId, o.value("address").toString());
+        const int errorsBefore = m_errors.size();
+
+        checkKeys(o, {"address", "id", "label", "type", "bytes", "words", "access", "storage", "unit", "group",
+                      "min", "max", "values", "bits", "activation", "control", "restoreValue", "precondition",
+                      "reserved", "alias", "notes", "erratum"},
+                  where);
+        e.address = parseHex16(o.value("address"), "address", where).value_or(0);
+        e.id = requireString(o, "id", where);
+        if (!e.id.isEmpty() && !idPattern().match(e.id).hasMatch())
+            fail(where, tr("id must be lower case letters, digits and '_'"));
+        e.label = requireString(o, "label", where);
+        e.group = requireString(o, "group", where);
+
+        const QString typeName = o.value("type").toString();
+        if (const std::optional<ValueType> t = valueTypeFromName(typeName))
+            e.type = *t;
+        else
+            fail(where, tr("unknown type '%1' (expected float, int16, uint16, int32, uint32, bool, enum, bitfield or text)")
+                            .arg(typeName));
+
+        const QString accessText = o.value("access").toString();
+        if (const std::optional<Access> a = accessFromName(accessText))
+            e.access = *a;
+        else
+            fail(where, tr("unknown access '%1' (expected R, W or RW)").arg(accessText));
+
+        const QString storageText = o.value("storage").toString();
+        if (storageText == QLatin1String("RAM"))
+            e.storage = Storage::Ram;
+        else if (storageText == QLatin1String("EEPROM"))
+            e.storage = Storage::Eeprom;
+        else if (!storageText.isEmpty())
+            fail(where, tr("unknown storage '%1' (expected RAM or EEPROM)").arg(storageText));
+        if (e.storage != Storage::None && e.access == Access::Read)
+            fail(where, tr("a read-only entry cannot have a storage"));
+
+        e.reserved = o.value("reserved").toBool(false);
+        if (e.type == ValueType::Text) {
+            e.textBytes = optionalInt(o, "bytes", where).value_or(0);
+            if (e.textBytes < 2)
+                fail(where, tr("a text needs 'bytes' (at least 2, including the NUL)"));
+        } else if (o.contains("bytes")) {
+            fail(where, tr("'bytes' is only for texts"));
+        }
+        if (o.contains("words")) {
+            e.reservedWords = optionalInt(o, "words", where).value_or(0);
+            if (!e.reserved || e.reservedWords < 1)
+                fail(where, tr("'words' is only for reserved blocks and must be at least 1"));
+        }
+
+        e.unit = o.value("unit").toString();
+        e.minimum = optionalNumber(o, "min", where);
+        e.maximum = optionalNumber(o, "max", where);
+        if (e.minimum && e.maximum && *e.minimum > *e.maximum)
+            fail(where, tr("'min' is greater than 'max'"));
+        e.control = o.value("control").toString();
+        static const QStringList controls{"setpoint", "analog_output", "digital_output", "external_input", "alpha",
+                                          "setpoint_select", "parameter_set_select", "binary_outputs", "command",
+                                          "override", "program", "parameter"};
+        if (!e.control.isEmpty() && !controls.contains(e.control))
+            fail(where, tr("unknown control '%1'").arg(e.control));
+        if (!e.control.isEmpty() && !e.isWritable())
+            fail(where, tr("a control needs a writable entry"));
+        e.restoreValue = optionalNumber(o, "restoreValue", where);
+        e.precondition = o.value("precondition").toString();
+        e.alias = o.value("alias").toString();
+        e.notes = o.value("notes").toString();
+        e.erratum = o.value("erratum").toString();
+        if (o.contains("activation"))
+            e.activationMask = parseHex16(o.value("activation"), "activation", where);
+
+        parseEnumValues(o, e, where);
+        parseBits(o, e, where);
+
+        if (m_errors.size() != errorsBefore)
+            return std::nullopt;
+        return e;
+    }
+
+    void parseEnumValues(const QJsonObject &o, RegisterEntry &e, const QString &where)
+    {
+        const QJsonValue values = o.value("values");
+        if (e.type != ValueType::Enum) {
+            if (!values.isUndefined())
+                fail(where, tr("'values' is only for enums"));
+            return;
+        }
+        if (!values.isObject() || values.toObject().isEmpty()) {
+            fail(where, tr("an enum needs 'values'"));
+            return;
+        }
+        const QJsonObject v = values.toObject();
+        for (auto it = v.begin(); it != v.end(); ++it) {
+            bool ok = false;
+            const int key = it.key().toInt(&ok);
+            if (!ok || key < 0 || key > 0xFFFF || !it.value().isString())
+                fail(where, tr("enum value '%1' must be a number 0..65535 with a text").arg(it.key()));
+            else
+                e.enumValues.insert(key, it.value().toString());
+        }
+    }
+
+    void parseBits(const QJsonObject &o, RegisterEntry &e, const QString &where)
+    {
+        const QJsonValue bits = o.value("bits");
+        if (e.type != ValueType::Bitfield) {
+            if (!bits.isUndefined())
+                fail(where, tr("'bits' is only for bit fields"));
+            return;
+        }
+        if (!bits.isArray() || bits.toArray().isEmpty()) {
+            fail(where, tr("a bit field needs 'bits'"));
+            return;
+        }
+        quint16 used = 0;
+        QSet<QString> ids;
+        for (const QJsonValue &value : bits.toArray()) {
+            const QJsonObject b = value.toObject();
+            BitDefinition def;
+            def.bit = b.value("bit").toInt(-1);
+            def.width = b.value("width").toInt(1);
+            def.id = b.value("id").toString();
+            def.label = b.value("label").toString();
+            def.reserved = b.value("reserved").toBool(false);
+            def.notes = b.value("notes").toString();
+            def.erratum = b.value("erratum").toString();
+            const QString bitWhere = tr("%1, bit %2").arg(where).arg(b.value("bit").toVariant().toString());
+            checkKeys(b, {"bit", "width", "id", "label", "kind", "reserved", "notes", "erratum"}, bitWhere);
+            if (!b.value("bit").isDouble() || def.bit < 0 || def.bit > 15) {
+                fail(bitWhere, tr("bit number must be 0..15"));
+                continue;
+            }
+            if (def.width < 1 || def.bit + def.width > 16) {
+                fail(bitWhere, tr("bit field of width %1 does not fit in 16 bits").arg(def.width));
+                continue;
+            }
+            if (def.id.isEmpty() || !idPattern().match(def.id).hasMatch())
+                fail(bitWhere, tr("a bit needs an id of lower case letters, digits and '_'"));
+            else if (ids.contains(def.id))
+                fail(bitWhere, tr("duplicate bit id '%1'").arg(def.id));
+            ids.insert(def.id);
+            if (def.label.isEmpty())
+                fail(bitWhere, tr("a bit needs a label"));
+            const QString kindText = b.value("kind").toString();
+            if (const std::optional<BitKind> k = bitKindFromName(kindText))
+                def.kind = *k;
+            else
+                fail(bitWhere, tr("unknown kind '%1' (expected alarm, warning, status or command)").arg(kindText));
+            if (used & def.mask())
+                fail(bitWhere, tr("bit defined twice"));
+            used |= def.mask();
+            e.bits << def;
+        }
+    }
+
+    // Checks that need all entries: unique ids, aliases, overlapping word ranges.
+    void checkEntries(const QList<RegisterEntry> &entries)
+    {
+        QHash<QString, const RegisterEntry *> byId;
+        for (const RegisterEntry &e : entries) {
+            if (byId.contains(e.id))
+                fail(tr("entry '%1' (%2)").arg(e.id, formatAddress(e.address)),
+                     tr("duplicate id (also at %1)").arg(formatAddress(byId.value(e.id)->address)));
+            byId.insert(e.id, &e);
+        }
+        for (const RegisterEntry &e : entries) {
+            if (!e.alias.isEmpty() && !byId.contains(e.alias))
+                fail(tr("entry '%1'").arg(e.id), tr("alias of unknown entry '%1'").arg(e.alias));
+            if (int(e.address) + e.wordCount() > 0x10000)
+                fail(tr("entry '%1'").arg(e.id), tr("runs past address 0xFFFF"));
+        }
+        QList<const RegisterEntry *> sorted;
+        for (const RegisterEntry &e : entries)
+            sorted << &e;
+        std::stable_sort(sorted.begin(), sorted.end(),
+                         [](const RegisterEntry *a, const RegisterEntry *b) { return a->address < b->address; });
+        for (qsizetype i = 0; i < sorted.size(); ++i) {
+            for (qsizetype j = i + 1; j < sorted.size() && sorted[j]->address <= sorted[i]->lastAddress(); ++j) {
+                const RegisterEntry *a = sorted[i];
+                const RegisterEntry *b = sorted[j];
+                if (a->alias == b->id || b->alias == a->id)
+                    continue;
+                fail(tr("entry '%1' (%2)").arg(b->id, formatAddress(b->address)),
+                     tr("words %1..%2 overlap entry '%3' (%4..%5)")
+                             .arg(formatAddress(b->address), formatAddress(b->lastAddress()), a->id,
+                                  formatAddress(a->address), formatAddress(a->lastAddress())));
+            }
+        }
+    }
+};
+
+} // namespace
+
+MapLoadResult MapLoader::loadFile(const QString &path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        MapLoadResult result;
+        result.errors << QCoreApplication::translate("jumo::MapLoader", "%1: cannot open: %2").arg(path, file.errorString());
+        return result;
+    }
+    return loadData(file.readAll(), path.startsWith(QLatin1Char(':')) ? path : QFileInfo(path).absoluteFilePath());
+}
+
+MapLoadResult MapLoader::loadData(const QByteArray &json, const QString &sourceName)
+{
+    return MapParser(sourceName).parse(json);
+}
+
+} // namespace jumo

@@ -1,0 +1,146 @@
+#include "registermap.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <array>
+#include <utility>
+
+namespace jumo {
+
+namespace {
+
+template<typename E, std::size_t N>
+std::optional<E> lookup(const std::array<std::pair<E, const char *>, N> &table, const QString &name)
+{
+    for (const auto &[value, text] : table) {
+        if (name == QLatin1String(text))
+            return value;
+    }
+    return std::nullopt;
+}
+
+template<typename E, std::size_t N>
+QString nameOf(const std::array<std::pair<E, const char *>, N> &table, E value)
+{
+    for (const auto &[candidate, text] : table) {
+        if (candidate == value)
+            return QString::fromLatin1(text);
+    }
+    return {};
+}
+
+constexpr std::array<std::pair<ValueType, const char *>, 9> valueTypeNames{{
+    {ValueType::Float, "float"},   {ValueType::Int16, "int16"}, {ValueType::UInt16, "uint16"},
+    {ValueType::Int32, "int32"},   {ValueType::UInt32, "uint32"}, {ValueType::Bool, "bool"},
+    {ValueType::Enum, "enum"},     {ValueType::Bitfield, "bitfield"}, {ValueType::Text, "text"},
+}};
+
+constexpr std::array<std::pair<Access, const char *>, 3> accessNames{{
+    {Access::Read, "R"}, {Access::Write, "W"}, {Access::ReadWrite, "RW"},
+}};
+
+constexpr std::array<std::pair<Storage, const char *>, 3> storageNames{{
+    {Storage::None, ""}, {Storage::Ram, "RAM"}, {Storage::Eeprom, "EEPROM"},
+}};
+
+constexpr std::array<std::pair<BitKind, const char *>, 4> bitKindNames{{
+    {BitKind::Alarm, "alarm"}, {BitKind::Warning, "warning"},
+    {BitKind::Status, "status"}, {BitKind::Command, "command"},
+}};
+
+constexpr std::array<std::pair<WordOrder, const char *>, 4> wordOrderNames{{
+    {WordOrder::ABCD, "ABCD"}, {WordOrder::CDAB, "CDAB"},
+    {WordOrder::BADC, "BADC"}, {WordOrder::DCBA, "DCBA"},
+}};
+
+} // namespace
+
+QString formatAddress(quint16 address)
+{
+    return QLatin1String("0x") + QString::number(address, 16).toUpper().rightJustified(4, QLatin1Char('0'));
+}
+
+QString valueTypeName(ValueType type) { return nameOf(valueTypeNames, type); }
+std::optional<ValueType> valueTypeFromName(const QString &name) { return lookup(valueTypeNames, name); }
+QString accessName(Access access) { return nameOf(accessNames, access); }
+std::optional<Access> accessFromName(const QString &name) { return lookup(accessNames, name); }
+QString storageName(Storage storage) { return nameOf(storageNames, storage); }
+QString bitKindName(BitKind kind) { return nameOf(bitKindNames, kind); }
+std::optional<BitKind> bitKindFromName(const QString &name) { return lookup(bitKindNames, name); }
+QString wordOrderName(WordOrder order) { return nameOf(wordOrderNames, order); }
+std::optional<WordOrder> wordOrderFromName(const QString &name) { return lookup(wordOrderNames, name); }
+
+int RegisterEntry::wordCount() const
+{
+    if (reservedWords > 0)
+        return reservedWords;
+    switch (type) {
+    case ValueType::Float:
+    case ValueType::Int32:
+    case ValueType::UInt32:
+        return 2;
+    case ValueType::Text:
+        return (textBytes + 1) / 2;
+    default:
+        return 1;
+    }
+}
+
+bool RegisterEntry::isCommand() const
+{
+    if (type != ValueType::Bitfield || bits.isEmpty())
+        return false;
+    return std::all_of(bits.cbegin(), bits.cend(),
+                       [](const BitDefinition &b) { return b.kind == BitKind::Command; });
+}
+
+const BitDefinition *RegisterEntry::bitById(const QString &bitId) const
+{
+    for (const BitDefinition &b : bits) {
+        if (b.id == bitId)
+            return &b;
+    }
+    return nullptr;
+}
+
+void RegisterMap::setEntries(QList<RegisterEntry> entries)
+{
+    std::stable_sort(entries.begin(), entries.end(),
+                     [](const RegisterEntry &a, const RegisterEntry &b) { return a.address < b.address; });
+    m_entries = std::move(entries);
+    m_indexById.clear();
+    for (qsizetype i = 0; i < m_entries.size(); ++i)
+        m_indexById.insert(m_entries.at(i).id, i);
+}
+
+const RegisterEntry *RegisterMap::entry(const QString &id) const
+{
+    const auto it = m_indexById.constFind(id);
+    return it == m_indexById.cend() ? nullptr : &m_entries.at(*it);
+}
+
+const RegisterEntry *RegisterMap::entryAt(quint16 address) const
+{
+    // Entries are sorted by address and do not overlap (aliases aside), so the
+    // candidate is the last entry starting at or before the address.
+    auto it = std::upper_bound(m_entries.cbegin(), m_entries.cend(), address,
+                               [](quint16 a, const RegisterEntry &e) { return a < e.address; });
+    while (it != m_entries.cbegin()) {
+        --it;
+        if (!it->alias.isEmpty())
+            continue;
+        return address <= it->lastAddress() ? &*it : nullptr;
+    }
+    return nullptr;
+}
+
+QString RegisterMap::exceptionMeaning(int code) const
+{
+    const auto it = exceptions.constFind(code);
+    if (it == exceptions.cend())
+        return QCoreApplication::translate("jumo::RegisterMap", "exception %1 (not documented for this family)").arg(code);
+    return QCoreApplication::translate("jumo::maps", it->toUtf8().constData());
+}
+
+} // namespace jumo

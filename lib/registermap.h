@@ -1,0 +1,158 @@
+// The register map of one device family: every register the vendor manual lists,
+// with its type and access, plus the family's protocol and timing facts.
+#pragma once
+
+#include <QHash>
+#include <QList>
+#include <QMap>
+#include <QString>
+
+#include <algorithm>
+#include <optional>
+
+namespace jumo {
+
+enum class ValueType { Float, Int16, UInt16, Int32, UInt32, Bool, Enum, Bitfield, Text };
+enum class Access { Read, Write, ReadWrite };
+enum class Storage { None, Ram, Eeprom };
+enum class BitKind { Alarm, Warning, Status, Command };
+
+// Byte order of a 32-bit value on the wire; the letters are the bytes of the
+// big-endian value in the order they are sent (CDAB: low word at the lower address).
+enum class WordOrder { ABCD, CDAB, BADC, DCBA };
+
+// "0x00B1": the way addresses are written in the manuals, maps and CLI output.
+QString formatAddress(quint16 address);
+
+QString valueTypeName(ValueType type);
+std::optional<ValueType> valueTypeFromName(const QString &name);
+QString accessName(Access access);
+std::optional<Access> accessFromName(const QString &name);
+QString storageName(Storage storage);
+QString bitKindName(BitKind kind);
+std::optional<BitKind> bitKindFromName(const QString &name);
+QString wordOrderName(WordOrder order);
+std::optional<WordOrder> wordOrderFromName(const QString &name);
+
+struct BitDefinition
+{
+    int bit = 0;
+    int width = 1;
+    QString id;
+    QString label;
+    BitKind kind = BitKind::Status;
+    bool reserved = false;
+    QString notes;
+    QString erratum;
+
+    quint16 mask() const { return quint16(((1u << width) - 1u) << bit); }
+};
+
+struct RegisterEntry
+{
+    quint16 address = 0;
+    QString id;
+    QString label;
+    ValueType type = ValueType::UInt16;
+    int textBytes = 0;      // text only: byte count including the NUL
+    int reservedWords = 0;  // reserved blocks only: words spanned
+    Access access = Access::Read;
+    Storage storage = Storage::None;
+    QString unit;
+    QString group;
+    std::optional<double> minimum;
+    std::optional<double> maximum;
+    QMap<int, QString> enumValues;
+    QList<BitDefinition> bits;
+    std::optional<quint16> activationMask;
+    QString control;
+    std::optional<double> restoreValue;
+    QString precondition;
+    bool reserved = false;
+    QString alias;
+    QString notes;
+    QString erratum;
+
+    int wordCount() const;
+    quint16 lastAddress() const { return quint16(address + wordCount() - 1); }
+    bool isReadable() const { return access != Access::Write; }
+    bool isWritable() const { return access != Access::Read; }
+    bool isCommand() const;
+    const BitDefinition *bitById(const QString &bitId) const;
+};
+
+enum class ProbeTest { TextContains, MaskNonZero, Answers, Exception };
+
+struct IdentifyProbe
+{
+    quint16 address = 0;
+    int words = 1;
+    ProbeTest test = ProbeTest::Answers;
+    QString text;            // TextContains
+    quint16 mask = 0;        // MaskNonZero
+    int exceptionCode = 0;   // Exception
+};
+
+struct ProtocolInfo
+{
+    QList<int> readFunctions;
+    QList<int> writeFunctions;
+    int maxReadWords = 0;
+    int maxWriteWords = 0;
+    WordOrder floatWordOrder = WordOrder::CDAB;
+    WordOrder int32WordOrder = WordOrder::ABCD;
+    QList<int> baudRates;
+    QStringList dataFormats;
+    int addressMin = 1;
+    int addressMax = 247;
+    std::optional<int> alwaysAnswersAddress;
+    bool broadcast = true;
+    double processingTimeMaxMs = 0;
+    double turnaroundMs = 0;
+    double minResponseTimeMaxMs = 0;
+    std::optional<int> busErrorTimeoutMs;
+    QString notes;
+
+    // What one request may really carry: the family's limit, capped by the Modbus RTU
+    // frame (256 bytes: 125 words in a read reply, 123 in a 0x10 write), which is also
+    // what QModbusRtuSerialClient accepts. IPC 300 and TYA 200 state 127 for both.
+    int effectiveMaxReadWords() const { return std::min(maxReadWords, 125); }
+    int effectiveMaxWriteWords() const { return std::min(maxWriteWords, 123); }
+};
+
+struct ErrorValueTexts
+{
+    QString underrange;
+    QString overrange;
+    QString invalid;
+};
+
+class RegisterMap
+{
+public:
+    QString family;
+    QString name;
+    QStringList models;
+    QString manual;
+    QString description;
+    QString sourceFile;
+    ProtocolInfo protocol;
+    QList<IdentifyProbe> identify;
+    int scanPriority = 100;
+    QMap<int, QString> exceptions;
+    std::optional<ErrorValueTexts> errorValues;
+
+    const QList<RegisterEntry> &entries() const { return m_entries; }
+    void setEntries(QList<RegisterEntry> entries);
+
+    const RegisterEntry *entry(const QString &id) const;
+    // The entry whose word range contains the address (aliases excluded), or null.
+    const RegisterEntry *entryAt(quint16 address) const;
+    QString exceptionMeaning(int code) const;
+
+private:
+    QList<RegisterEntry> m_entries;   // in address order
+    QHash<QString, qsizetype> m_indexById;
+};
+
+} // namespace jumo

@@ -1,0 +1,220 @@
+// jumoctl's map commands, run in-process and as the real executable: the CSV contract
+// scripts rely on, --help for every command, and non-zero exits with a reason on stderr.
+#include "commandlinetool.h"
+#include "familyregistry.h"
+#include "mapcommands.h"
+
+#include <QDir>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTest>
+
+using namespace jumo;
+
+namespace {
+
+// Splits one CSV line, honouring quoted fields with commas and doubled quotes.
+QStringList splitCsv(const QString &line)
+{
+    QStringList fields{QString()};
+    bool quoted = false;
+    for (qsizetype i = 0; i < line.size(); ++i) {
+        const QChar c = line[i];
+        if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+            fields.last() += '"';
+            ++i;
+        } else if (c == '"') {
+            quoted = !quoted;
+        } else if (c == ',' && !quoted) {
+            fields << QString();
+        } else {
+            fields.last() += c;
+        }
+    }
+    return fields;
+}
+
+struct Run
+{
+    int code = -1;
+    QString out;
+    QString err;
+};
+
+Run run(const QStringList &args)
+{
+    Run r;
+    QTextStream out(&r.out);
+    QTextStream err(&r.err);
+    CommandLineTool tool(out, err);
+    const std::optional<int> code = tool.run(args);
+    out.flush();
+    err.flush();
+    r.code = code.value_or(-1);
+    return r;
+}
+
+} // namespace
+
+class tst_Jumoctl : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void mapCsvContract_data();
+    void mapCsvContract();
+    void mapJson();
+    void planListsRequests();
+    void decodeShowsErrorValues();
+    void helpForEveryCommand_data();
+    void helpForEveryCommand();
+    void badArguments_data();
+    void badArguments();
+    void realExecutableExitCodes();
+};
+
+void tst_Jumoctl::initTestCase()
+{
+    qputenv("JUMO_MAP_PATH", "");
+    qputenv("XDG_DATA_HOME", QByteArray(QDir::tempPath().toUtf8() + "/jumo-test-no-maps"));
+}
+
+void tst_Jumoctl::mapCsvContract_data()
+{
+    QTest::addColumn<QString>("family");
+    QTest::addColumn<QString>("row");   // one row that must appear exactly
+    QTest::newRow("ipc300 register") << "ipc300" << "0x00B1,,load_current,Load current,float,2,R,,A,5.2.1 RMS measured values,";
+    QTest::newRow("ipc300 bit") << "ipc300" << "0x00ED,15,malfunction_signal_1.bus_error,Bus error,bool,1,R,,,5.2.6 Binary signals,alarm";
+    QTest::newRow("quantrol activation bit") << "quantrol" << "0x0025,15,binary_output_control.activation,";
+    QTest::newRow("dtron300 long") << "dtron300" << "0x005B,,program_run_time,";
+    QTest::newRow("tya200 setpoint") << "tya200" << "0x010A,,setpoint,";
+}
+
+void tst_Jumoctl::mapCsvContract()
+{
+    QFETCH(QString, family);
+    QFETCH(QString, row);
+    const Run r = run({"map", family, "--csv"});
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.err.isEmpty(), qPrintable(r.err));
+    const QStringList lines = r.out.split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.first(), QString("address,bit,id,label,type,words,access,storage,unit,group,notes"));
+    bool found = false;
+    for (const QString &line : lines)
+        found |= line.startsWith(row);
+    QVERIFY2(found, qPrintable(row));
+
+    // One row per register and one per bit, every address in the 0x + 4 hex digit form.
+    const auto map = FamilyRegistry::load({}, true).family(family);
+    int expected = 1;
+    for (const RegisterEntry &e : map->entries())
+        expected += 1 + int(e.bits.size());
+    QCOMPARE(lines.size(), expected);
+    static const QRegularExpression address("^0x[0-9A-F]{4},");
+    static const QStringList types{"float", "int16", "uint16", "int32", "uint32", "bool", "enum", "bitfield", "text"};
+    for (qsizetype i = 1; i < lines.size(); ++i) {
+        QVERIFY2(address.match(lines[i]).hasMatch(), qPrintable(lines[i]));
+        const QStringList fields = splitCsv(lines[i]);
+        QCOMPARE(fields.size(), 11);
+        QVERIFY2(types.contains(fields[4]), qPrintable(lines[i]));
+        QVERIFY2(QStringList({"R", "W", "RW"}).contains(fields[6]), qPrintable(lines[i]));
+    }
+}
+
+void tst_Jumoctl::mapJson()
+{
+    const Run r = run({"map", "tya200", "--json"});
+    QCOMPARE(r.code, 0);
+    const QJsonObject root = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    QCOMPARE(root.value("family").toString(), QString("tya200"));
+    QCOMPARE(root.value("protocol").toObject().value("maxReadWords").toInt(), 127);
+    QVERIFY(root.value("entries").toArray().size() > 100);
+    QCOMPARE(root.value("exceptions").toObject().value("6").toString().isEmpty(), false);
+}
+
+void tst_Jumoctl::planListsRequests()
+{
+    const Run r = run({"plan", "ipc300", "load_voltage", "load_current"});
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.contains("read 0x00AF..0x00B2 (4 words): load_voltage, load_current"), qPrintable(r.out));
+    QVERIFY(r.out.contains("1 requests") || r.out.contains("1 request"));
+}
+
+void tst_Jumoctl::decodeShowsErrorValues()
+{
+    Run r = run({"decode", "ipc300", "load_current", "70A3", "4145"});
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.out.trimmed(), QString("load_current (0x00B1) = 12.34 A [ok]"));
+    r = run({"decode", "ipc300", "load_current", "0x0000", "0x7F80"});
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.contains("= Overrange [overrange]"), qPrintable(r.out));
+    QVERIFY2(!r.out.contains("inf"), qPrintable(r.out));
+    r = run({"decode", "dtron300", "program_run_time", "0001", "0203"});
+    QCOMPARE(r.out.trimmed(), QString("program_run_time (0x005B) = 66051 s [ok]"));
+}
+
+void tst_Jumoctl::helpForEveryCommand_data()
+{
+    QTest::addColumn<QString>("command");
+    for (const char *c : {"families", "map", "plan", "decode"})
+        QTest::newRow(c) << c;
+}
+
+void tst_Jumoctl::helpForEveryCommand()
+{
+    QFETCH(QString, command);
+    const Run r = run({command, "--help"});
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.startsWith("Usage: jumoctl " + command), qPrintable(r.out));
+}
+
+void tst_Jumoctl::badArguments_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<int>("code");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("no command") << QStringList{} << 2 << "Usage: jumoctl";
+    QTest::newRow("unknown command") << QStringList{"frobnicate"} << 2 << "unknown command 'frobnicate'";
+    QTest::newRow("unknown family") << QStringList{"map", "ipc400", "--csv"} << 1 << "unknown family 'ipc400'";
+    QTest::newRow("map without format") << QStringList{"map", "ipc300"} << 2 << "exactly one of --csv and --json";
+    QTest::newRow("unknown option") << QStringList{"map", "ipc300", "--xml"} << 2 << "Unknown option 'xml'";
+    QTest::newRow("decode wrong word count") << QStringList{"decode", "ipc300", "load_current", "70A3"} << 2
+                                             << "takes 2 words, 1 given";
+    QTest::newRow("decode not hex") << QStringList{"decode", "ipc300", "load_current", "70A3", "zz"} << 2
+                                    << "'zz' is not a 16-bit hex word";
+    QTest::newRow("decode unknown id") << QStringList{"decode", "ipc300", "load_currant", "0"} << 1
+                                       << "'load_currant' is not an entry of ipc300";
+    QTest::newRow("plan of unknown id") << QStringList{"plan", "quantrol", "nothing"} << 1 << "'nothing' is not an entry";
+    QTest::newRow("plan of write-only") << QStringList{"plan", "quantrol", "controller_functions"} << 1 << "write-only";
+}
+
+void tst_Jumoctl::badArguments()
+{
+    QFETCH(QStringList, args);
+    QFETCH(int, code);
+    QFETCH(QString, message);
+    const Run r = run(args);
+    QCOMPARE(r.code, code);
+    QVERIFY2(r.err.contains(message), qPrintable(r.err));
+}
+
+void tst_Jumoctl::realExecutableExitCodes()
+{
+    const QString exe = QStringLiteral(JUMOCTL_PATH);
+    QProcess p;
+    p.start(exe, {"map", "quantrol", "--csv"});
+    QVERIFY(p.waitForFinished(30000));
+    QCOMPARE(p.exitCode(), 0);
+    QVERIFY(p.readAllStandardOutput().startsWith("address,bit,id,"));
+    p.start(exe, {"map", "nope", "--csv"});
+    QVERIFY(p.waitForFinished(30000));
+    QCOMPARE(p.exitCode(), 1);
+    QVERIFY(p.readAllStandardError().contains("unknown family 'nope'"));
+}
+
+QTEST_GUILESS_MAIN(tst_Jumoctl)
+#include "tst_jumoctl.moc"
