@@ -12,7 +12,7 @@
 
 #include <cmath>
 
-Q_LOGGING_CATEGORY(lcMap, "jumo.map")
+Q_LOGGING_CATEGORY(lcMap, "jumo.map", QtWarningMsg)
 
 namespace jumo {
 
@@ -157,7 +157,7 @@ private:
     std::optional<RegisterMap> parseMap(const QJsonObject &root)
     {
         checkKeys(root, {"format", "family", "name", "models", "manual", "description", "protocol",
-                         "identify", "scanPriority", "exceptions", "errorValues", "entries"},
+                         "identify", "scanPriority", "exceptions", "errorValues", "simulation", "entries"},
                   QString());
         RegisterMap map;
         map.sourceFile = m_source;
@@ -191,6 +191,8 @@ private:
         }
         checkEntries(parsed);
         map.setEntries(std::move(parsed));
+        if (root.contains("simulation"))
+            parseSimulation(root.value("simulation"), map);
         return map;
     }
 
@@ -489,6 +491,90 @@ private:
             used |= def.mask();
             e.bits << def;
         }
+    }
+
+    // Checks that a reference names an entry ("id") or a bit of a bit field ("id.bit").
+    bool checkReference(const RegisterMap &map, const QString &reference, const QString &where)
+    {
+        const QString id = reference.section(QLatin1Char('.'), 0, 0);
+        const QString bit = reference.section(QLatin1Char('.'), 1);
+        const RegisterEntry *e = map.entry(id);
+        if (!e) {
+            fail(where, tr("refers to unknown entry '%1'").arg(id));
+            return false;
+        }
+        if (!bit.isEmpty() && !e->bitById(bit)) {
+            fail(where, tr("refers to unknown bit '%1' of '%2'").arg(bit, id));
+            return false;
+        }
+        return true;
+    }
+
+    void parseSimulation(const QJsonValue &value, RegisterMap &map)
+    {
+        const QString where = QStringLiteral("simulation");
+        const QJsonObject o = value.toObject();
+        checkKeys(o, {"model", "bindings", "initial", "limits", "commands", "status"}, where);
+        SimulationSpec spec;
+        spec.model = o.value("model").toString();
+        if (spec.model != QLatin1String("power_controller") && spec.model != QLatin1String("process_controller"))
+            fail(where, tr("unknown model '%1' (expected power_controller or process_controller)").arg(spec.model));
+        const QJsonObject bindings = o.value("bindings").toObject();
+        for (auto it = bindings.begin(); it != bindings.end(); ++it) {
+            QStringList ids;
+            if (it.value().isArray()) {
+                for (const QJsonValue &v : it.value().toArray())
+                    ids << v.toString();
+            } else {
+                ids << it.value().toString();
+            }
+            for (const QString &id : std::as_const(ids))
+                checkReference(map, id, where + QStringLiteral(".bindings.") + it.key());
+            spec.bindings.insert(it.key(), ids);
+        }
+        const QJsonObject initial = o.value("initial").toObject();
+        for (auto it = initial.begin(); it != initial.end(); ++it) {
+            checkReference(map, it.key(), where + QStringLiteral(".initial"));
+            spec.initial.insert(it.key(), it.value().toVariant());
+        }
+        int index = 0;
+        for (const QJsonValue &v : o.value("limits").toArray()) {
+            const QString limitWhere = QStringLiteral("%1.limits[%2]").arg(where).arg(index++);
+            const QJsonObject l = v.toObject();
+            checkKeys(l, {"value", "above", "below", "set"}, limitWhere);
+            SimulationLimit limit;
+            limit.value = l.value("value").toString();
+            checkReference(map, limit.value, limitWhere);
+            limit.above = l.contains("above");
+            const QJsonValue threshold = l.value(limit.above ? "above" : "below");
+            if (threshold.isString()) {
+                limit.thresholdId = threshold.toString();
+                checkReference(map, limit.thresholdId, limitWhere);
+            } else if (threshold.isDouble()) {
+                limit.threshold = threshold.toDouble();
+            } else {
+                fail(limitWhere, tr("a limit needs 'above' or 'below' (an entry id or a number)"));
+            }
+            for (const QJsonValue &s : l.value("set").toArray()) {
+                limit.set << s.toString();
+                checkReference(map, s.toString(), limitWhere);
+            }
+            spec.limits << limit;
+        }
+        static const QStringList actions{"manual_on", "manual_off", "tuning_start", "tuning_abort", "controller_off"};
+        const QJsonObject commands = o.value("commands").toObject();
+        for (auto it = commands.begin(); it != commands.end(); ++it) {
+            checkReference(map, it.key(), where + QStringLiteral(".commands"));
+            if (!actions.contains(it.value().toString()))
+                fail(where + QStringLiteral(".commands"), tr("unknown action '%1'").arg(it.value().toString()));
+            spec.commands.insert(it.key(), it.value().toString());
+        }
+        const QJsonObject status = o.value("status").toObject();
+        for (auto it = status.begin(); it != status.end(); ++it) {
+            checkReference(map, it.value().toString(), where + QStringLiteral(".status"));
+            spec.status.insert(it.key(), it.value().toString());
+        }
+        map.simulation = spec;
     }
 
     // Checks that need all entries: unique ids, aliases, overlapping word ranges.

@@ -6,6 +6,7 @@
 #include <QList>
 #include <QMap>
 #include <QString>
+#include <QVariantMap>
 
 #include <algorithm>
 #include <optional>
@@ -127,6 +128,29 @@ struct ErrorValueTexts
     QString invalid;
 };
 
+// How the device simulator animates a family: which entries its physical model drives
+// (bindings by role), initial values, limit monitoring bits and command actions.
+struct SimulationLimit
+{
+    QString value;          // entry id compared
+    QString thresholdId;    // entry holding the threshold, or empty
+    double threshold = 0;   // used when thresholdId is empty
+    bool above = true;      // true: set while value > threshold; false: while below
+    QStringList set;        // "entry.bit" or bool entry ids switched on while exceeded
+};
+
+struct SimulationSpec
+{
+    QString model;                          // "power_controller" or "process_controller"
+    QHash<QString, QStringList> bindings;   // role -> entry ids (most roles have one)
+    QVariantMap initial;                    // entry id -> number or text
+    QList<SimulationLimit> limits;
+    QHash<QString, QString> commands;       // "entry.bit" -> action
+    QHash<QString, QString> status;         // "manual"/"tuning" -> "entry.bit"
+
+    QString binding(const QString &role) const { return bindings.value(role).value(0); }
+};
+
 class RegisterMap
 {
 public:
@@ -141,6 +165,7 @@ public:
     int scanPriority = 100;
     QMap<int, QString> exceptions;
     std::optional<ErrorValueTexts> errorValues;
+    std::optional<SimulationSpec> simulation;
 
     const QList<RegisterEntry> &entries() const { return m_entries; }
     void setEntries(QList<RegisterEntry> entries);

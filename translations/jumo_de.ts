@@ -2,9 +2,149 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>jumo::Bus</name>
+    <message>
+        <location filename="../lib/bus/bus.cpp" line="+95"/>
+        <source>cannot open %1: %2</source>
+        <translation>%1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>the line was closed</source>
+        <translation>die Leitung wurde geschlossen</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>line lost: %1</source>
+        <translation>Leitung verloren: %1</translation>
+    </message>
+    <message>
+        <location line="+152"/>
+        <source>read-only mode: %1 was not written</source>
+        <translation>Nur-Lese-Modus: %1 wurde nicht geschrieben</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+77"/>
+        <source>unknown device</source>
+        <translation>unbekanntes Gerät</translation>
+    </message>
+    <message>
+        <location line="-77"/>
+        <location line="+85"/>
+        <source>&apos;%1&apos; is not an entry of %2</source>
+        <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
+    </message>
+    <message>
+        <location line="-75"/>
+        <source>&apos;%1&apos; needs more words than one write may carry</source>
+        <translation>&apos;%1&apos; benötigt mehr Wörter, als eine Schreibanfrage umfassen darf</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the line is not connected</source>
+        <translation>die Leitung ist nicht verbunden</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>no %1 device on this line to read a broadcast back from</source>
+        <translation>kein Gerät der Familie %1 an dieser Leitung, von dem ein Broadcast zurückgelesen werden kann</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>read-only mode: nothing is written</source>
+        <translation>Nur-Lese-Modus: Es wird nichts geschrieben</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>&apos;%1&apos; is stored in EEPROM, which wears out after about 10,000 writes: it is never rewritten cyclically</source>
+        <translation>&apos;%1&apos; ist im EEPROM gespeichert, das nach etwa 10.000 Schreibvorgängen verschleißt: Es wird nie zyklisch neu geschrieben</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>only RAM values can be held, &apos;%1&apos; is not one</source>
+        <translation>nur RAM-Werte können gehalten werden, &apos;%1&apos; gehört nicht dazu</translation>
+    </message>
+    <message>
+        <location line="+134"/>
+        <source>read-only mode</source>
+        <translation>Nur-Lese-Modus</translation>
+    </message>
+    <message>
+        <location line="+65"/>
+        <source>reply of %1 words where %2 were asked for</source>
+        <translation>Antwort mit %1 Wörtern, angefordert waren %2</translation>
+    </message>
+    <message>
+        <location line="+89"/>
+        <source>exception %1</source>
+        <translation>Exception %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>refused by the device: exception %1, %2</source>
+        <translation>vom Gerät abgelehnt: Exception %1, %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> (precondition: %1)</source>
+        <translation> (Voraussetzung: %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>not written: the line was lost</source>
+        <translation>nicht geschrieben: die Leitung ging verloren</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>no answer: %1</source>
+        <translation>keine Antwort: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>written, but the read-back failed: %1</source>
+        <translation>geschrieben, aber das Rücklesen ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="+118"/>
+        <source>broadcast sent; it cannot be read back</source>
+        <translation>Broadcast gesendet; er kann nicht zurückgelesen werden</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>written (not read back)</source>
+        <translation>geschrieben (nicht zurückgelesen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>acknowledged by the device; it cannot be read back</source>
+        <translation>vom Gerät quittiert; der Wert kann nicht zurückgelesen werden</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>confirmed by read-back: %1</source>
+        <translation>durch Rücklesen bestätigt: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>written, but the device reads back %1</source>
+        <translation>geschrieben, aber das Gerät liefert beim Rücklesen %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>broadcast not taken by the device at address %1: it reads back %2</source>
+        <translation>Broadcast vom Gerät an Adresse %1 nicht übernommen: es liefert beim Rücklesen %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>broadcast confirmed by read-back from every device</source>
+        <translation>Broadcast durch Rücklesen von jedem Gerät bestätigt</translation>
+    </message>
+</context>
+<context>
     <name>jumo::CommandLineTool</name>
     <message>
-        <location filename="../app/cli/commandlinetool.cpp" line="+17"/>
+        <location filename="../app/cli/commandlinetool.cpp" line="+18"/>
         <source>Usage: jumoctl COMMAND [options] [arguments]
 
 Commissioning and monitoring of JUMO power and process controllers over Modbus RTU.
@@ -15,28 +155,46 @@ Commands on the register maps:
   plan FAMILY [ID...]      show the read requests for entries of a family
   decode FAMILY ID WORD... decode raw register words as an entry
 
+Commands on a serial line (all take --port PATH --baud N --format 8N1|8E1|8O1|8N2
+--timeout MS --read-only); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1:
+  scan [--from A --to B]   find devices and name their family
+  read DEVICE ID...        read entries once
+  write DEVICE ID=VALUE... write entries, verified by reading them back
+  dump DEVICE [--json]     read every readable entry once
+  monitor DEVICE... --jsonl|--csv [--interval MS] [--cycles N]
+                           poll continuously, one record per poll cycle
+
 &apos;jumoctl COMMAND --help&apos; describes a command.
 </source>
-        <translation>Aufruf: jumoctl BEFEHL [Optionen] [Argumente]
+        <translation>Aufruf: jumoctl COMMAND [Optionen] [Argumente]
 
 Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Modbus RTU.
 
-Befehle für die Registertabellen:
-  families                  Gerätefamilien und ihre Map-Dateien auflisten
-  map FAMILIE --csv|--json  Registertabelle einer Gerätefamilie ausgeben
-  plan FAMILIE [ID...]      Leseanfragen für Einträge einer Gerätefamilie anzeigen
-  decode FAMILIE ID WORT... Rohe Registerwörter als Eintrag dekodieren
+Befehle zu den Registertabellen:
+  families                 Gerätefamilien und ihre Map-Dateien auflisten
+  map FAMILY --csv|--json  Registertabelle einer Gerätefamilie ausgeben
+  plan FAMILY [ID...]      Leseanfragen für Einträge einer Gerätefamilie anzeigen
+  decode FAMILY ID WORD... rohe Registerwörter als Eintrag dekodieren
 
-&apos;jumoctl BEFEHL --help&apos; beschreibt einen Befehl.
+Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8E1|8O1|8N2
+--timeout MS --read-only); DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1:
+  scan [--from A --to B]   Geräte suchen und ihre Gerätefamilie benennen
+  read DEVICE ID...        Einträge einmal lesen
+  write DEVICE ID=VALUE... Einträge schreiben, durch Rücklesen überprüft
+  dump DEVICE [--json]     jeden lesbaren Eintrag einmal lesen
+  monitor DEVICE... --jsonl|--csv [--interval MS] [--cycles N]
+                           fortlaufend abfragen, ein Datensatz je Abfragezyklus
+
+&apos;jumoctl COMMAND --help&apos; beschreibt einen Befehl.
 </translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+45"/>
         <source>warning: refused map file: %1</source>
         <translation>Warnung: Map-Datei abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+13"/>
         <source>jumoctl: unknown command &apos;%1&apos;</source>
         <translation>jumoctl: unbekannter Befehl &apos;%1&apos;</translation>
     </message>
@@ -63,6 +221,307 @@ Befehle für die Registertabellen:
         <location line="-1"/>
         <source>jumoctl %1: wrong number of arguments</source>
         <translation>jumoctl %1: falsche Anzahl von Argumenten</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::LineCommands</name>
+    <message>
+        <location filename="../app/cli/linecommands.cpp" line="+65"/>
+        <source>Serial port, e.g. /dev/ttyUSB0 (required).</source>
+        <translation>Serielle Schnittstelle, z. B. /dev/ttyUSB0 (erforderlich).</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>path</source>
+        <translation>Pfad</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Baud rate: 4800, 9600, 19200 or 38400 (default 9600).</source>
+        <translation>Baudrate: 4800, 9600, 19200 oder 38400 (Standard 9600).</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>rate</source>
+        <translation>Rate</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Data format: 8N1, 8E1, 8O1 or 8N2 (default 8N1).</source>
+        <translation>Datenformat: 8N1, 8E1, 8O1 oder 8N2 (Standard 8N1).</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>format</source>
+        <translation>Format</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Reply timeout in ms (default: derived from the baud rate and the device family).</source>
+        <translation>Zeitüberschreitung für Antworten in ms (Standard: aus Baudrate und Gerätefamilie abgeleitet).</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+2"/>
+        <location line="+326"/>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location line="-326"/>
+        <source>Minimum response time configured in the devices, in ms (default 0).</source>
+        <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Retries after a lost reply (default 2).</source>
+        <translation>Wiederholungen nach einer ausgebliebenen Antwort (Standard 2).</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+326"/>
+        <source>n</source>
+        <translation>n</translation>
+    </message>
+    <message>
+        <location line="-324"/>
+        <source>Never write to the line (control-room mode).</source>
+        <translation>Nie auf die Leitung schreiben (Leitwarten-Modus).</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>--port is required</source>
+        <translation>--port ist erforderlich</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>unsupported baud rate or data format: %1 %2</source>
+        <translation>Baudrate oder Datenformat nicht unterstützt: %1 %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>--timeout must be 10..60000 ms</source>
+        <translation>--timeout muss 10..60000 ms sein</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--min-response must be 0..500 ms</source>
+        <translation>--min-response muss 0..500 ms sein</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>--retries must be 0..10</source>
+        <translation>--retries muss 0..10 sein</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>&apos;%1&apos; is not a device: use FAMILY@ADDRESS, e.g. ipc300@1 (families: %2)</source>
+        <translation>&apos;%1&apos; ist kein Gerät: FAMILY@ADDRESS verwenden, z. B. ipc300@1 (Gerätefamilien: %2)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>device address %1 is outside 1..255</source>
+        <translation>Geräteadresse %1 liegt außerhalb von 1..255</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Finds devices on the line and names their family.</source>
+        <translation>Sucht Geräte an der Leitung und benennt ihre Gerätefamilie.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>First address (default 1).</source>
+        <translation>Erste Adresse (Standard 1).</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+1"/>
+        <source>address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Last address (default 247).</source>
+        <translation>Letzte Adresse (Standard 247).</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>--from and --to must be addresses 1..255, from &lt;= to</source>
+        <translation>--from und --to müssen Adressen 1..255 sein, from &lt;= to</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>scanning address %1 (%2 of %3)</source>
+        <translation>Adresse %1 wird abgefragt (%2 von %3)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>address %1 answers, but matches no known family</source>
+        <translation>Adresse %1 antwortet, passt aber zu keiner bekannten Gerätefamilie</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n device(s) found</source>
+        <translation>
+            <numerusform>%n Gerät gefunden</numerusform>
+            <numerusform>%n Geräte gefunden</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>exception %1: %2</source>
+        <translation>Exception %1: %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no answer</source>
+        <translation>keine Antwort</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Reads every readable entry of a device once.</source>
+        <translation>Liest jeden lesbaren Eintrag eines Geräts einmal.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reads entries of a device once.</source>
+        <translation>Liest Einträge eines Geräts einmal.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>JSON array of {family, address, id, label, register, value, unit, status}.</source>
+        <translation>JSON-Array aus {family, address, id, label, register, value, unit, status}.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>FAMILY@ADDRESS, e.g. ipc300@1.</source>
+        <translation>FAMILY@ADDRESS, z. B. ipc300@1.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Entry ids.</source>
+        <translation>Kennungen der Einträge.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <location line="+77"/>
+        <source>&apos;%1&apos; is not an entry of %2</source>
+        <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
+    </message>
+    <message>
+        <location line="-73"/>
+        <source>&apos;%1&apos; is write-only</source>
+        <translation>&apos;%1&apos; ist nur schreibbar</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>some entries could not be read</source>
+        <translation>einige Einträge konnten nicht gelesen werden</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Writes entries of a device; each write is verified by reading it back.</source>
+        <translation>Schreibt Einträge eines Geräts; jeder Schreibvorgang wird durch Rücklesen überprüft.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>For a broadcast (FAMILY@0): the addresses to read it back from, e.g. 1,2,5.</source>
+        <translation>Bei einem Broadcast (FAMILY@0): die Adressen, von denen zurückgelesen wird, z. B. 1,2,5.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>addresses</source>
+        <translation>Adressen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>FAMILY@ADDRESS, or FAMILY@0 for a broadcast.</source>
+        <translation>FAMILY@ADDRESS oder FAMILY@0 für einen Broadcast.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ID=VALUE, e.g. input_setpoint=42.5.</source>
+        <translation>ID=VALUE, z. B. input_setpoint=42.5.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>&apos;%1&apos; is not a device: use FAMILY@ADDRESS</source>
+        <translation>&apos;%1&apos; ist kein Gerät: FAMILY@ADDRESS verwenden</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>--verify takes addresses 1..255, not &apos;%1&apos;</source>
+        <translation>--verify erwartet Adressen 1..255, nicht &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>a broadcast is not answered: name the devices to read it back from with --verify</source>
+        <translation>ein Broadcast wird nicht beantwortet: die Geräte, von denen zurückgelesen werden soll, mit --verify angeben</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&apos;%1&apos; is not ID=VALUE</source>
+        <translation>&apos;%1&apos; hat nicht die Form ID=VALUE</translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>Polls devices continuously and prints every poll cycle.</source>
+        <translation>Fragt Geräte fortlaufend ab und gibt jeden Abfragezyklus aus.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Poll interval per device in ms (default 0: as fast as the line allows).</source>
+        <translation>Abfrageintervall je Gerät in ms (Standard 0: so schnell, wie die Leitung es erlaubt).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stop after this many cycles of every device (default: run until stopped).</source>
+        <translation>Nach so vielen Zyklen jedes Geräts anhalten (Standard: bis zum Abbruch laufen).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Comma-separated entry ids to poll (default: all readable entries).</source>
+        <translation>Kommagetrennte Kennungen der abzufragenden Einträge (Standard: alle lesbaren Einträge).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ids</source>
+        <translation>Kennungen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>One JSON object per completed poll cycle of a device.</source>
+        <translation>Ein JSON-Objekt je abgeschlossenem Abfragezyklus eines Geräts.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV rows: time,device,id,value,unit,status.</source>
+        <translation>CSV-Zeilen: time,device,id,value,unit,status.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>FAMILY@ADDRESS.</source>
+        <translation>FAMILY@ADDRESS.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>jumoctl monitor: give exactly one of --jsonl and --csv</source>
+        <translation>jumoctl monitor: genau eine der Optionen --jsonl und --csv angeben</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--interval must be a number of ms &gt;= 0</source>
+        <translation>--interval muss eine Anzahl ms &gt;= 0 sein</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>--cycles must be a number &gt;= 0</source>
+        <translation>--cycles muss eine Zahl &gt;= 0 sein</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>&apos;%1&apos; is not a readable entry of %2</source>
+        <translation>&apos;%1&apos; ist kein lesbarer Eintrag von %2</translation>
     </message>
 </context>
 <context>
@@ -254,7 +713,7 @@ Befehle für die Registertabellen:
         <translation>&apos;entries&apos; muss ein nicht leeres Array sein</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>&apos;protocol&apos; must be an object</source>
         <translation>&apos;protocol&apos; muss ein Objekt sein</translation>
     </message>
@@ -340,13 +799,13 @@ Befehle für die Registertabellen:
     </message>
     <message>
         <location line="+1"/>
-        <location line="+162"/>
+        <location line="+246"/>
         <location line="+21"/>
         <source>entry &apos;%1&apos; (%2)</source>
         <translation>Eintrag &apos;%1&apos; (%2)</translation>
     </message>
     <message>
-        <location line="-173"/>
+        <location line="-257"/>
         <source>id must be lower case letters, digits and &apos;_&apos;</source>
         <translation>die Kennung darf nur aus Kleinbuchstaben, Ziffern und &apos;_&apos; bestehen</translation>
     </message>
@@ -467,6 +926,31 @@ Befehle für die Registertabellen:
     </message>
     <message>
         <location line="+13"/>
+        <source>refers to unknown entry &apos;%1&apos;</source>
+        <translation>verweist auf unbekannten Eintrag &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>refers to unknown bit &apos;%1&apos; of &apos;%2&apos;</source>
+        <translation>verweist auf unbekanntes Bit &apos;%1&apos; von &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>unknown model &apos;%1&apos; (expected power_controller or process_controller)</source>
+        <translation>unbekanntes Modell &apos;%1&apos; (erwartet: power_controller oder process_controller)</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>a limit needs &apos;above&apos; or &apos;below&apos; (an entry id or a number)</source>
+        <translation>ein Grenzwert benötigt &apos;above&apos; oder &apos;below&apos; (eine Eintragskennung oder eine Zahl)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>unknown action &apos;%1&apos;</source>
+        <translation>unbekannte Aktion &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>duplicate id (also at %1)</source>
         <translation>doppelte Kennung (auch bei %1)</translation>
     </message>
@@ -495,6 +979,24 @@ Befehle für die Registertabellen:
         <location line="+15"/>
         <source>%1: cannot open: %2</source>
         <translation>%1: kann nicht geöffnet werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::PtyPair</name>
+    <message>
+        <location filename="../lib/sim/ptypair.cpp" line="+15"/>
+        <source>cannot start socat (is it installed?): %1</source>
+        <translation>socat kann nicht gestartet werden (ist es installiert?): %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>socat ended: %1</source>
+        <translation>socat beendet: %1</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>socat did not create the pseudo-terminals</source>
+        <translation>socat hat die Pseudo-Terminals nicht angelegt</translation>
     </message>
 </context>
 <context>
@@ -723,6 +1225,94 @@ Befehle für die Registertabellen:
         <location line="+7"/>
         <source>Map files refused</source>
         <translation>Map-Dateien abgelehnt</translation>
+    </message>
+    <message>
+        <location filename="../app/jumo-sim.cpp" line="+24"/>
+        <source>Simulated JUMO devices on a serial line. DEVICE is FAMILY@ADDRESS, e.g. ipc300@1.</source>
+        <translation>Simulierte JUMO-Geräte an einer seriellen Leitung. DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Serial port to serve.</source>
+        <translation>Zu bedienende serielle Schnittstelle.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Make a pseudo-terminal pair in this folder (needs socat); clients connect to FOLDER/master.</source>
+        <translation>Ein Pseudo-Terminal-Paar in diesem Ordner anlegen (benötigt socat); Clients verbinden sich mit FOLDER/master.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Baud rate (default 9600).</source>
+        <translation>Baudrate (Standard 9600).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Data format (default 8N1).</source>
+        <translation>Datenformat (Standard 8N1).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Processing delay before each reply in ms (default 2).</source>
+        <translation>Verarbeitungsverzögerung vor jeder Antwort in ms (Standard 2).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Minimum response time in ms (default 0).</source>
+        <translation>Minimale Antwortzeit in ms (Standard 0).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Delay replies by their wire time at the baud rate.</source>
+        <translation>Antworten um ihre Übertragungsdauer bei der Baudrate verzögern.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Devices to simulate.</source>
+        <translation>Zu simulierende Geräte.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>unsupported baud rate or data format</source>
+        <translation>Baudrate oder Datenformat nicht unterstützt</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>give exactly one of --port and --pty</source>
+        <translation>genau eine der Optionen --port und --pty angeben</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>refused map file: %1</source>
+        <translation>Map-Datei abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>name at least one device, e.g. ipc300@1</source>
+        <translation>mindestens ein Gerät angeben, z. B. ipc300@1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&apos;%1&apos; is not FAMILY@ADDRESS with a known family</source>
+        <translation>&apos;%1&apos; ist nicht FAMILY@ADDRESS mit einer bekannten Gerätefamilie</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>cannot open %1: %2</source>
+        <translation>%1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>serving %n device(s) on %1</source>
+        <translation>
+            <numerusform>bedient %n Gerät an %1</numerusform>
+            <numerusform>bedient %n Geräte an %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>connect to %1</source>
+        <translation>verbinden mit %1</translation>
     </message>
 </context>
 </TS>

@@ -1,6 +1,7 @@
 #include "commandlinetool.h"
 
 #include "familyregistry.h"
+#include "linecommands.h"
 #include "mapcommands.h"
 
 namespace jumo {
@@ -24,6 +25,15 @@ QString CommandLineTool::usage() const
               "  plan FAMILY [ID...]      show the read requests for entries of a family\n"
               "  decode FAMILY ID WORD... decode raw register words as an entry\n"
               "\n"
+              "Commands on a serial line (all take --port PATH --baud N --format 8N1|8E1|8O1|8N2\n"
+              "--timeout MS --read-only); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1:\n"
+              "  scan [--from A --to B]   find devices and name their family\n"
+              "  read DEVICE ID...        read entries once\n"
+              "  write DEVICE ID=VALUE... write entries, verified by reading them back\n"
+              "  dump DEVICE [--json]     read every readable entry once\n"
+              "  monitor DEVICE... --jsonl|--csv [--interval MS] [--cycles N]\n"
+              "                           poll continuously, one record per poll cycle\n"
+              "\n"
               "'jumoctl COMMAND --help' describes a command.\n");
 }
 
@@ -43,7 +53,8 @@ std::optional<int> CommandLineTool::run(const QStringList &arguments)
 
     const QString command = arguments.constFirst();
     const QStringList rest = arguments.mid(1);
-    const FamilyRegistry registry = FamilyRegistry::loadDefault();
+    m_registry = std::make_unique<FamilyRegistry>(FamilyRegistry::loadDefault());
+    const FamilyRegistry &registry = *m_registry;
     MapCommands maps(registry, m_out, m_err);
     if (command == QLatin1String("families"))
         return maps.families(rest);
@@ -56,6 +67,11 @@ std::optional<int> CommandLineTool::run(const QStringList &arguments)
         return maps.plan(rest);
     if (command == QLatin1String("decode"))
         return maps.decode(rest);
+    if (LineCommands::commands().contains(command)) {
+        m_lineCommands = std::make_unique<LineCommands>(registry, m_out, m_err);
+        connect(m_lineCommands.get(), &LineCommands::finished, this, &CommandLineTool::finished);
+        return m_lineCommands->run(command, rest);
+    }
 
     m_err << tr("jumoctl: unknown command '%1'").arg(command) << Qt::endl << tr("Try 'jumoctl --help'.") << Qt::endl;
     return 2;

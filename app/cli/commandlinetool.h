@@ -6,11 +6,13 @@
 #include <QStringList>
 #include <QTextStream>
 
+#include <memory>
 #include <optional>
 
 namespace jumo {
 
 class FamilyRegistry;
+class LineCommands;
 
 class CommandLineTool : public QObject
 {
@@ -32,6 +34,8 @@ private:
 
     QTextStream &m_out;
     QTextStream &m_err;
+    std::unique_ptr<FamilyRegistry> m_registry;
+    std::unique_ptr<LineCommands> m_lineCommands;
 };
 
 } // namespace jumo

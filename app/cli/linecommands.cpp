@@ -1,0 +1,496 @@
+#include "linecommands.h"
+
+#include "commandparser.h"
+#include "devicescanner.h"
+#include "familyregistry.h"
+
+#include <QDateTime>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+namespace jumo {
+
+namespace {
+
+QJsonValue jsonValue(const EntryState &state)
+{
+    if (state.error != ReadError::None || !state.value.isOk())
+        return QJsonValue();
+    return QJsonValue::fromVariant(state.value.value);
+}
+
+QString deviceName(const RegisterMap &map, quint8 address)
+{
+    return QStringLiteral("%1@%2").arg(map.family).arg(address);
+}
+
+bool isFailure(const EntryState *state)
+{
+    return !state || state->error != ReadError::None;
+}
+
+} // namespace
+
+LineCommands::LineCommands(const FamilyRegistry &registry, QTextStream &out, QTextStream &err, QObject *parent)
+    : QObject(parent), m_registry(registry), m_out(out), m_err(err)
+{
+}
+
+LineCommands::~LineCommands() = default;
+
+QStringList LineCommands::commands()
+{
+    return {QStringLiteral("scan"), QStringLiteral("read"), QStringLiteral("write"), QStringLiteral("dump"),
+            QStringLiteral("monitor")};
+}
+
+std::optional<int> LineCommands::run(const QString &command, const QStringList &arguments)
+{
+    if (command == QLatin1String("scan"))
+        return scan(arguments);
+    if (command == QLatin1String("read"))
+        return read(arguments, false);
+    if (command == QLatin1String("dump"))
+        return read(arguments, true);
+    if (command == QLatin1String("write"))
+        return write(arguments);
+    if (command == QLatin1String("monitor"))
+        return monitor(arguments);
+    return 2;
+}
+
+void LineCommands::addLineOptions(CommandParser &parser)
+{
+    parser.addOption({QStringLiteral("port"), tr("Serial port, e.g. /dev/ttyUSB0 (required)."), tr("path")});
+    parser.addOption({QStringLiteral("baud"), tr("Baud rate: 4800, 9600, 19200 or 38400 (default 9600)."), tr("rate"),
+                      QStringLiteral("9600")});
+    parser.addOption({QStringLiteral("format"), tr("Data format: 8N1, 8E1, 8O1 or 8N2 (default 8N1)."), tr("format"),
+                      QStringLiteral("8N1")});
+    parser.addOption({QStringLiteral("timeout"),
+                      tr("Reply timeout in ms (default: derived from the baud rate and the device family)."), tr("ms")});
+    parser.addOption({QStringLiteral("min-response"),
+                      tr("Minimum response time configured in the devices, in ms (default 0)."), tr("ms"),
+                      QStringLiteral("0")});
+    parser.addOption({QStringLiteral("retries"), tr("Retries after a lost reply (default 2)."), tr("n"),
+                      QStringLiteral("2")});
+    parser.addOption({QStringLiteral("read-only"), tr("Never write to the line (control-room mode).")});
+}
+
+std::optional<int> LineCommands::openLine(CommandParser &parser)
+{
+    BusSettings settings;
+    settings.portName = parser.value(QStringLiteral("port"));
+    if (settings.portName.isEmpty()) {
+        m_err << tr("--port is required") << Qt::endl;
+        return 2;
+    }
+    bool ok = false;
+    const int baud = parser.value(QStringLiteral("baud")).toInt(&ok);
+    const std::optional<LineFormat> format = LineFormat::parse(ok ? baud : 0, parser.value(QStringLiteral("format")));
+    if (!format) {
+        m_err << tr("unsupported baud rate or data format: %1 %2")
+                         .arg(parser.value(QStringLiteral("baud")), parser.value(QStringLiteral("format")))
+              << Qt::endl;
+        return 2;
+    }
+    settings.format = *format;
+    if (parser.isSet(QStringLiteral("timeout"))) {
+        settings.timeoutMs = parser.value(QStringLiteral("timeout")).toInt(&ok);
+        if (!ok || settings.timeoutMs < 10 || settings.timeoutMs > 60000) {
+            m_err << tr("--timeout must be 10..60000 ms") << Qt::endl;
+            return 2;
+        }
+    }
+    settings.minimumResponseTimeMs = parser.value(QStringLiteral("min-response")).toInt(&ok);
+    if (!ok || settings.minimumResponseTimeMs < 0 || settings.minimumResponseTimeMs > 500) {
+        m_err << tr("--min-response must be 0..500 ms") << Qt::endl;
+        return 2;
+    }
+    settings.retries = parser.value(QStringLiteral("retries")).toInt(&ok);
+    if (!ok || settings.retries < 0 || settings.retries > 10) {
+        m_err << tr("--retries must be 0..10") << Qt::endl;
+        return 2;
+    }
+    settings.readOnly = parser.isSet(QStringLiteral("read-only"));
+    m_bus.setSettings(settings);
+    if (!m_bus.open()) {
+        m_err << m_bus.lastError() << Qt::endl;
+        return 1;
+    }
+    connect(&m_bus, &Bus::lineError, this, [this](const QString &message) {
+        m_err << message << Qt::endl;
+        m_failed = true;
+        finish(1);
+    });
+    return std::nullopt;
+}
+
+bool LineCommands::parseDevice(const QString &text, Target &target)
+{
+    const QString family = text.section(QLatin1Char('@'), 0, 0);
+    bool ok = false;
+    const int address = text.section(QLatin1Char('@'), 1).toInt(&ok);
+    target.map = m_registry.family(family);
+    if (!target.map || !ok || !text.contains(QLatin1Char('@'))) {
+        m_err << tr("'%1' is not a device: use FAMILY@ADDRESS, e.g. ipc300@1 (families: %2)")
+                         .arg(text, m_registry.familyIds().join(QStringLiteral(", ")))
+              << Qt::endl;
+        return false;
+    }
+    if (address < 1 || address > 255) {
+        m_err << tr("device address %1 is outside 1..255").arg(address) << Qt::endl;
+        return false;
+    }
+    target.address = quint8(address);
+    return true;
+}
+
+void LineCommands::finish(int code)
+{
+    if (m_finished)
+        return;
+    m_finished = true;
+    m_out.flush();
+    m_err.flush();
+    m_bus.close();
+    emit finished(code);
+}
+
+std::optional<int> LineCommands::scan(const QStringList &arguments)
+{
+    CommandParser parser(QStringLiteral("scan"), tr("Finds devices on the line and names their family."));
+    addLineOptions(parser);
+    parser.addOption({QStringLiteral("from"), tr("First address (default 1)."), tr("address"), QStringLiteral("1")});
+    parser.addOption({QStringLiteral("to"), tr("Last address (default 247)."), tr("address"), QStringLiteral("247")});
+    if (const auto stop = parser.parseArguments(arguments, m_out, m_err, 0, 0))
+        return stop;
+    bool okFrom = false;
+    bool okTo = false;
+    const int from = parser.value(QStringLiteral("from")).toInt(&okFrom);
+    const int to = parser.value(QStringLiteral("to")).toInt(&okTo);
+    if (!okFrom || !okTo || from < 1 || to > 255 || from > to) {
+        m_err << tr("--from and --to must be addresses 1..255, from <= to") << Qt::endl;
+        return 2;
+    }
+    if (const auto stop = openLine(parser))
+        return stop;
+    m_scanner = std::make_unique<DeviceScanner>(m_bus, m_registry.families());
+    connect(m_scanner.get(), &DeviceScanner::progress, this, [this](int address, int done, int total) {
+        m_err << '\r' << tr("scanning address %1 (%2 of %3)").arg(address).arg(done + 1).arg(total) << Qt::flush;
+    });
+    connect(m_scanner.get(), &DeviceScanner::found, this, [this](int address, std::shared_ptr<const RegisterMap> map) {
+        m_err << '\r' << QString(40, QLatin1Char(' ')) << '\r';
+        m_out << deviceName(*map, quint8(address)) << '\t' << map->name << Qt::endl;
+        m_targets << Target{map, quint8(address), 0, 0};
+    });
+    connect(m_scanner.get(), &DeviceScanner::unknownDevice, this, [this](int address) {
+        m_err << '\r' << tr("address %1 answers, but matches no known family").arg(address) << Qt::endl;
+    });
+    connect(m_scanner.get(), &DeviceScanner::finished, this, [this](bool) {
+        m_err << '\r' << tr("%n device(s) found", nullptr, int(m_targets.size())) << QString(20, QLatin1Char(' '))
+              << Qt::endl;
+        finish(m_targets.isEmpty() ? 1 : 0);
+    });
+    m_scanner->start(from, to);
+    return std::nullopt;
+}
+
+void LineCommands::printValues(const Target &target, const QStringList &ids)
+{
+    if (m_json) {
+        QJsonArray array;
+        for (const QString &id : ids) {
+            const RegisterEntry *e = target.map->entry(id);
+            const EntryState *s = m_bus.entryState(target.id, id);
+            if (isFailure(s))
+                m_failed = true;
+            array.append(QJsonObject{{"family", target.map->family},
+                                     {"address", int(target.address)},
+                                     {"id", id},
+                                     {"label", e->label},
+                                     {"register", formatAddress(e->address)},
+                                     {"value", s ? jsonValue(*s) : QJsonValue()},
+                                     {"unit", e->unit},
+                                     {"status", s ? s->statusName() : QStringLiteral("timeout")}});
+        }
+        m_out << QJsonDocument(array).toJson(QJsonDocument::Indented);
+        return;
+    }
+    for (const QString &id : ids) {
+        const RegisterEntry *e = target.map->entry(id);
+        const EntryState *s = m_bus.entryState(target.id, id);
+        QString shown;
+        if (isFailure(s)) {
+            m_failed = true;
+            shown = s && s->error == ReadError::Exception
+                    ? tr("exception %1: %2").arg(s->exceptionCode).arg(target.map->exceptionMeaning(s->exceptionCode))
+                    : tr("no answer");
+        } else {
+            shown = s->value.display;
+            if (s->value.isOk() && !e->unit.isEmpty())
+                shown += QLatin1Char(' ') + e->unit;
+        }
+        m_out << formatAddress(e->address) << "  " << id << " = " << shown << "  [" << (s ? s->statusName() : QStringLiteral("timeout"))
+              << ']' << Qt::endl;
+    }
+}
+
+std::optional<int> LineCommands::read(const QStringList &arguments, bool dump)
+{
+    CommandParser parser(dump ? QStringLiteral("dump") : QStringLiteral("read"),
+                         dump ? tr("Reads every readable entry of a device once.")
+                              : tr("Reads entries of a device once."));
+    addLineOptions(parser);
+    parser.addOption({QStringLiteral("json"),
+                      tr("JSON array of {family, address, id, label, register, value, unit, status}.")});
+    parser.addPositionalArgument(QStringLiteral("device"), tr("FAMILY@ADDRESS, e.g. ipc300@1."));
+    if (!dump)
+        parser.addPositionalArgument(QStringLiteral("id"), tr("Entry ids."), QStringLiteral("id..."));
+    if (const auto stop = parser.parseArguments(arguments, m_out, m_err, dump ? 1 : 2, dump ? 1 : -1))
+        return stop;
+    QStringList args = parser.positionalArguments();
+    Target target;
+    if (!parseDevice(args.takeFirst(), target))
+        return 2;
+    QStringList ids;
+    if (dump) {
+        for (const RegisterEntry &e : target.map->entries()) {
+            if (e.isReadable() && e.alias.isEmpty())
+                ids << e.id;
+        }
+    } else {
+        for (const QString &id : std::as_const(args)) {
+            const RegisterEntry *e = target.map->entry(id);
+            if (!e) {
+                m_err << tr("'%1' is not an entry of %2").arg(id, target.map->family) << Qt::endl;
+                return 2;
+            }
+            if (!e->isReadable()) {
+                m_err << tr("'%1' is write-only").arg(id) << Qt::endl;
+                return 2;
+            }
+            ids << id;
+        }
+    }
+    m_json = parser.isSet(QStringLiteral("json"));
+    if (const auto stop = openLine(parser))
+        return stop;
+    m_bus.setPolling(false);
+    target.id = m_bus.addDevice(target.map, target.address);
+    m_bus.setPollEntries(target.id, dump ? QStringList() : ids);
+    m_targets = {target};
+    m_ids = ids;
+    connect(&m_bus, &Bus::pollCycleFinished, this, [this](DeviceId id, double) {
+        if (id != m_targets.first().id)
+            return;
+        printValues(m_targets.first(), m_ids);
+        if (m_failed)
+            m_err << tr("some entries could not be read") << Qt::endl;
+        finish(m_failed ? 1 : 0);
+    });
+    m_bus.requestCycle(target.id);
+    return std::nullopt;
+}
+
+std::optional<int> LineCommands::write(const QStringList &arguments)
+{
+    CommandParser parser(QStringLiteral("write"),
+                         tr("Writes entries of a device; each write is verified by reading it back."));
+    addLineOptions(parser);
+    parser.addOption({QStringLiteral("verify"),
+                      tr("For a broadcast (FAMILY@0): the addresses to read it back from, e.g. 1,2,5."),
+                      tr("addresses")});
+    parser.addPositionalArgument(QStringLiteral("device"), tr("FAMILY@ADDRESS, or FAMILY@0 for a broadcast."));
+    parser.addPositionalArgument(QStringLiteral("assignment"), tr("ID=VALUE, e.g. input_setpoint=42.5."),
+                                 QStringLiteral("id=value..."));
+    if (const auto stop = parser.parseArguments(arguments, m_out, m_err, 2))
+        return stop;
+    QStringList args = parser.positionalArguments();
+    const QString deviceText = args.takeFirst();
+    Target target;
+    const bool broadcast = deviceText.endsWith(QLatin1String("@0"));
+    if (broadcast) {
+        target.map = m_registry.family(deviceText.chopped(2));
+        if (!target.map) {
+            m_err << tr("'%1' is not a device: use FAMILY@ADDRESS").arg(deviceText) << Qt::endl;
+            return 2;
+        }
+    } else if (!parseDevice(deviceText, target)) {
+        return 2;
+    }
+    QList<quint8> verifyAddresses;
+    if (broadcast) {
+        for (const QString &a : parser.value(QStringLiteral("verify")).split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+            bool ok = false;
+            const int address = a.toInt(&ok);
+            if (!ok || address < 1 || address > 255) {
+                m_err << tr("--verify takes addresses 1..255, not '%1'").arg(a) << Qt::endl;
+                return 2;
+            }
+            verifyAddresses << quint8(address);
+        }
+        if (verifyAddresses.isEmpty()) {
+            m_err << tr("a broadcast is not answered: name the devices to read it back from with --verify") << Qt::endl;
+            return 2;
+        }
+    }
+    for (const QString &assignment : std::as_const(args)) {
+        const qsizetype eq = assignment.indexOf(QLatin1Char('='));
+        const QString id = assignment.left(eq);
+        const RegisterEntry *e = eq > 0 ? target.map->entry(id) : nullptr;
+        if (!e) {
+            m_err << (eq > 0 ? tr("'%1' is not an entry of %2").arg(id, target.map->family)
+                             : tr("'%1' is not ID=VALUE").arg(assignment))
+                  << Qt::endl;
+            return 2;
+        }
+        // Refuse a bad value before opening the line: nothing is sent for a typo.
+        const EncodeResult encoded = ValueCodec::encode(*e, *target.map, assignment.mid(eq + 1));
+        if (!encoded.ok()) {
+            m_err << encoded.error << Qt::endl;
+            return 2;
+        }
+        m_pendingWrites << qMakePair(id, assignment.mid(eq + 1));
+    }
+    if (const auto stop = openLine(parser))
+        return stop;
+    m_bus.setPolling(false);
+    if (broadcast) {
+        // The bus reads a broadcast back from every device of the family it knows.
+        for (quint8 address : std::as_const(verifyAddresses))
+            m_bus.addDevice(target.map, address);
+        target.address = 0;
+    } else {
+        target.id = m_bus.addDevice(target.map, target.address);
+    }
+    m_targets = {target};
+    connect(&m_bus, &Bus::writeFinished, this, [this](int ticket, const WriteOutcome &outcome) {
+        if (ticket != m_writeTicket)
+            return;
+        const QString id = m_pendingWrites.first().first;
+        m_pendingWrites.removeFirst();
+        (outcome.succeeded() ? m_out : m_err) << id << ": " << outcome.message << Qt::endl;
+        if (!outcome.succeeded())
+            m_failed = true;
+        writeNext();
+    });
+    writeNext();
+    return std::nullopt;
+}
+
+void LineCommands::writeNext()
+{
+    if (m_pendingWrites.isEmpty()) {
+        finish(m_failed ? 1 : 0);
+        return;
+    }
+    const Target &target = m_targets.first();
+    const auto &[id, value] = m_pendingWrites.first();
+    m_writeTicket = target.address == 0 ? m_bus.writeBroadcast(target.map->family, id, value)
+                                        : m_bus.write(target.id, id, value);
+}
+
+std::optional<int> LineCommands::monitor(const QStringList &arguments)
+{
+    CommandParser parser(QStringLiteral("monitor"), tr("Polls devices continuously and prints every poll cycle."));
+    addLineOptions(parser);
+    parser.addOption({QStringLiteral("interval"), tr("Poll interval per device in ms (default 0: as fast as the line allows)."),
+                      tr("ms"), QStringLiteral("0")});
+    parser.addOption({QStringLiteral("cycles"), tr("Stop after this many cycles of every device (default: run until stopped)."),
+                      tr("n"), QStringLiteral("0")});
+    parser.addOption({QStringLiteral("ids"), tr("Comma-separated entry ids to poll (default: all readable entries)."),
+                      tr("ids")});
+    parser.addOption({QStringLiteral("jsonl"), tr("One JSON object per completed poll cycle of a device.")});
+    parser.addOption({QStringLiteral("csv"), tr("CSV rows: time,device,id,value,unit,status.")});
+    parser.addPositionalArgument(QStringLiteral("device"), tr("FAMILY@ADDRESS."), QStringLiteral("device..."));
+    if (const auto stop = parser.parseArguments(arguments, m_out, m_err, 1))
+        return stop;
+    m_json = parser.isSet(QStringLiteral("jsonl"));
+    m_csv = parser.isSet(QStringLiteral("csv"));
+    if (m_json == m_csv) {
+        m_err << tr("jumoctl monitor: give exactly one of --jsonl and --csv") << Qt::endl;
+        return 2;
+    }
+    bool ok = false;
+    const int interval = parser.value(QStringLiteral("interval")).toInt(&ok);
+    if (!ok || interval < 0) {
+        m_err << tr("--interval must be a number of ms >= 0") << Qt::endl;
+        return 2;
+    }
+    m_cyclesWanted = parser.value(QStringLiteral("cycles")).toInt(&ok);
+    if (!ok || m_cyclesWanted < 0) {
+        m_err << tr("--cycles must be a number >= 0") << Qt::endl;
+        return 2;
+    }
+    const QStringList ids = parser.value(QStringLiteral("ids")).split(QLatin1Char(','), Qt::SkipEmptyParts);
+    for (const QString &text : parser.positionalArguments()) {
+        Target target;
+        if (!parseDevice(text, target))
+            return 2;
+        for (const QString &id : ids) {
+            const RegisterEntry *e = target.map->entry(id);
+            if (!e || !e->isReadable()) {
+                m_err << tr("'%1' is not a readable entry of %2").arg(id, target.map->family) << Qt::endl;
+                return 2;
+            }
+        }
+        m_targets << target;
+    }
+    if (const auto stop = openLine(parser))
+        return stop;
+    if (m_csv)
+        m_out << "time,device,id,value,unit,status" << Qt::endl;
+    for (Target &target : m_targets) {
+        target.id = m_bus.addDevice(target.map, target.address);
+        m_bus.setPollEntries(target.id, ids);
+        m_bus.setPollInterval(target.id, interval);
+    }
+    connect(&m_bus, &Bus::pollCycleFinished, this, [this, ids](DeviceId id, double cycleMs) {
+        auto target = std::find_if(m_targets.begin(), m_targets.end(), [id](const Target &t) { return t.id == id; });
+        if (target == m_targets.end())
+            return;
+        QStringList entryIds = ids;
+        if (entryIds.isEmpty()) {
+            for (const RegisterEntry &e : target->map->entries()) {
+                if (e.isReadable() && e.alias.isEmpty())
+                    entryIds << e.id;
+            }
+        }
+        const QString time = QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs);
+        const QString device = deviceName(*target->map, target->address);
+        if (m_json) {
+            QJsonObject values;
+            QJsonObject status;
+            for (const QString &e : std::as_const(entryIds)) {
+                const EntryState *s = m_bus.entryState(id, e);
+                values.insert(e, s ? jsonValue(*s) : QJsonValue());
+                status.insert(e, s ? s->statusName() : QStringLiteral("timeout"));
+                m_failed |= isFailure(s);
+            }
+            m_out << QJsonDocument(QJsonObject{{"time", time}, {"device", device}, {"cycle_ms", cycleMs},
+                                               {"values", values}, {"status", status}})
+                             .toJson(QJsonDocument::Compact)
+                  << Qt::endl;
+        } else {
+            for (const QString &e : std::as_const(entryIds)) {
+                const EntryState *s = m_bus.entryState(id, e);
+                const RegisterEntry *entry = target->map->entry(e);
+                QString value = s && s->error == ReadError::None && s->value.isOk() ? s->value.display : QString();
+                if (value.contains(QLatin1Char(',')) || value.contains(QLatin1Char('"')))
+                    value = QLatin1Char('"') + value.replace(QLatin1String("\""), QLatin1String("\"\"")) + QLatin1Char('"');
+                m_out << time << ',' << device << ',' << e << ',' << value << ',' << entry->unit << ','
+                      << (s ? s->statusName() : QStringLiteral("timeout")) << '\n';
+                m_failed |= isFailure(s);
+            }
+            m_out.flush();
+        }
+        ++target->cycles;
+        if (m_cyclesWanted > 0
+            && std::all_of(m_targets.cbegin(), m_targets.cend(), [this](const Target &t) { return t.cycles >= m_cyclesWanted; }))
+            finish(m_failed ? 1 : 0);
+    });
+    return std::nullopt;
+}
+
+} // namespace jumo

@@ -1,0 +1,112 @@
+// jumo-sim: simulated JUMO devices on a serial line (or on a pseudo-terminal pair it
+// makes itself), served from the same register maps as the HMI and jumoctl.
+#include "familyregistry.h"
+#include "ptypair.h"
+#include "simulatorline.h"
+#include "translations.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QTextStream>
+
+#include <cstdio>
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("jumo-sim"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(JUMO_VERSION));
+    jumo::installTranslations(app);
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QCoreApplication::translate(
+            "main", "Simulated JUMO devices on a serial line. DEVICE is FAMILY@ADDRESS, e.g. ipc300@1."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addOption({QStringLiteral("port"), QCoreApplication::translate("main", "Serial port to serve."),
+                      QStringLiteral("path")});
+    parser.addOption({QStringLiteral("pty"),
+                      QCoreApplication::translate("main", "Make a pseudo-terminal pair in this folder (needs socat); "
+                                                          "clients connect to FOLDER/master."),
+                      QStringLiteral("folder")});
+    parser.addOption({QStringLiteral("baud"), QCoreApplication::translate("main", "Baud rate (default 9600)."),
+                      QStringLiteral("rate"), QStringLiteral("9600")});
+    parser.addOption({QStringLiteral("format"), QCoreApplication::translate("main", "Data format (default 8N1)."),
+                      QStringLiteral("format"), QStringLiteral("8N1")});
+    parser.addOption({QStringLiteral("delay"),
+                      QCoreApplication::translate("main", "Processing delay before each reply in ms (default 2)."),
+                      QStringLiteral("ms"), QStringLiteral("2")});
+    parser.addOption({QStringLiteral("min-response"),
+                      QCoreApplication::translate("main", "Minimum response time in ms (default 0)."),
+                      QStringLiteral("ms"), QStringLiteral("0")});
+    parser.addOption({QStringLiteral("pace"),
+                      QCoreApplication::translate("main", "Delay replies by their wire time at the baud rate.")});
+    parser.addPositionalArgument(QStringLiteral("device"), QCoreApplication::translate("main", "Devices to simulate."),
+                                 QStringLiteral("device..."));
+    parser.process(app);
+
+    const std::optional<jumo::LineFormat> format =
+            jumo::LineFormat::parse(parser.value(QStringLiteral("baud")).toInt(), parser.value(QStringLiteral("format")));
+    if (!format) {
+        err << QCoreApplication::translate("main", "unsupported baud rate or data format") << Qt::endl;
+        return 2;
+    }
+    if (parser.isSet(QStringLiteral("port")) == parser.isSet(QStringLiteral("pty"))) {
+        err << QCoreApplication::translate("main", "give exactly one of --port and --pty") << Qt::endl;
+        return 2;
+    }
+    const jumo::FamilyRegistry registry = jumo::FamilyRegistry::loadDefault();
+    for (const QString &e : registry.errors())
+        err << QCoreApplication::translate("main", "refused map file: %1").arg(e) << Qt::endl;
+    jumo::SimulatorLine line;
+    line.setProcessingDelayMs(parser.value(QStringLiteral("delay")).toInt());
+    line.setMinimumResponseTimeMs(parser.value(QStringLiteral("min-response")).toInt());
+    line.setPacing(parser.isSet(QStringLiteral("pace")));
+    line.setTickInterval(100);
+    if (parser.positionalArguments().isEmpty()) {
+        err << QCoreApplication::translate("main", "name at least one device, e.g. ipc300@1") << Qt::endl;
+        return 2;
+    }
+    for (const QString &device : parser.positionalArguments()) {
+        const auto map = registry.family(device.section(QLatin1Char('@'), 0, 0));
+        bool ok = false;
+        const int address = device.section(QLatin1Char('@'), 1).toInt(&ok);
+        if (!map || !ok || address < 1 || address > 255) {
+            err << QCoreApplication::translate("main", "'%1' is not FAMILY@ADDRESS with a known family").arg(device)
+                << Qt::endl;
+            return 2;
+        }
+        line.addDevice(map, quint8(address));
+    }
+
+    auto serve = [&](const QString &port) {
+        QString error;
+        if (!line.open(port, *format, &error)) {
+            err << QCoreApplication::translate("main", "cannot open %1: %2").arg(port, error) << Qt::endl;
+            QCoreApplication::exit(1);
+            return;
+        }
+        out << QCoreApplication::translate("main", "serving %n device(s) on %1", nullptr, int(line.devices().size()))
+                        .arg(port)
+            << Qt::endl;
+    };
+    jumo::PtyPair pty;
+    if (parser.isSet(QStringLiteral("pty"))) {
+        QObject::connect(&pty, &jumo::PtyPair::ready, &app, [&] {
+            serve(pty.deviceEnd());
+            out << QCoreApplication::translate("main", "connect to %1").arg(pty.masterEnd()) << Qt::endl;
+        });
+        QObject::connect(&pty, &jumo::PtyPair::failed, &app, [&](const QString &reason) {
+            err << reason << Qt::endl;
+            QCoreApplication::exit(1);
+        });
+        pty.start(parser.value(QStringLiteral("pty")));
+    } else {
+        serve(parser.value(QStringLiteral("port")));
+        if (!line.isOpen())
+            return 1;
+    }
+    return app.exec();
+}

@@ -1,0 +1,61 @@
+// Finds devices on a line and names their family, with each family's identify probes
+// from its map. Probe answers are shared between families, so an address costs one
+// request per distinct probe, and a silent address one timeout.
+#pragma once
+
+#include "registermap.h"
+
+#include <QHash>
+#include <QObject>
+
+#include <memory>
+
+namespace jumo {
+
+class Bus;
+
+class DeviceScanner : public QObject
+{
+    Q_OBJECT
+
+public:
+    DeviceScanner(Bus &bus, QList<std::shared_ptr<const RegisterMap>> families, QObject *parent = nullptr);
+
+    void start(int firstAddress, int lastAddress);
+    void cancel();
+    bool isRunning() const { return m_running; }
+
+signals:
+    void progress(int address, int done, int total);
+    void found(int address, std::shared_ptr<const jumo::RegisterMap> family);
+    // An address answered but matched no family.
+    void unknownDevice(int address);
+    void finished(bool cancelled);
+
+private:
+    struct ProbeResult
+    {
+        bool timedOut = false;
+        int exceptionCode = 0;
+        QList<quint16> words;
+    };
+
+    void nextAddress();
+    void evaluate();
+    void onProbeFinished(int ticket, const QList<quint16> &words, bool timedOut, int exceptionCode);
+    static bool passes(const IdentifyProbe &probe, const ProbeResult &result);
+
+    Bus &m_bus;
+    QList<std::shared_ptr<const RegisterMap>> m_families;   // in scan order
+    ProtocolInfo m_slowest;                                   // timing that fits every family
+    QHash<quint64, ProbeResult> m_cache;                      // (register, words) -> answer
+    int m_address = 0;
+    int m_last = 0;
+    int m_first = 0;
+    int m_pendingTicket = -1;
+    quint64 m_pendingKey = 0;
+    bool m_running = false;
+    bool m_cancelled = false;
+};
+
+} // namespace jumo

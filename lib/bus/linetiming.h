@@ -1,0 +1,29 @@
+// Time a request takes on an RS-485 line, from the manuals' timing chapters: request and
+// reply on the wire, the 3.5-character gaps, the device's processing time or configured
+// minimum response time. Used for timeouts and by the bus benchmark.
+#pragma once
+
+#include "lineformat.h"
+#include "registermap.h"
+
+namespace jumo::LineTiming {
+
+constexpr int readRequestBytes = 8;
+constexpr int readReplyBytes(int words) { return 5 + 2 * words; }
+constexpr int writeRequestBytes(int words) { return words == 1 ? 8 : 9 + 2 * words; }
+constexpr int writeReplyBytes = 8;
+constexpr int exceptionReplyBytes = 5;
+
+// The theoretical best: the line is busy for exactly this long per request: request,
+// frame gap, the device's time, reply, and the frame gap or the family's turnaround.
+double transactionMs(const LineFormat &format, int requestBytes, int replyBytes, double deviceMs,
+                     double turnaroundMs = 0);
+// What the device needs between request and reply: its processing time, or the
+// configured minimum response time when longer.
+double deviceMs(const ProtocolInfo &protocol, int minimumResponseTimeMs);
+// How long to wait for a reply before calling it lost: the worst case plus a margin
+// for USB adapters and the operating system.
+int timeoutMs(const LineFormat &format, int requestBytes, int replyBytes, const ProtocolInfo &protocol,
+              int minimumResponseTimeMs);
+
+} // namespace jumo::LineTiming

@@ -1,0 +1,43 @@
+// A null-modem pair of pseudo-terminals made by socat: the simulated line of the demo
+// mode, jumo-sim and the integration tests. Started asynchronously; ready() tells when
+// both ends exist.
+#pragma once
+
+#include <QObject>
+#include <QProcess>
+#include <QTimer>
+
+namespace jumo {
+
+class PtyPair : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit PtyPair(QObject *parent = nullptr);
+    ~PtyPair() override;
+
+    // Creates the links directory/"device" and directory/"master".
+    void start(const QString &directory);
+    void stop();
+
+    QString deviceEnd() const { return m_deviceEnd; }   // where the simulator listens
+    QString masterEnd() const { return m_masterEnd; }   // where the client connects
+    bool isReady() const { return m_ready; }
+
+signals:
+    void ready();
+    void failed(const QString &reason);
+
+private:
+    void poll();
+
+    QProcess m_socat;
+    QTimer m_poll;
+    QString m_deviceEnd;
+    QString m_masterEnd;
+    int m_polls = 0;
+    bool m_ready = false;
+};
+
+} // namespace jumo

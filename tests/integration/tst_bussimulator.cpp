@@ -1,0 +1,280 @@
+// The bus against the device simulator over a pty line: scan, error values, atomic
+// float writes, broadcasts, command words, RAM overrides, setpoint hold, the IPC/TYA
+// bus-error keepalive, and a port that goes away and comes back.
+#include "bus.h"
+#include "devicescanner.h"
+#include "rtuframe.h"
+#include "testpeers.h"
+
+#include <QTest>
+
+using namespace jumo;
+using namespace jumo::test;
+
+namespace {
+
+struct Frames
+{
+    QList<QByteArray> all;
+
+    int count(quint8 slave, quint8 function, quint16 address = 0xFFFF) const
+    {
+        int n = 0;
+        for (const QByteArray &f : all) {
+            const quint16 a = quint16(quint8(f[2]) << 8 | quint8(f[3]));
+            if (quint8(f[0]) == slave && quint8(f[1]) == function && (address == 0xFFFF || a == address))
+                ++n;
+        }
+        return n;
+    }
+};
+
+} // namespace
+
+class tst_BusSimulator : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void scanFindsOneDeviceOfEachFamily();
+    void errorValuesAreReportedAsSuch();
+    void floatIsWrittenAtomicallyWith0x10();
+    void broadcastIsReadBackFromEveryDevice();
+    void commandWordsTakeEffect();
+    void ramOverrideAndBackToDeviceValue();
+    void holdRewritesRamSetpointButNeverEeprom();
+    void busErrorKeepalive();
+    void lostPortFailsWritesAndComesBack();
+
+private:
+    struct Setup
+    {
+        TestLine line;
+        SimulatorPeer sim;
+        Bus bus;
+        Frames frames;
+    };
+    bool prepare(Setup &s, const QList<QPair<QString, quint8>> &devices);
+};
+
+bool tst_BusSimulator::prepare(Setup &s, const QList<QPair<QString, quint8>> &devices)
+{
+    if (!s.line.start())
+        return false;
+    for (const auto &[family, address] : devices)
+        s.sim.line().addDevice(families().family(family), address);
+    if (!s.sim.start(s.line.deviceEnd(), {}))
+        return false;
+    QObject::connect(&s.sim.line(), &SimulatorLine::requestReceived, &s.bus,
+                     [&s](const QByteArray &frame) { s.frames.all << frame; });
+    BusSettings settings;
+    settings.portName = s.line.masterEnd();
+    settings.format = testFormat();
+    settings.timeoutMs = 500;
+    settings.reconnectIntervalMs = 200;
+    s.bus.setSettings(settings);
+    return s.bus.open();
+}
+
+void tst_BusSimulator::scanFindsOneDeviceOfEachFamily()
+{
+    Setup s;
+    QVERIFY(prepare(s, {{"ipc300", 1}, {"tya200", 2}, {"quantrol", 3}, {"dtron300", 4}}));
+    // Without a timeout override the scan must wait for the slowest family (250 ms).
+    BusSettings settings = s.bus.settings();
+    settings.timeoutMs = 0;
+    s.bus.setSettings(settings);
+    DeviceScanner scanner(s.bus, families().families());
+    QMap<int, QString> found;
+    connect(&scanner, &DeviceScanner::found, this,
+            [&found](int address, std::shared_ptr<const RegisterMap> map) { found.insert(address, map->family); });
+    QSignalSpy finished(&scanner, &DeviceScanner::finished);
+    scanner.start(1, 6);
+    QVERIFY(finished.wait(30000));
+    QCOMPARE(found, (QMap<int, QString>{{1, "ipc300"}, {2, "tya200"}, {3, "quantrol"}, {4, "dtron300"}}));
+}
+
+void tst_BusSimulator::errorValuesAreReportedAsSuch()
+{
+    Setup s;
+    QVERIFY(prepare(s, {{"ipc300", 1}}));
+    SimulatedDevice *device = s.sim.line().device(1);
+    device->forceStatus("load_current", ValueStatus::Overrange);
+    device->forceStatus("load_voltage", ValueStatus::Underrange);
+    device->forceStatus("power", ValueStatus::Invalid);
+    const DeviceId id = s.bus.addDevice(families().family("ipc300"), 1);
+    s.bus.setPolling(false);
+    QSignalSpy cycle(&s.bus, &Bus::pollCycleFinished);
+    s.bus.requestCycle(id);
+    QVERIFY(cycle.wait(20000));
+    QCOMPARE(s.bus.entryState(id, "load_current")->statusName(), QString("overrange"));
+    QCOMPARE(s.bus.entryState(id, "load_voltage")->statusName(), QString("underrange"));
+    QCOMPARE(s.bus.entryState(id, "power")->statusName(), QString("invalid"));
+    QCOMPARE(s.bus.entryState(id, "load_current")->value.display, QString("Overrange"));
+    QVERIFY(!s.bus.entryState(id, "load_current")->value.value.isValid());
+    QCOMPARE(s.bus.entryState(id, "device_name")->value.display, QString("IPC300  "));
+    // Every readable entry of the family was read in that one cycle.
+    int readable = 0;
+    for (const RegisterEntry &e : families().family("ipc300")->entries()) {
+        if (e.isReadable() && e.alias.isEmpty()) {
+            ++readable;
+            QVERIFY2(s.bus.entryState(id, e.id) && s.bus.entryState(id, e.id)->hasValue(), qPrintable(e.id));
+        }
+    }
+    QCOMPARE(readable, 111);
+}
+
+void tst_BusSimulator::floatIsWrittenAtomicallyWith0x10()
+{
+    Setup s;
+    QVERIFY(prepare(s, {{"tya200", 7}}));
+    const DeviceId id = s.bus.addDevice(families().family("tya200"), 7);
+    QSignalSpy finished(&s.bus, &Bus::writeFinished);
+    s.bus.write(id, "setpoint", "66.6");
+    QVERIFY(finished.wait(10000));
+    QCOMPARE(finished.at(0).at(1).value<WriteOutcome>().result, WriteOutcome::Result::Confirmed);
+    QCOMPARE(s.frames.count(7, 0x10, 0x010A), 1);
+    QCOMPARE(s.frames.count(7, 0x06), 0);
+    QCOMPARE(s.sim.line().device(7)->number("setpoint"), 66.6);
+    // A one-word value goes out as 0x06.
+    s.bus.write(id, "digital_output", "1");
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 2, 10000);
+    QCOMPARE(s.frames.count(7, 0x06, 0x014A), 1);
+}
+
+void tst_BusSimulator::broadcastIsReadBackFromEveryDevice()
+{
+    Setup s;
+    QVERIFY(prepare(s, {{"ipc300", 1}, {"ipc300", 5}}));
+    s.bus.setPolling(false);
+    s.bus.addDevice(families().family("ipc300"), 1);
+    s.bus.addDevice(families().family("ipc300"), 5);
+    QSignalSpy finished(&s.bus, &Bus::writeFinished);
+    s.bus.writeBroadcast("ipc300", "input_setpoint", "33");
+    QVERIFY(finished.wait(10000));
+    const WriteOutcome outcome = finished.at(0).at(1).value<WriteOutcome>();
+    QVERIFY2(outcome.result == WriteOutcome::Result::Confirmed, qPrintable(outcome.message));
+    QCOMPARE(s.frames.count(0, 0x10, 0x00D5), 1);
+    QCOMPARE(s.frames.count(1, 0x03, 0x00D5), 1);
+    QCOMPARE(s.frames.count(5, 0x03, 0x00D5), 1);
+    QCOMPARE(s.sim.line().device(1)->number("input_setpoint"), 33.0);
+    QCOMPARE(s.sim.line().device(5)->number("input_setpoint"), 33.0);
+}
+
+void tst_BusSimulator::commandWordsTakeEffect()
+{
+    Setup s;
+    QVERIFY(prepare(s, {{"quantrol", 3}}));
+    const DeviceId id = s.bus.addDevice(families().family("quantrol"), 3);
+    s.bus.setPollEntries(id, {"binary_outputs", "controller_status"});
+    QSignalSpy finished(&s.bus, &Bus::writeFinished);
+    // Quantrol 4.2: output K2 is 0x8002 (bit 1 with the activation bit 15).
+    s.bus.write(id, "binary_output_control", "output_k2");
+    s.bus.write(id, "controller_functions", "manual_mode");
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 2, 10000);
+    for (const auto &args : finished)
+        QCOMPARE(args.at(1).value<WriteOutcome>().result, WriteOutcome::Result::Accepted);
+    QCOMPARE(s.frames.count(3, 0x06, 0x0025), 1);
+    QCOMPARE(s.sim.line().device(3)->word(0x0025), quint16(0x8002));
+    QVERIFY(s.sim.line().device(3)->manualMode());
+    QTRY_COMPARE_WITH_TIMEOUT(s.bus.entryState(id, "binary_outputs") ? s.bus.entryState(id, "binary_outputs")->value.raw : 0u,
+                              0x0002u, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(s.bus.entryState(id, "controller_status")
+                                     && (s.bus.entryState(id, "controller_status")->value.raw & 0x1000),
+                             10000);
+}
+
+void tst_BusSimulator::ramOverrideAndBackToDeviceValue()
+{
+    Setup s;
+    QVERIFY(prepare(s, {{"quantrol", 3}}));
+    s.bus.setPolling(false);
+    const DeviceId id = s.bus.addDevice(families().family("quantrol"), 3);
+    SimulatedDevice *device = s.sim.line().device(3);
+    QSignalSpy finished(&s.bus, &Bus::writeFinished);
+    s.bus.write(id, "ram_controller_actual_value", "55");
+    QVERIFY(finished.wait(10000));
+    device->advance(1.0);
+    QCOMPARE(device->number("actual_value_unfiltered"), 55.0);
+    // Quantrol 4.7: 200001 hands the value back to the device's own measurement.
+    s.bus.write(id, "ram_controller_actual_value", "200001");
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 2, 10000);
+    QCOMPARE(finished.at(1).at(1).value<WriteOutcome>().result, WriteOutcome::Result::Accepted);
+    device->advance(1.0);
+    QVERIFY(device->number("actual_value_unfiltered") != 55.0);
+}
+
+void tst_BusSimulator::holdRewritesRamSetpointButNeverEeprom()
+{
+    Setup s;
+    QVERIFY(prepare(s, {{"ipc300", 1}, {"quantrol", 3}}));
+    const DeviceId ipc = s.bus.addDevice(families().family("ipc300"), 1);
+    const DeviceId quantrol = s.bus.addDevice(families().family("quantrol"), 3);
+    QCOMPARE(s.bus.setHold(ipc, "input_setpoint", "25", 300), QString());
+    const QString refused = s.bus.setHold(quantrol, "setpoint_sp1", "25", 300);
+    QVERIFY2(refused.contains("EEPROM"), qPrintable(refused));
+    QTRY_VERIFY_WITH_TIMEOUT(s.frames.count(1, 0x10, 0x00D5) >= 4, 10000);
+    QCOMPARE(s.frames.count(3, 0x10), 0);
+    QCOMPARE(s.sim.line().device(1)->number("input_setpoint"), 25.0);
+    QCOMPARE(s.bus.setHold(ipc, "input_setpoint", QString()), QString());
+    const int written = s.frames.count(1, 0x10, 0x00D5);
+    QTest::qWait(1000);
+    QCOMPARE(s.frames.count(1, 0x10, 0x00D5), written);
+}
+
+void tst_BusSimulator::busErrorKeepalive()
+{
+    Setup s;
+    QVERIFY(prepare(s, {{"ipc300", 1}, {"quantrol", 3}}));
+    const DeviceId ipc = s.bus.addDevice(families().family("ipc300"), 1);
+    const DeviceId quantrol = s.bus.addDevice(families().family("quantrol"), 3);
+    s.bus.setPollEntries(ipc, {"load_current"});
+    s.bus.setPollEntries(quantrol, {"controller_status"});
+    s.bus.setPollInterval(ipc, 60000);
+    s.bus.setPollInterval(quantrol, 60000);
+    QTRY_VERIFY_WITH_TIMEOUT(s.frames.count(1, 0x03) >= 1 && s.frames.count(3, 0x03) >= 1, 10000);
+    // IPC 300 raises a bus error after 10 s without a telegram: the bus talks to it at
+    // least every 5 s whatever its poll interval; the Quantrol has no such timer.
+    QTRY_VERIFY_WITH_TIMEOUT(s.frames.count(1, 0x03) >= 2, 8000);
+    QCOMPARE(s.frames.count(3, 0x03), 1);
+}
+
+void tst_BusSimulator::lostPortFailsWritesAndComesBack()
+{
+    Setup s;
+    QVERIFY(prepare(s, {{"ipc300", 1}}));
+    const DeviceId id = s.bus.addDevice(families().family("ipc300"), 1);
+    s.bus.setPollEntries(id, {"load_current"});
+    QSignalSpy updated(&s.bus, &Bus::entriesUpdated);
+    QVERIFY(updated.wait(10000));
+    QSignalSpy state(&s.bus, &Bus::stateChanged);
+    QSignalSpy finished(&s.bus, &Bus::writeFinished);
+
+    // The device stops answering writes, then the adapter goes away with a write pending.
+    s.sim.setFault(1, "drop", -1, 0);
+    s.bus.write(id, "input_setpoint", "10");
+    QTest::qWait(100);
+    s.sim.stop();
+    s.line.stop();
+    QTRY_COMPARE_WITH_TIMEOUT(s.bus.state(), LineState::Lost, 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 10000);
+    const WriteOutcome lost = finished.at(0).at(1).value<WriteOutcome>();
+    QCOMPARE(lost.result, WriteOutcome::Result::Failed);
+
+    // The adapter comes back: the line reconnects by itself, polling resumes, and the
+    // failed write is not replayed.
+    s.sim.setFault(1, "none", -1, 0);
+    QVERIFY(s.line.restart());
+    QVERIFY(s.sim.reopen());
+    const int writesBefore = s.sim.writeFrames();
+    QTRY_COMPARE_WITH_TIMEOUT(s.bus.state(), LineState::Connected, 10000);
+    updated.clear();
+    QVERIFY(updated.wait(10000));
+    QTRY_VERIFY_WITH_TIMEOUT(s.bus.entryState(id, "load_current")->isCurrent(), 10000);
+    QTest::qWait(500);
+    QCOMPARE(s.sim.writeFrames(), writesBefore);
+    QCOMPARE(finished.count(), 1);
+}
+
+QTEST_GUILESS_MAIN(tst_BusSimulator)
+#include "tst_bussimulator.moc"

@@ -1,0 +1,213 @@
+// jumoctl on a real line: the commands run in-process (as the executable would) against
+// the simulator over a pty pair, and the script contracts are checked field by field.
+#include "commandlinetool.h"
+#include "testpeers.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QRegularExpression>
+#include <QTest>
+
+using namespace jumo;
+using namespace jumo::test;
+
+namespace {
+
+struct Run
+{
+    int code = -1;
+    QString out;
+    QString err;
+};
+
+Run run(const QStringList &args)
+{
+    Run r;
+    QTextStream out(&r.out);
+    QTextStream err(&r.err);
+    CommandLineTool tool(out, err);
+    QSignalSpy finished(&tool, &CommandLineTool::finished);
+    if (const std::optional<int> code = tool.run(args)) {
+        r.code = *code;
+    } else if (finished.wait(60000)) {
+        r.code = finished.first().first().toInt();
+    }
+    out.flush();
+    err.flush();
+    return r;
+}
+
+} // namespace
+
+class tst_JumoctlLine : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void scanFindsEveryFamily();
+    void dumpJsonContract();
+    void writeIsConfirmed();
+    void readOnlyWriteSendsNothing();
+    void monitorJsonl();
+    void monitorCsv();
+    void absentDeviceIsATimeout();
+    void badPortIsAClearError();
+
+private:
+    TestLine m_line;
+    SimulatorPeer m_sim;
+    QStringList port() const { return {"--port", m_line.masterEnd(), "--baud", "19200"}; }
+};
+
+void tst_JumoctlLine::initTestCase()
+{
+    qputenv("JUMO_MAP_PATH", "");
+    qputenv("XDG_DATA_HOME", QByteArray(QDir::tempPath().toUtf8() + "/jumo-test-no-maps"));
+    QVERIFY(m_line.start());
+    m_sim.line().addDevice(families().family("ipc300"), 1);
+    m_sim.line().addDevice(families().family("tya200"), 2);
+    m_sim.line().addDevice(families().family("quantrol"), 3);
+    m_sim.line().addDevice(families().family("dtron300"), 4);
+    m_sim.line().setTickInterval(100);
+    QVERIFY(m_sim.start(m_line.deviceEnd(), {}));
+}
+
+void tst_JumoctlLine::scanFindsEveryFamily()
+{
+    const Run r = run(QStringList{"scan"} + port() + QStringList{"--from", "1", "--to", "6"});
+    QCOMPARE(r.code, 0);
+    const QStringList lines = r.out.split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), 4);
+    QVERIFY(lines[0].startsWith("ipc300@1\t"));
+    QVERIFY(lines[1].startsWith("tya200@2\t"));
+    QVERIFY(lines[2].startsWith("quantrol@3\t"));
+    QVERIFY(lines[3].startsWith("dtron300@4\t"));
+    QVERIFY2(r.err.contains("4 device(s) found"), qPrintable(r.err));   // progress goes to stderr
+}
+
+void tst_JumoctlLine::dumpJsonContract()
+{
+    SimulatedDevice *ipc = m_sim.line().device(1);
+    ipc->forceStatus("load_current", ValueStatus::Overrange);
+    ipc->forceStatus("load_voltage", ValueStatus::Underrange);
+    ipc->forceStatus("power", ValueStatus::Invalid);
+    const Run r = run(QStringList{"dump"} + port() + QStringList{"ipc300@1", "--json"});
+    for (const char *id : {"load_current", "load_voltage", "power"})
+        ipc->forceStatus(id, ValueStatus::Ok);
+    QCOMPARE(r.code, 0);
+    const QJsonArray rows = QJsonDocument::fromJson(r.out.toUtf8()).array();
+    QCOMPARE(rows.size(), 111);   // every readable entry of the IPC 300
+    static const QRegularExpression registerPattern("^0x[0-9A-F]{4}$");
+    static const QStringList statuses{"ok", "underrange", "overrange", "invalid"};
+    QHash<QString, QJsonObject> byId;
+    for (const QJsonValue &v : rows) {
+        const QJsonObject o = v.toObject();
+        QCOMPARE(QStringList(o.keys()),
+                 QStringList({"address", "family", "id", "label", "register", "status", "unit", "value"}));
+        QCOMPARE(o.value("family").toString(), QString("ipc300"));
+        QCOMPARE(o.value("address").toInt(), 1);
+        QVERIFY(registerPattern.match(o.value("register").toString()).hasMatch());
+        QVERIFY2(statuses.contains(o.value("status").toString()), qPrintable(o.value("status").toString()));
+        byId.insert(o.value("id").toString(), o);
+    }
+    QCOMPARE(byId["load_current"]["status"].toString(), QString("overrange"));
+    QVERIFY(byId["load_current"]["value"].isNull());
+    QCOMPARE(byId["load_voltage"]["status"].toString(), QString("underrange"));
+    QCOMPARE(byId["power"]["status"].toString(), QString("invalid"));
+    QCOMPARE(byId["device_name"]["value"].toString(), QString("IPC300  "));
+    QCOMPARE(byId["load_resistance"]["register"].toString(), QString("0x00BD"));
+    QCOMPARE(byId["load_resistance"]["unit"].toString(), QString("Ω"));
+    QVERIFY(byId["load_resistance"]["value"].isDouble());
+}
+
+void tst_JumoctlLine::writeIsConfirmed()
+{
+    const Run r = run(QStringList{"write"} + port() + QStringList{"tya200@2", "setpoint=42.5", "alpha_default=90"});
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.contains("setpoint: confirmed by read-back: 42.5"), qPrintable(r.out + r.err));
+    QVERIFY2(r.out.contains("alpha_default: confirmed by read-back: 90"), qPrintable(r.out + r.err));
+    QCOMPARE(m_sim.line().device(2)->number("setpoint"), 42.5);
+    const Run check = run(QStringList{"read"} + port() + QStringList{"tya200@2", "setpoint"});
+    QCOMPARE(check.code, 0);
+    QVERIFY2(check.out.contains("setpoint = 42.5 %  [ok]"), qPrintable(check.out));
+}
+
+void tst_JumoctlLine::readOnlyWriteSendsNothing()
+{
+    const int before = m_sim.writeFrames();
+    const Run r = run(QStringList{"write", "--read-only"} + port() + QStringList{"ipc300@1", "input_setpoint=10"});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains("read-only mode"), qPrintable(r.err));
+    QCOMPARE(m_sim.writeFrames(), before);
+}
+
+void tst_JumoctlLine::monitorJsonl()
+{
+    const Run r = run(QStringList{"monitor"} + port()
+                      + QStringList{"ipc300@1", "quantrol@3", "--ids", "controller_status", "--cycles", "2", "--jsonl"});
+    QCOMPARE(r.code, 2);   // controller_status is not an IPC 300 entry
+    QVERIFY(r.err.contains("'controller_status' is not a readable entry of ipc300"));
+
+    const Run ok = run(QStringList{"monitor"} + port()
+                       + QStringList{"quantrol@3", "dtron300@4", "--ids", "controller_status", "--cycles", "2", "--jsonl"});
+    QCOMPARE(ok.code, 0);
+    const QStringList lines = ok.out.split('\n', Qt::SkipEmptyParts);
+    QVERIFY2(lines.size() >= 4, qPrintable(ok.out));
+    for (const QString &line : lines) {
+        const QJsonObject o = QJsonDocument::fromJson(line.toUtf8()).object();
+        QCOMPARE(QStringList(o.keys()), QStringList({"cycle_ms", "device", "status", "time", "values"}));
+        QVERIFY(o["device"].toString() == "quantrol@3" || o["device"].toString() == "dtron300@4");
+        QCOMPARE(o["status"].toObject()["controller_status"].toString(), QString("ok"));
+        QVERIFY(o["values"].toObject()["controller_status"].isDouble());
+        QVERIFY(o["cycle_ms"].toDouble() >= 0);
+        QVERIFY(QDateTime::fromString(o["time"].toString(), Qt::ISODateWithMs).isValid());
+    }
+}
+
+void tst_JumoctlLine::monitorCsv()
+{
+    const Run r = run(QStringList{"monitor"} + port()
+                      + QStringList{"ipc300@1", "--ids", "load_current,load_voltage", "--cycles", "3", "--csv"});
+    QCOMPARE(r.code, 0);
+    const QStringList lines = r.out.split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.first(), QString("time,device,id,value,unit,status"));
+    QCOMPARE(lines.size(), 1 + 3 * 2);
+    QVERIFY(lines[1].contains(",ipc300@1,load_current,"));
+    QVERIFY(lines[1].endsWith(",A,ok"));
+}
+
+void tst_JumoctlLine::absentDeviceIsATimeout()
+{
+    Run r = run(QStringList{"read"} + port() + QStringList{"ipc300@9", "load_current", "--retries", "0", "--json"});
+    QCOMPARE(r.code, 1);
+    const QJsonArray rows = QJsonDocument::fromJson(r.out.toUtf8()).array();
+    QCOMPARE(rows.size(), 1);
+    QCOMPARE(rows[0].toObject()["status"].toString(), QString("timeout"));
+    QVERIFY(rows[0].toObject()["value"].isNull());
+    QVERIFY(r.err.contains("could not be read"));
+
+    // A device that answers with an exception: the status says which.
+    m_sim.setFault(3, "exception", 1, 2);
+    r = run(QStringList{"read"} + port() + QStringList{"quantrol@3", "controller_status", "--retries", "0"});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.out.contains("exception 2: Invalid parameter address") && r.out.contains("[exception:2]"),
+             qPrintable(r.out));
+}
+
+void tst_JumoctlLine::badPortIsAClearError()
+{
+    const Run r = run({"read", "--port", "/nonexistent/ttyUSB9", "ipc300@1", "load_current"});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains("cannot open /nonexistent/ttyUSB9"), qPrintable(r.err));
+    const Run bad = run(QStringList{"read"} + port() + QStringList{"ipc300@1", "load_current", "--format", "7N1"});
+    QCOMPARE(bad.code, 2);
+    QVERIFY(bad.err.contains("unsupported baud rate or data format"));
+    const Run noDevice = run(QStringList{"read"} + port() + QStringList{"ipc300-1", "load_current"});
+    QCOMPARE(noDevice.code, 2);
+    QVERIFY(noDevice.err.contains("use FAMILY@ADDRESS"));
+}
+
+QTEST_GUILESS_MAIN(tst_JumoctlLine)
+#include "tst_jumoctl_line.moc"
