@@ -2,6 +2,7 @@
 // makes itself), served from the same register maps as the HMI and jumoctl.
 #include "familyregistry.h"
 #include "ptypair.h"
+#include "quitonsignal.h"
 #include "simulatorline.h"
 #include "translations.h"
 
@@ -17,6 +18,7 @@ int main(int argc, char *argv[])
     QCoreApplication::setApplicationName(QStringLiteral("jumo-sim"));
     QCoreApplication::setApplicationVersion(QStringLiteral(JUMO_VERSION));
     jumo::installTranslations(app);
+    jumo::quitOnTerminationSignals();
     QTextStream out(stdout);
     QTextStream err(stderr);
 

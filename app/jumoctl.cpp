@@ -1,5 +1,6 @@
 // jumoctl: the command-line tool. Everything but wiring lives in the jumocli library.
 #include "commandlinetool.h"
+#include "quitonsignal.h"
 #include "translations.h"
 
 #include <QCoreApplication>
@@ -14,6 +15,7 @@ int main(int argc, char *argv[])
     QCoreApplication::setApplicationVersion(QStringLiteral(JUMO_VERSION));
     QCoreApplication::setOrganizationName(QStringLiteral("jumo"));
     jumo::installTranslations(app);
+    jumo::quitOnTerminationSignals();   // monitor runs until stopped
 
     QTextStream out(stdout);
     QTextStream err(stderr);
