@@ -157,7 +157,8 @@ private:
     std::optional<RegisterMap> parseMap(const QJsonObject &root)
     {
         checkKeys(root, {"format", "family", "name", "models", "manual", "description", "protocol",
-                         "identify", "scanPriority", "exceptions", "errorValues", "simulation", "entries"},
+                         "identify", "scanPriority", "exceptions", "errorValues", "simulation", "overview", "identity",
+                         "entries"},
                   QString());
         RegisterMap map;
         map.sourceFile = m_source;
@@ -193,6 +194,15 @@ private:
         map.setEntries(std::move(parsed));
         if (root.contains("simulation"))
             parseSimulation(root.value("simulation"), map);
+        for (const char *key : {"overview", "identity"}) {
+            QStringList &ids = QLatin1String(key) == QLatin1String("overview") ? map.overview : map.identity;
+            for (const QJsonValue &v : root.value(key).toArray()) {
+                if (const RegisterEntry *e = map.entry(v.toString()); e && e->isReadable())
+                    ids << v.toString();
+                else
+                    fail(QLatin1String(key), tr("'%1' is not a readable entry").arg(v.toString()));
+            }
+        }
         return map;
     }
 

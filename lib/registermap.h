@@ -166,6 +166,8 @@ public:
     QMap<int, QString> exceptions;
     std::optional<ErrorValueTexts> errorValues;
     std::optional<SimulationSpec> simulation;
+    QStringList overview;   // key values of the overview tile
+    QStringList identity;   // entries that identify the device (name, version, serial...)
 
     const QList<RegisterEntry> &entries() const { return m_entries; }
     void setEntries(QList<RegisterEntry> entries);

@@ -2,9 +2,64 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>jumo::AddDeviceDialog</name>
+    <message>
+        <location filename="../ui/adddevicedialog.cpp" line="+15"/>
+        <source>Add device</source>
+        <translation>Gerät hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Family:</source>
+        <translation>Gerätefamilie:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Address:</source>
+        <translation>Adresse:</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::AlarmBitsModel</name>
+    <message>
+        <location filename="../lib/models/alarmbitsmodel.cpp" line="+93"/>
+        <source>%1 (register %2)</source>
+        <translation>%1 (Register %2)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1
+Register %2 (%3), bit %4, %5
+Manual %6: &quot;%7&quot;</source>
+        <translation>%1
+Register %2 (%3), Bit %4, %5
+Handbuch %6: &quot;%7&quot;</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Not current: the last read failed or none was made yet.</source>
+        <translation>Nicht aktuell: Das letzte Lesen ist fehlgeschlagen oder es wurde noch nicht gelesen.</translation>
+    </message>
+</context>
+<context>
     <name>jumo::Bus</name>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+95"/>
+        <location filename="../lib/bus/bus.cpp" line="+96"/>
         <source>cannot open %1: %2</source>
         <translation>%1 kann nicht geöffnet werden: %2</translation>
     </message>
@@ -91,7 +146,7 @@
         <translation> (Voraussetzung: %1)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>not written: the line was lost</source>
         <translation>nicht geschrieben: die Leitung ging verloren</translation>
     </message>
@@ -221,6 +276,262 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
         <location line="-1"/>
         <source>jumoctl %1: wrong number of arguments</source>
         <translation>jumoctl %1: falsche Anzahl von Argumenten</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::ConnectionBar</name>
+    <message>
+        <location filename="../ui/connectionbar.cpp" line="+15"/>
+        <location line="+77"/>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+    <message>
+        <location line="-67"/>
+        <source>/dev/ttyUSB0</source>
+        <translation>/dev/ttyUSB0</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Refresh</source>
+        <translation>Aktualisieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>List the serial ports again</source>
+        <translation>Serielle Schnittstellen erneut auflisten</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Port:</source>
+        <translation>Schnittstelle:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Baud:</source>
+        <translation>Baud:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Format:</source>
+        <translation>Format:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Disconnected</source>
+        <translation>Getrennt</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>Disconnect</source>
+        <translation>Trennen</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::ControlRow</name>
+    <message>
+        <location filename="../ui/controlrow.cpp" line="+54"/>
+        <source>Precondition: %1</source>
+        <translation>Voraussetzung: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stored in EEPROM: about 10,000 write cycles, write only when needed.</source>
+        <translation>Im EEPROM gespeichert: etwa 10.000 Schreibzyklen, nur bei Bedarf schreiben.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stored in RAM: lost when the device is switched off.</source>
+        <translation>Im RAM gespeichert: geht beim Ausschalten des Geräts verloren.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>send the command &quot;%1&quot;</source>
+        <translation>den Befehl &quot;%1&quot; senden</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>On</source>
+        <translation>Ein</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 to %2</source>
+        <translation>%1 bis %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Write</source>
+        <translation>Schreiben</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Back to the device&apos;s own value</source>
+        <translation>Zurück zum geräteeigenen Wert</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>hand %1 back to the device</source>
+        <translation>die Vorgabe für %1 aufheben</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Pending: %1</source>
+        <translation>Ausstehend: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Confirmed: %1</source>
+        <translation>Bestätigt: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Refused: %1</source>
+        <translation>Abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Write-only: the device cannot report it.</source>
+        <translation>Nur schreibbar: Das Gerät kann den Wert nicht melden.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Device: %1 %2</source>
+        <translation>Gerät: %1 %2</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not read yet</source>
+        <translation>noch nicht gelesen</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Read-only mode: nothing is written to the devices.</source>
+        <translation>Nur-Lese-Modus: Es wird nichts auf die Geräte geschrieben.</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>write %1 = %2 %3</source>
+        <translation>%1 = %2 %3 schreiben</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Confirm write</source>
+        <translation>Schreiben bestätigen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Do you want to %1 on the device?
+This changes what the device drives.</source>
+        <translation>Möchten Sie am Gerät %1?
+Dies verändert die Ansteuerung durch das Gerät.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Not written: %1</source>
+        <translation>Nicht geschrieben: %1</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::DemoLine</name>
+    <message>
+        <location filename="../lib/sim/demoline.cpp" line="+20"/>
+        <source>the simulator cannot open %1: %2</source>
+        <translation>der Simulator kann %1 nicht öffnen: %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>no temporary folder for the demo line</source>
+        <translation>kein temporärer Ordner für die Demo-Leitung</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::DevicePage</name>
+    <message>
+        <location filename="../ui/devicepage.cpp" line="+25"/>
+        <source>Read-only mode: values are shown, nothing is written to the device.</source>
+        <translation>Nur-Lese-Modus: Werte werden angezeigt, es wird nichts auf das Gerät geschrieben.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Live values</source>
+        <translation>Live-Werte</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+2"/>
+        <source>Alarms and status</source>
+        <translation>Alarme und Status</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Alarms and status (%1)</source>
+        <translation>Alarme und Status (%1)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Controls</source>
+        <translation>Bedienung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Program</source>
+        <translation>Programm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Trend</source>
+        <translation>Trend</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::DeviceTile</name>
+    <message>
+        <location filename="../ui/devicetile.cpp" line="+22"/>
+        <source>address %1</source>
+        <translation>Adresse %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+45"/>
+        <source>%n active alarm(s)</source>
+        <translation>
+            <numerusform>%n aktiver Alarm</numerusform>
+            <numerusform>%n aktive Alarme</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not answering</source>
+        <translation>antwortet nicht</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::IdentityPanel</name>
+    <message>
+        <location filename="../ui/identitypanel.cpp" line="+44"/>
+        <source>address %1</source>
+        <translation>Adresse %1</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::LedGrid</name>
+    <message numerus="yes">
+        <location filename="../ui/ledgrid.cpp" line="+79"/>
+        <source>%n active alarm(s)</source>
+        <translation>
+            <numerusform>%n aktiver Alarm</numerusform>
+            <numerusform>%n aktive Alarme</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -525,6 +836,268 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
     </message>
 </context>
 <context>
+    <name>jumo::LiveValuesModel</name>
+    <message>
+        <location filename="../lib/models/livevaluesmodel.cpp" line="+67"/>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Exception %1: %2</source>
+        <translation>Exception %1: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reply did not fit the request</source>
+        <translation>Antwort passt nicht zur Anfrage</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Line disconnected</source>
+        <translation>Leitung getrennt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No answer</source>
+        <translation>Keine Antwort</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>%1, register %2, %3</source>
+        <translation>%1, Register %2, %3</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Not read yet</source>
+        <translation>Noch nicht gelesen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Section</source>
+        <translation>Abschnitt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Signal</source>
+        <translation>Signal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Age</source>
+        <translation>Alter</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::MainWindow</name>
+    <message>
+        <location filename="../ui/mainwindow.cpp" line="+52"/>
+        <source>JUMO HMI [read-only]</source>
+        <translation>JUMO HMI [Nur-Lese-Modus]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>JUMO HMI</source>
+        <translation>JUMO HMI</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Connection</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+147"/>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+    <message>
+        <location line="-142"/>
+        <source>Overview</source>
+        <translation>Übersicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Traffic and statistics</source>
+        <translation>Datenverkehr und Statistik</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Add...</source>
+        <translation>Hinzufügen...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Scan...</source>
+        <translation>Suchen...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>READ-ONLY</source>
+        <translation>NUR LESEN</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>address %1: %2</source>
+        <translation>Adresse %1: %2</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Devices</source>
+        <translation>&amp;Geräte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Scan the line...</source>
+        <translation>Leitung &amp;durchsuchen...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Remove the shown device</source>
+        <translation>Angezeigtes Gerät &amp;entfernen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>System language</source>
+        <translation>Systemsprache</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>The language changes when the HMI is started again.</source>
+        <translation>Die Sprache wird beim nächsten Start der HMI umgestellt.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;About</source>
+        <translation>Ü&amp;ber</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>About JUMO HMI</source>
+        <translation>Über JUMO HMI</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>JUMO HMI %1
+Commissioning and monitoring of JUMO power and process controllers over Modbus RTU.</source>
+        <translation>JUMO HMI %1
+Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Modbus RTU.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Demo line failed: %1</source>
+        <translation>Demo-Leitung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Starting the simulated demo line...</source>
+        <translation>Simulierte Demo-Leitung wird gestartet...</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Choose or type a serial port first.</source>
+        <translation>Zuerst eine serielle Schnittstelle wählen oder eingeben.</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Connected to %1</source>
+        <translation>Verbunden mit %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Line lost, waiting for the port to come back...</source>
+        <translation>Leitung verloren, warte, bis die Schnittstelle wieder verfügbar ist...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Disconnected</source>
+        <translation>Getrennt</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Line: %1</source>
+        <translation>Leitung: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 requests/s</source>
+        <translation>%1 Anfragen/s</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>%n error(s); last: %1</source>
+        <translation>
+            <numerusform>%n Fehler; zuletzt: %1</numerusform>
+            <numerusform>%n Fehler; zuletzt: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no errors</source>
+        <translation>keine Fehler</translation>
+    </message>
+    <message>
+        <location line="+91"/>
+        <source>Scan</source>
+        <translation>Suchen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Connect to a line first.</source>
+        <translation>Zuerst mit einer Leitung verbinden.</translation>
+    </message>
+</context>
+<context>
     <name>jumo::MapCommands</name>
     <message>
         <location filename="../app/cli/mapcommands.cpp" line="+132"/>
@@ -698,7 +1271,7 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
         <translation>&apos;%1&apos; darf nur Zahlen enthalten</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>&apos;format&apos; must be 1</source>
         <translation>&apos;format&apos; muss 1 sein</translation>
     </message>
@@ -713,7 +1286,12 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
         <translation>&apos;entries&apos; muss ein nicht leeres Array sein</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+19"/>
+        <source>&apos;%1&apos; is not a readable entry</source>
+        <translation>&apos;%1&apos; ist kein lesbarer Eintrag</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>&apos;protocol&apos; must be an object</source>
         <translation>&apos;protocol&apos; muss ein Objekt sein</translation>
     </message>
@@ -1097,6 +1675,186 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
     </message>
 </context>
 <context>
+    <name>jumo::ScanDialog</name>
+    <message>
+        <location filename="../ui/scandialog.cpp" line="+21"/>
+        <source>Scan</source>
+        <translation>Suchen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Cancel scan</source>
+        <translation>Suche abbrechen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Scan the line</source>
+        <translation>Leitung durchsuchen</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>address %1</source>
+        <translation>Adresse %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 at address %2</source>
+        <translation>%1 an Adresse %2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Unknown device at address %1</source>
+        <translation>Unbekanntes Gerät an Adresse %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+0"/>
+        <source>%n device(s) found</source>
+        <translation>
+            <numerusform>%n Gerät gefunden</numerusform>
+            <numerusform>%n Geräte gefunden</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>From address</source>
+        <translation>Von Adresse</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>to</source>
+        <translation>bis</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Add checked devices</source>
+        <translation>Markierte Geräte hinzufügen</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::TrafficView</name>
+    <message>
+        <location filename="../ui/trafficview.cpp" line="+26"/>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Requests</source>
+        <translation>Anfragen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Timeouts</source>
+        <translation>Zeitüberschreitungen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CRC errors</source>
+        <translation>CRC-Fehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mismatches</source>
+        <translation>Unpassende Antworten</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Exceptions</source>
+        <translation>Exceptions</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Last round trip</source>
+        <translation>Letzte Umlaufzeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mean round trip</source>
+        <translation>Mittlere Umlaufzeit</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Last cycle</source>
+        <translation>Letzter Zyklus</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>(no reply)</source>
+        <translation>(keine Antwort)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>  %1 ms</source>
+        <translation>  %1 ms</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::TrendView</name>
+    <message>
+        <location filename="../ui/trendview.cpp" line="+44"/>
+        <source>1 minute</source>
+        <translation>1 Minute</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5 minutes</source>
+        <translation>5 Minuten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>15 minutes</source>
+        <translation>15 Minuten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1 hour</source>
+        <translation>1 Stunde</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export CSV...</source>
+        <translation>CSV exportieren...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+3"/>
+        <source>Export trend</source>
+        <translation>Trend exportieren</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+101"/>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
     <name>jumo::ValueCodec</name>
     <message>
         <location filename="../lib/valuecodec.cpp" line="+88"/>
@@ -1205,9 +1963,3345 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
     </message>
 </context>
 <context>
+    <name>jumo::WriteCommand</name>
+    <message>
+        <location filename="../lib/models/writecommand.cpp" line="+18"/>
+        <source>Writing %1...</source>
+        <translation>%1 wird geschrieben...</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::maps</name>
+    <message>
+        <location filename="mapstrings.cpp" line="+6"/>
+        <source>Invalid function</source>
+        <translation>Ungültige Funktion</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Invalid parameter address or too many words are to be read or written</source>
+        <translation>Ungültige Parameteradresse oder zu viele Wörter zum Lesen oder Schreiben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Write access to parameter denied</source>
+        <translation>Schreibzugriff auf Parameter verweigert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Program status</source>
+        <translation>Programmstatus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.1 Process data</source>
+        <translation>5.1 Prozessdaten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Program pause</source>
+        <translation>Programmpause</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Basic status/Program stop</source>
+        <translation>Grundstatus/Programmstopp</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Automatic mode</source>
+        <translation>Automatikbetrieb</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Program end signal</source>
+        <translation>Programmendesignal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Tolerance limit signal</source>
+        <translation>Toleranzbandsignal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller status</source>
+        <translation>Reglerstatus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Manual mode</source>
+        <translation>Handbetrieb</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Autotuning active</source>
+        <translation>Selbstoptimierung aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary outputs 1 – 10</source>
+        <translation>Binärausgänge 1 – 10</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary output 1</source>
+        <translation>Binärausgang 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary output 2</source>
+        <translation>Binärausgang 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary output 3</source>
+        <translation>Binärausgang 3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary output 4</source>
+        <translation>Binärausgang 4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary output 5</source>
+        <translation>Binärausgang 5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary output 6</source>
+        <translation>Binärausgang 6</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary output 7</source>
+        <translation>Binärausgang 7</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary output 8</source>
+        <translation>Binärausgang 8</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary output 9</source>
+        <translation>Binärausgang 9</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary output 10</source>
+        <translation>Binärausgang 10</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary inputs 1 – 6</source>
+        <translation>Binäreingänge 1 – 6</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary input 1</source>
+        <translation>Binäreingang 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary input 2</source>
+        <translation>Binäreingang 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary input 3</source>
+        <translation>Binäreingang 3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary input 4</source>
+        <translation>Binäreingang 4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary input 6</source>
+        <translation>Binäreingang 6</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary input 5</source>
+        <translation>Binäreingang 5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary input 8</source>
+        <translation>Binäreingang 8</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary input 7</source>
+        <translation>Binäreingang 7</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator</source>
+        <translation>Grenzwertüberwachung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 1</source>
+        <translation>Grenzwertüberwachung 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 2</source>
+        <translation>Grenzwertüberwachung 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 3</source>
+        <translation>Grenzwertüberwachung 3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 4</source>
+        <translation>Grenzwertüberwachung 4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Control contacts 1 – 4</source>
+        <translation>Steuerkontakte 1 – 4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Control contact 1</source>
+        <translation>Steuerkontakt 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Control contact 2</source>
+        <translation>Steuerkontakt 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Control contact 3</source>
+        <translation>Steuerkontakt 3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Control contact 4</source>
+        <translation>Steuerkontakt 4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary signals</source>
+        <translation>Binärsignale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timer 1</source>
+        <translation>Timer 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timer 2</source>
+        <translation>Timer 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Logic formula 1</source>
+        <translation>Logikformel 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Logic formula 2</source>
+        <translation>Logikformel 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Control of the binary outputs</source>
+        <translation>Ansteuerung der Binärausgänge</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output 1</source>
+        <translation>Ausgang 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output 2</source>
+        <translation>Ausgang 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output 3</source>
+        <translation>Ausgang 3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output 4</source>
+        <translation>Ausgang 4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output 5</source>
+        <translation>Ausgang 5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output 6</source>
+        <translation>Ausgang 6</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output 7</source>
+        <translation>Ausgang 7</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output 8</source>
+        <translation>Ausgang 8</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output 9</source>
+        <translation>Ausgang 9</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output 10</source>
+        <translation>Ausgang 10</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Activation</source>
+        <translation>Aktivierung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Analog input 1</source>
+        <translation>Analogeingang 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Analog input 2</source>
+        <translation>Analogeingang 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Internal Pt100</source>
+        <translation>Interner Pt100</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sampling cycle time</source>
+        <translation>Abtastzykluszeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Math 1</source>
+        <translation>Mathematik 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Math 2</source>
+        <translation>Mathematik 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ramp end value (W)</source>
+        <translation>Rampenendwert (W)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Filtered process value</source>
+        <translation>Gefilterter Istwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Unfiltered process value</source>
+        <translation>Ungefilterter Istwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setpoint</source>
+        <translation>Sollwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output (displayed value)</source>
+        <translation>Stellgrad (Anzeigewert)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output, heating</source>
+        <translation>Stellgrad, Heizen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output, cooling</source>
+        <translation>Stellgrad, Kühlen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Control difference</source>
+        <translation>Regelabweichung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Switching status, heating</source>
+        <translation>Schaltzustand, Heizen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Off (contact open)</source>
+        <translation>Aus (Kontakt offen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>On (contact closed)</source>
+        <translation>Ein (Kontakt geschlossen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Switching status, cooling</source>
+        <translation>Schaltzustand, Kühlen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set number</source>
+        <translation>Parametersatznummer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Manual output</source>
+        <translation>Hand-Stellgrad</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment number</source>
+        <translation>Segmentnummer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Number of segments</source>
+        <translation>Anzahl Segmente</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Program setpoint</source>
+        <translation>Programmsollwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Program run time</source>
+        <translation>Programmlaufzeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Residual program time</source>
+        <translation>Programmrestzeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment run time</source>
+        <translation>Segmentlaufzeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Residual segment time</source>
+        <translation>Segmentrestzeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timer run time, timer 1</source>
+        <translation>Timerlaufzeit, Timer 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timer run time, timer 2</source>
+        <translation>Timerlaufzeit, Timer 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timer run time, timer 3</source>
+        <translation>Timerlaufzeit, Timer 3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timer run time, timer 4</source>
+        <translation>Timerlaufzeit, Timer 4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary functions &quot;Program controller&quot;</source>
+        <translation>Binärfunktionen &quot;Programmregler&quot;</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.6 Commands</source>
+        <translation>5.6 Befehle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Program canceled</source>
+        <translation>Programmabbruch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Program start</source>
+        <translation>Programmstart</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment change</source>
+        <translation>Segmentwechsel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Store temporary change</source>
+        <translation>Temporäre Änderung speichern</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary functions &quot;Controller&quot;</source>
+        <translation>Binärfunktionen &quot;Regler&quot;</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pause program</source>
+        <translation>Programm anhalten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel ramp</source>
+        <translation>Rampe abbrechen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Activate manual mode</source>
+        <translation>Handbetrieb aktivieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller off</source>
+        <translation>Regler aus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start autotuning</source>
+        <translation>Selbstoptimierung starten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel autotuning</source>
+        <translation>Selbstoptimierung abbrechen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary functions &quot;Operation&quot;</source>
+        <translation>Binärfunktionen &quot;Bedienung&quot;</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Display off with key inhibit</source>
+        <translation>Anzeige aus mit Tastatursperre</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Acknowledge limit comparators</source>
+        <translation>Grenzwertüberwachungen quittieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Text display</source>
+        <translation>Textanzeige</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary functions &quot;Timer&quot;</source>
+        <translation>Binärfunktionen &quot;Timer&quot;</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pause timer 1</source>
+        <translation>Timer 1 anhalten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel timer 1</source>
+        <translation>Timer 1 abbrechen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start timer 1</source>
+        <translation>Timer 1 starten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pause timer 2</source>
+        <translation>Timer 2 anhalten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel timer 2</source>
+        <translation>Timer 2 abbrechen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start timer 2</source>
+        <translation>Timer 2 starten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setpoint switching</source>
+        <translation>Sollwertumschaltung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>W1</source>
+        <translation>W1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>W2</source>
+        <translation>W2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>W3</source>
+        <translation>W3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>W4</source>
+        <translation>W4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set switching</source>
+        <translation>Parametersatzumschaltung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>P1</source>
+        <translation>P1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>P2</source>
+        <translation>P2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 1, limit AL</source>
+        <translation>Grenzwertüberwachung 1, Grenzwert AL</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.4 Configuration</source>
+        <translation>5.4 Konfiguration</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 1, switching differential</source>
+        <translation>Grenzwertüberwachung 1, Schaltdifferenz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 1, switch-on delay</source>
+        <translation>Grenzwertüberwachung 1, Einschaltverzögerung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 1, switch-off delay</source>
+        <translation>Grenzwertüberwachung 1, Ausschaltverzögerung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 2, limit AL</source>
+        <translation>Grenzwertüberwachung 2, Grenzwert AL</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 2, switching differential</source>
+        <translation>Grenzwertüberwachung 2, Schaltdifferenz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 2, switch-on delay</source>
+        <translation>Grenzwertüberwachung 2, Einschaltverzögerung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 2, switch-off delay</source>
+        <translation>Grenzwertüberwachung 2, Ausschaltverzögerung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 3, limit AL</source>
+        <translation>Grenzwertüberwachung 3, Grenzwert AL</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 3, switching differential</source>
+        <translation>Grenzwertüberwachung 3, Schaltdifferenz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 3, switch-on delay</source>
+        <translation>Grenzwertüberwachung 3, Einschaltverzögerung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 3, switch-off delay</source>
+        <translation>Grenzwertüberwachung 3, Ausschaltverzögerung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 4, limit AL</source>
+        <translation>Grenzwertüberwachung 4, Grenzwert AL</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 4, switching differential</source>
+        <translation>Grenzwertüberwachung 4, Schaltdifferenz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 4, switch-on delay</source>
+        <translation>Grenzwertüberwachung 4, Einschaltverzögerung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit comparator 4, switch-off delay</source>
+        <translation>Grenzwertüberwachung 4, Ausschaltverzögerung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ramp function, slope</source>
+        <translation>Rampenfunktion, Steigung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment setpoint 1</source>
+        <translation>Segmentsollwert 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.5 Program transmission</source>
+        <translation>5.5 Programmübertragung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment time 1</source>
+        <translation>Segmentzeit 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment setpoint 2</source>
+        <translation>Segmentsollwert 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment time 2</source>
+        <translation>Segmentzeit 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment setpoint 3</source>
+        <translation>Segmentsollwert 3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment time 3</source>
+        <translation>Segmentzeit 3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment setpoint 4</source>
+        <translation>Segmentsollwert 4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment time 4</source>
+        <translation>Segmentzeit 4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment setpoint 5</source>
+        <translation>Segmentsollwert 5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment time 5</source>
+        <translation>Segmentzeit 5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment setpoint 6</source>
+        <translation>Segmentsollwert 6</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment time 6</source>
+        <translation>Segmentzeit 6</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment setpoint 7</source>
+        <translation>Segmentsollwert 7</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment time 7</source>
+        <translation>Segmentzeit 7</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment setpoint 8</source>
+        <translation>Segmentsollwert 8</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Segment time 8</source>
+        <translation>Segmentzeit 8</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Control contacts, segment 1</source>
+        <translation>Steuerkontakte, Segment 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Control contacts, segment 2</source>
+        <translation>Steuerkontakte, Segment 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Control contacts, segment 3</source>
+        <translation>Steuerkontakte, Segment 3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Control contacts, segment 4</source>
+        <translation>Steuerkontakte, Segment 4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Control contacts, segment 5</source>
+        <translation>Steuerkontakte, Segment 5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Control contacts, segment 6</source>
+        <translation>Steuerkontakte, Segment 6</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Control contacts, segment 7</source>
+        <translation>Steuerkontakte, Segment 7</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Control contacts, segment 8</source>
+        <translation>Steuerkontakte, Segment 8</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Alarm text (1-2)</source>
+        <translation>Alarmtext (1-2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Alarm text (3-4)</source>
+        <translation>Alarmtext (3-4)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 1: Pb1</source>
+        <translation>Parametersatz 1: Pb1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.3 Controller parameters</source>
+        <translation>5.3 Reglerparameter</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 1: Pb2</source>
+        <translation>Parametersatz 1: Pb2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 1: dt</source>
+        <translation>Parametersatz 1: dt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 1: rt</source>
+        <translation>Parametersatz 1: rt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 1: Cy1</source>
+        <translation>Parametersatz 1: Cy1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 1: Cy2</source>
+        <translation>Parametersatz 1: Cy2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 1: db</source>
+        <translation>Parametersatz 1: db</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 1: HyS1</source>
+        <translation>Parametersatz 1: HyS1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 1: HyS2</source>
+        <translation>Parametersatz 1: HyS2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 1: tt</source>
+        <translation>Parametersatz 1: tt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 1: y0</source>
+        <translation>Parametersatz 1: y0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 1: y1</source>
+        <translation>Parametersatz 1: y1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 1: y2</source>
+        <translation>Parametersatz 1: y2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 2: Pb1</source>
+        <translation>Parametersatz 2: Pb1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 2: Pb2</source>
+        <translation>Parametersatz 2: Pb2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 2: dt</source>
+        <translation>Parametersatz 2: dt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 2: rt</source>
+        <translation>Parametersatz 2: rt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 2: Cy1</source>
+        <translation>Parametersatz 2: Cy1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 2: Cy2</source>
+        <translation>Parametersatz 2: Cy2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 2: db</source>
+        <translation>Parametersatz 2: db</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 2: HyS1</source>
+        <translation>Parametersatz 2: HyS1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 2: HyS2</source>
+        <translation>Parametersatz 2: HyS2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 2: tt</source>
+        <translation>Parametersatz 2: tt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 2: y0</source>
+        <translation>Parametersatz 2: y0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 2: y1</source>
+        <translation>Parametersatz 2: y1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter set 2: y2</source>
+        <translation>Parametersatz 2: y2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setpoint W1</source>
+        <translation>Sollwert W1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.2 Setpoints</source>
+        <translation>5.2 Sollwerte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setpoint W2</source>
+        <translation>Sollwert W2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setpoint W3</source>
+        <translation>Sollwert W3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setpoint W4</source>
+        <translation>Sollwert W4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Process value</source>
+        <translation>Istwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Logic 1+2</source>
+        <translation>Logik 1+2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Logic 1</source>
+        <translation>Logik 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Logic 2</source>
+        <translation>Logik 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Option slot 1+2</source>
+        <translation>Optionssteckplatz 1+2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.7 Device identification</source>
+        <translation>5.7 Geräteidentifikation</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slot 2</source>
+        <translation>Steckplatz 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slot 1</source>
+        <translation>Steckplatz 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Option slot 3</source>
+        <translation>Optionssteckplatz 3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slot 3</source>
+        <translation>Steckplatz 3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device format</source>
+        <translation>Geräteformat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Type 703041/45 (48 mm x 48 mm)</source>
+        <translation>Typ 703041/45 (48 mm x 48 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Type 703042/43/46 (48 mm x 96 mm)</source>
+        <translation>Typ 703042/43/46 (48 mm x 96 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Type 703044/48 (96 mm x 96 mm)</source>
+        <translation>Typ 703044/48 (96 mm x 96 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Invalid Modbus function</source>
+        <translation>Ungültige Modbus-Funktion</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Invalid data address</source>
+        <translation>Ungültige Datenadresse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Data value outside admissible value range</source>
+        <translation>Datenwert außerhalb des zulässigen Wertebereichs</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Error when processing the instruction (e.g. unable to write to flash)</source>
+        <translation>Fehler beim Ausführen des Befehls (z. B. Schreiben in den Flash nicht möglich)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Currently unable to execute the instruction, please try again</source>
+        <translation>Befehl kann derzeit nicht ausgeführt werden, bitte erneut versuchen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Write-protected</source>
+        <translation>Schreibgeschützt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Measuring range underflow (underrange)</source>
+        <translation>Messbereichsunterschreitung (Underrange)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Measuring range overflow (overrange)</source>
+        <translation>Messbereichsüberschreitung (Overrange)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Other invalid value</source>
+        <translation>Sonstiger ungültiger Wert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Software version</source>
+        <translation>Softwareversion</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.1.1 ID</source>
+        <translation>5.1.1 ID</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>VdN number</source>
+        <translation>VdN-Nummer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Internal software version</source>
+        <translation>Interne Softwareversion</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device name</source>
+        <translation>Gerätename</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fabrication number</source>
+        <translation>Fabrikationsnummer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inspection ID</source>
+        <translation>Prüfkennung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reserve</source>
+        <translation>Reserve</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Order code</source>
+        <translation>Bestellschlüssel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Basic type</source>
+        <translation>Grundtyp</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IPC300_709051</source>
+        <translation>IPC300_709051</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Nominal current</source>
+        <translation>Nennstrom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>70 A</source>
+        <translation>70 A</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>100 A</source>
+        <translation>100 A</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>200 A</source>
+        <translation>200 A</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Equipped digital output</source>
+        <translation>Bestückter Digitalausgang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Relay</source>
+        <translation>Relais</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Optocoupler</source>
+        <translation>Optokoppler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Equipped interface</source>
+        <translation>Bestückte Schnittstelle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>None</source>
+        <translation>Keine</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RS422/485</source>
+        <translation>RS422/485</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PROFINET</source>
+        <translation>PROFINET</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.1.2 Operating level parameters</source>
+        <translation>5.1.2 Parameter der Bedienerebene</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Switch-off of display lighting</source>
+        <translation>Abschaltung der Displaybeleuchtung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load voltage limit value</source>
+        <translation>Grenzwert Lastspannung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Current limit value</source>
+        <translation>Grenzwert Strom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power limit value</source>
+        <translation>Grenzwert Leistung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Resistance limit value</source>
+        <translation>Grenzwert Widerstand</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setpoint value in case of bus error/wire break</source>
+        <translation>Sollwert bei Busfehler/Drahtbruch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base load</source>
+        <translation>Grundlast</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit value for min. alarm</source>
+        <translation>Grenzwert für Min.-Alarm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit value for max. alarm</source>
+        <translation>Grenzwert für Max.-Alarm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit value for hysteresis</source>
+        <translation>Hysterese der Grenzwerte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit value for load monitoring</source>
+        <translation>Grenzwert für Lastüberwachung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setpoint value (fixed value) for setpoint switchover via digital input</source>
+        <translation>Sollwert (Festwert) für Sollwertumschaltung über Digitaleingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load voltage</source>
+        <translation>Lastspannung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.2.1 RMS measured values</source>
+        <translation>5.2.1 Effektivwerte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load current</source>
+        <translation>Laststrom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load, mains or fault current of ext. current sensor 2, scaled to standard signal</source>
+        <translation>Last-, Netz- oder Fehlerstrom des ext. Stromsensors 2, skaliert auf Einheitssignal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load, mains or fault current of ext. current sensor 3, scaled to standard signal</source>
+        <translation>Last-, Netz- oder Fehlerstrom des ext. Stromsensors 3, skaliert auf Einheitssignal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load, mains or fault current of ext. current sensor 2, scaled to measuring range</source>
+        <translation>Last-, Netz- oder Fehlerstrom des ext. Stromsensors 2, skaliert auf Messbereich</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load, mains or fault current of ext. current sensor 3, scaled to measuring range</source>
+        <translation>Last-, Netz- oder Fehlerstrom des ext. Stromsensors 3, skaliert auf Messbereich</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power</source>
+        <translation>Leistung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load resistance</source>
+        <translation>Lastwiderstand</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>DC link voltage</source>
+        <translation>Zwischenkreisspannung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Voltage input</source>
+        <translation>Spannungseingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.2.2 Analog values</source>
+        <translation>5.2.2 Analogwerte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Current input</source>
+        <translation>Stromeingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device temperature</source>
+        <translation>Gerätetemperatur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Digital input 1</source>
+        <translation>Digitaleingang 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.2.3 Digital inputs/outputs</source>
+        <translation>5.2.3 Digitaleingänge/-ausgänge</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Digital input 2</source>
+        <translation>Digitaleingang 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inhibit input</source>
+        <translation>Sperreingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inhibit peak current</source>
+        <translation>Sperre Spitzenstrom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>External inhibit input</source>
+        <translation>Externer Sperreingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>External digital input 1</source>
+        <translation>Externer Digitaleingang 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>External digital input 2</source>
+        <translation>Externer Digitaleingang 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Digital output</source>
+        <translation>Digitalausgang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Configuration level &gt; Binary output &gt; Output mode = &quot;Interface signal&quot; (6.3)</source>
+        <translation>Konfigurationsebene &gt; Binärausgang &gt; Ausgangsmodus = &quot;Schnittstellensignal&quot; (6.3)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output level of controller</source>
+        <translation>Stellgrad des Reglers</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.2.4 Controller</source>
+        <translation>5.2.4 Regler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output level of PWM</source>
+        <translation>Stellgrad der PWM</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Input setpoint value</source>
+        <translation>Vorgabesollwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Configuration level &gt; Setpoint value configuration &gt; Setpoint value = &quot;Via interface&quot; (6.1)</source>
+        <translation>Konfigurationsebene &gt; Sollwertkonfiguration &gt; Sollwert = &quot;Über Schnittstelle&quot; (6.1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Effective setpoint value</source>
+        <translation>Wirksamer Sollwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Actual value</source>
+        <translation>Istwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inhibit active</source>
+        <translation>Sperre aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.2.5 Device states</source>
+        <translation>5.2.5 Gerätezustände</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Voltage limitation active</source>
+        <translation>Spannungsbegrenzung aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Current limiting active</source>
+        <translation>Strombegrenzung aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power limitation active</source>
+        <translation>Leistungsbegrenzung aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Resistance limitation active</source>
+        <translation>Widerstandsbegrenzung aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limitation active</source>
+        <translation>Begrenzung aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Soft start active</source>
+        <translation>Sanftanlauf aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>External toggle switch of setpoint specification active</source>
+        <translation>Externe Umschaltung der Sollwertvorgabe aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reconfiguration active</source>
+        <translation>Neukonfiguration aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Calibration mode active</source>
+        <translation>Kalibriermodus aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Manual mode active</source>
+        <translation>Handbetrieb aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keypad locked</source>
+        <translation>Tastatur gesperrt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Display switched off</source>
+        <translation>Anzeige ausgeschaltet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Voltage supply via USB only</source>
+        <translation>Spannungsversorgung nur über USB</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Malfunction</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power reduction</source>
+        <translation>Leistungsreduzierung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Trigger for manual Teach-In</source>
+        <translation>Auslöser für manuelles Teach-In</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Malfunction signal 1</source>
+        <translation>Störmeldung 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.2.6 Binary signals</source>
+        <translation>5.2.6 Binärsignale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Min. alarm</source>
+        <translation>Min.-Alarm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Max. alarm</source>
+        <translation>Max.-Alarm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load error</source>
+        <translation>Lastfehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load failure virtual current sensor 1</source>
+        <translation>Lastausfall virtueller Stromsensor 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load failure external current sensor 2</source>
+        <translation>Lastausfall externer Stromsensor 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load failure external current sensor 3</source>
+        <translation>Lastausfall externer Stromsensor 3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Teach-In for load monitoring is missing</source>
+        <translation>Teach-In für Lastüberwachung fehlt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fuse failure</source>
+        <translation>Sicherungsbruch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IGBT break</source>
+        <translation>IGBT-Unterbrechung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>IGBT short-circuit</source>
+        <translation>IGBT-Kurzschluss</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limited power due to excess temperature</source>
+        <translation>Leistungsbegrenzung wegen Übertemperatur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pre-alarm due to excess temperature</source>
+        <translation>Voralarm wegen Übertemperatur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mains voltage too low</source>
+        <translation>Netzspannung zu niedrig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wire break at current input</source>
+        <translation>Drahtbruch am Stromeingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wire break at voltage input</source>
+        <translation>Drahtbruch am Spannungseingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bus error</source>
+        <translation>Busfehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Malfunction signal 2</source>
+        <translation>Störmeldung 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reserved</source>
+        <translation>Reserviert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Adjustment not possible</source>
+        <translation>Abgleich nicht möglich</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inhibit due to excessive peak current</source>
+        <translation>Sperre wegen zu hohem Spitzenstrom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inhibit via UCEsat – detection 1</source>
+        <translation>Sperre über UCEsat – Erkennung 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inhibit via UCEsat – detection 2</source>
+        <translation>Sperre über UCEsat – Erkennung 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Error current too large</source>
+        <translation>Fehlerstrom zu groß</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Failure of fan 1</source>
+        <translation>Ausfall Lüfter 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Failure of fan 2</source>
+        <translation>Ausfall Lüfter 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Invalid configuration</source>
+        <translation>Ungültige Konfiguration</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wire break at external current sensor 2</source>
+        <translation>Drahtbruch am externen Stromsensor 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wire break at external current sensor 3</source>
+        <translation>Drahtbruch am externen Stromsensor 3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>External current sensor incorrectly configured</source>
+        <translation>Externer Stromsensor falsch konfiguriert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary signal 1</source>
+        <translation>Binärsignal 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hardware level digital input 1</source>
+        <translation>Hardwarepegel Digitaleingang 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hardware level digital input 2</source>
+        <translation>Hardwarepegel Digitaleingang 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hardware level inhibit input</source>
+        <translation>Hardwarepegel Sperreingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Signal of peak current monitoring circuit</source>
+        <translation>Signal der Spitzenstromüberwachung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inhibit</source>
+        <translation>Sperre</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The voltage limitation is active</source>
+        <translation>Die Spannungsbegrenzung ist aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The current limiting is active</source>
+        <translation>Die Strombegrenzung ist aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The power limitation is active</source>
+        <translation>Die Leistungsbegrenzung ist aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The resistance limitation is active</source>
+        <translation>Die Widerstandsbegrenzung ist aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary signal 2</source>
+        <translation>Binärsignal 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The voltage, current, power, or resistance limitation is active</source>
+        <translation>Die Spannungs-, Strom-, Leistungs- oder Widerstandsbegrenzung ist aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Soft start running</source>
+        <translation>Sanftanlauf läuft</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The external switchover of the setpoint specification is active</source>
+        <translation>Die externe Umschaltung der Sollwertvorgabe ist aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The power controller is currently being reconfigured</source>
+        <translation>Der Leistungssteller wird gerade umkonfiguriert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The power controller is operating in manual mode</source>
+        <translation>Der Leistungssteller arbeitet im Handbetrieb</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The keypad has been locked</source>
+        <translation>Die Tastatur ist gesperrt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The display lighting has been switched off</source>
+        <translation>Die Displaybeleuchtung ist ausgeschaltet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reduced power due to load failure, detected by ext. current sensor(s)</source>
+        <translation>Leistungsreduzierung wegen Lastausfall, erkannt durch ext. Stromsensor(en)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Trigger for manual Teach-In is active</source>
+        <translation>Auslöser für manuelles Teach-In ist aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary signal (write only)</source>
+        <translation>Binärsignal (nur schreiben)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.2.7 Errors and malfunctions</source>
+        <translation>5.2.7 Fehler und Störungen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wire break at external current sensor 1</source>
+        <translation>Drahtbruch am externen Stromsensor 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Energy meter configuration is incorrect</source>
+        <translation>Konfiguration des Energiezählers ist fehlerhaft</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SiC voltage reserve exhausted</source>
+        <translation>SiC-Spannungsreserve erschöpft</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inhibit via inhibit input</source>
+        <translation>Sperre über Sperreingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inhibit via peak current</source>
+        <translation>Sperre durch Spitzenstrom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inhibit via external input</source>
+        <translation>Sperre über externen Eingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inhibit via UCE sat – detection 1</source>
+        <translation>Sperre über UCE sat – Erkennung 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inhibit via UCE sat – detection 2</source>
+        <translation>Sperre über UCE sat – Erkennung 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Defect in external current sensor 2</source>
+        <translation>Defekt am externen Stromsensor 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Defect in external current sensor 3</source>
+        <translation>Defekt am externen Stromsensor 3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Configuration error in external current sensor (2 and/or 3)</source>
+        <translation>Konfigurationsfehler am externen Stromsensor (2 und/oder 3)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.2.8 Controlling the analog output</source>
+        <translation>5.2.8 Ansteuerung des Analogausgangs</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Value of analog output when controlled via interface</source>
+        <translation>Wert des Analogausgangs bei Ansteuerung über Schnittstelle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Configuration level &gt; Analog output &gt; Value to be output = &quot;From interface&quot; (6.2)</source>
+        <translation>Konfigurationsebene &gt; Analogausgang &gt; Auszugebender Wert = &quot;Von Schnittstelle&quot; (6.2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>4.2 Process data</source>
+        <translation>4.2 Prozessdaten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Self-optimization active</source>
+        <translation>Selbstoptimierung aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary outputs 1 ... 5</source>
+        <translation>Binärausgänge 1 ... 5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output K1: Relay</source>
+        <translation>Ausgang K1: Relais</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output K2: Relay or Logic</source>
+        <translation>Ausgang K2: Relais oder Logik</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output K3: Relay or Logic</source>
+        <translation>Ausgang K3: Relais oder Logik</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output K4: Relay or Logic</source>
+        <translation>Ausgang K4: Relais oder Logik</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output K5: Relay or Logic</source>
+        <translation>Ausgang K5: Relais oder Logik</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary input</source>
+        <translation>Binäreingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Input 1</source>
+        <translation>Eingang 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit value monitoring</source>
+        <translation>Grenzwertüberwachung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit value monitoring 1</source>
+        <translation>Grenzwertüberwachung 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit value monitoring 2</source>
+        <translation>Grenzwertüberwachung 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output K1</source>
+        <translation>Ausgang K1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output K2</source>
+        <translation>Ausgang K2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output K3</source>
+        <translation>Ausgang K3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output K4</source>
+        <translation>Ausgang K4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output K5</source>
+        <translation>Ausgang K5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Analog input</source>
+        <translation>Analogeingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Internal cold junction</source>
+        <translation>Interne Vergleichsstelle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Analog input (displayed value)</source>
+        <translation>Analogeingang (Anzeigewert)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sampling time</source>
+        <translation>Abtastzeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller, ramp end value</source>
+        <translation>Regler, Rampenendwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller, actual value, filtered</source>
+        <translation>Regler, Istwert, gefiltert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller, actual value, unfiltered</source>
+        <translation>Regler, Istwert, ungefiltert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller, setpoint</source>
+        <translation>Regler, Sollwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller, output level display</source>
+        <translation>Regler, Stellgradanzeige</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output level, controller output 1 (heating)</source>
+        <translation>Stellgrad, Reglerausgang 1 (Heizen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output level, controller output 2 (cooling)</source>
+        <translation>Stellgrad, Reglerausgang 2 (Kühlen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller, control difference</source>
+        <translation>Regler, Regelabweichung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Switching state, controller output 1 (heating)</source>
+        <translation>Schaltzustand, Reglerausgang 1 (Heizen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Switching state, controller output 2 (cooling)</source>
+        <translation>Schaltzustand, Reglerausgang 2 (Kühlen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output level, manual mode</source>
+        <translation>Stellgrad, Handbetrieb</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timer run time</source>
+        <translation>Timer-Laufzeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Residual timer time</source>
+        <translation>Timer-Restzeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timer status</source>
+        <translation>Timer-Status</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timer stopped</source>
+        <translation>Timer angehalten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timer runs</source>
+        <translation>Timer läuft</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timer end</source>
+        <translation>Timer-Ende</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timer signal</source>
+        <translation>Timer-Signal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary functions CONTROLLER</source>
+        <translation>Binärfunktionen REGLER</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>4.6 Commands</source>
+        <translation>4.6 Befehle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Self-optimization start</source>
+        <translation>Start Selbstoptimierung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Self-optimization abort</source>
+        <translation>Abbruch Selbstoptimierung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Manual mode inhibit</source>
+        <translation>Sperre Handbetrieb</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ramp stop</source>
+        <translation>Rampe anhalten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ramp abort</source>
+        <translation>Rampe abbrechen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ramp restart</source>
+        <translation>Rampe neu starten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timer start</source>
+        <translation>Timer starten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timer abort</source>
+        <translation>Timer abbrechen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timer stop</source>
+        <translation>Timer anhalten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary functions OPERATION</source>
+        <translation>Binärfunktionen BEDIENUNG</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keyboard inhibit</source>
+        <translation>Tastatursperre</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Configuration and parameter level inhibit</source>
+        <translation>Sperre Konfigurations- und Parameterebene</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Display OFF</source>
+        <translation>Anzeige AUS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setpoint changeover</source>
+        <translation>Sollwertumschaltung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setpoint 1</source>
+        <translation>Sollwert 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setpoint 2</source>
+        <translation>Sollwert 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ramp function, ramp rate</source>
+        <translation>Rampenfunktion, Rampensteigung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>4.5 Configuration</source>
+        <translation>4.5 Konfiguration</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Filter time constant</source>
+        <translation>Filterzeitkonstante</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Offset analog input</source>
+        <translation>Offset Analogeingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timer value</source>
+        <translation>Timerwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit value monitoring 1, alarm value AL</source>
+        <translation>Grenzwertüberwachung 1, Grenzwert AL</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit value monitoring 1, hysteresis</source>
+        <translation>Grenzwertüberwachung 1, Schaltdifferenz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit value monitoring 2, alarm value AL</source>
+        <translation>Grenzwertüberwachung 2, Grenzwert AL</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit value monitoring 2, hysteresis</source>
+        <translation>Grenzwertüberwachung 2, Schaltdifferenz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller parameter XP1 (Pb)</source>
+        <translation>Reglerparameter XP1 (Pb)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>4.4 Controller parameters</source>
+        <translation>4.4 Reglerparameter</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller parameter XP2 (Pb2)</source>
+        <translation>Reglerparameter XP2 (Pb2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller parameter TV (dt)</source>
+        <translation>Reglerparameter TV (dt)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller parameter TN (rt)</source>
+        <translation>Reglerparameter TN (rt)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller parameter CY1 (CY)</source>
+        <translation>Reglerparameter CY1 (CY)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller parameter CY2 (CY2)</source>
+        <translation>Reglerparameter CY2 (CY2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller parameter XSH (db)</source>
+        <translation>Reglerparameter XSH (db)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller parameter XD1 (HYS)</source>
+        <translation>Reglerparameter XD1 (HYS)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller parameter XD2 (HYS2)</source>
+        <translation>Reglerparameter XD2 (HYS2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller parameter Y0 (Y0)</source>
+        <translation>Reglerparameter Y0 (Y0)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller parameter Y1 (Y)</source>
+        <translation>Reglerparameter Y1 (Y)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller parameter Y2 (Y2)</source>
+        <translation>Reglerparameter Y2 (Y2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setpoint SP1</source>
+        <translation>Sollwert SP1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>4.3 Setpoints</source>
+        <translation>4.3 Sollwerte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setpoint SP2</source>
+        <translation>Sollwert SP2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller setpoint (writable)</source>
+        <translation>Reglersollwert (beschreibbar)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>4.7 RAM memory</source>
+        <translation>4.7 RAM-Speicher</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller actual value (writable)</source>
+        <translation>Regleristwert (beschreibbar)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Invalid data address (also sent when more words than admissible are to be read or written)</source>
+        <translation>Ungültige Datenadresse (wird auch gesendet, wenn mehr Worte als zulässig gelesen oder geschrieben werden sollen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Data value outside the admissible value range</source>
+        <translation>Datenwert außerhalb des zulässigen Wertebereichs</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Error while processing the instruction (e.g. could not write to flash memory)</source>
+        <translation>Fehler bei der Ausführung des Befehls (z. B. Flash-Speicher konnte nicht beschrieben werden)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Instruction cannot be carried out at this time, try again</source>
+        <translation>Befehl kann zurzeit nicht ausgeführt werden, bitte erneut versuchen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.1 Device data</source>
+        <translation>5.1 Gerätedaten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial number</source>
+        <translation>Seriennummer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Type key</source>
+        <translation>Typenschlüssel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.2 Type codes and options</source>
+        <translation>5.2 Typangaben und Optionen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>709061 (TYA 201 - single-phase unit)</source>
+        <translation>709061 (TYA 201 - Einzelgerät)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>709062 (TYA 202 - economy circuit)</source>
+        <translation>709062 (TYA 202 - Sparschaltung)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>709063 (TYA 203 - three-phase power controller)</source>
+        <translation>709063 (TYA 203 - Dreiphasen-Leistungssteller)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Nominal voltage</source>
+        <translation>Nennspannung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>24 V</source>
+        <translation>24 V</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>42 V</source>
+        <translation>42 V</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>115 V</source>
+        <translation>115 V</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>230 V</source>
+        <translation>230 V</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>265 V</source>
+        <translation>265 V</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>400 V</source>
+        <translation>400 V</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>440 V</source>
+        <translation>440 V</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>500 V</source>
+        <translation>500 V</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rated current</source>
+        <translation>Nennstrom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>16 A</source>
+        <translation>16 A</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>30 A</source>
+        <translation>30 A</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>50 A</source>
+        <translation>50 A</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>75 A</source>
+        <translation>75 A</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>150 A</source>
+        <translation>150 A</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>250 A</source>
+        <translation>250 A</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Current measurement option</source>
+        <translation>Option Strommessung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No</source>
+        <translation>Nein</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Yes</source>
+        <translation>Ja</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Released options</source>
+        <translation>Freigeschaltete Optionen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>P control option</source>
+        <translation>Option P-Regelung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device can only be used as slave</source>
+        <translation>Gerät nur als Slave verwendbar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Equipped binary output</source>
+        <translation>Bestückter Binärausgang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RS422/RS485</source>
+        <translation>RS422/RS485</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Profibus</source>
+        <translation>Profibus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Switch off display light in</source>
+        <translation>Displaybeleuchtung ausschalten nach</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.8 Parameters of the operator level (storage in the RAM)</source>
+        <translation>5.8 Parameter der Bedienerebene (Speicherung im RAM)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Angle alpha start</source>
+        <translation>Startwinkel Alpha</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Maximum actuating variable</source>
+        <translation>Maximaler Stellgrad</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Min. limit value alarm</source>
+        <translation>Grenzwert Min-Alarm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Max. limit value alarm</source>
+        <translation>Grenzwert Max-Alarm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit value hysteresis</source>
+        <translation>Grenzwert-Hysterese</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limit value load monitoring</source>
+        <translation>Grenzwert Lastkreisüberwachung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setpoint in the case of a bus error/wire break</source>
+        <translation>Sollwert bei Busfehler/Drahtbruch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.3 Measured values</source>
+        <translation>5.3 Messwerte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Config level → Set point value config. → Default set point value = &quot;via interface&quot; (6.1); otherwise writes are ignored.</source>
+        <translation>Konfigurationsebene → Sollwertkonfiguration → Sollwertvorgabe = &quot;über Schnittstelle&quot; (6.1); andernfalls werden Schreibzugriffe ignoriert.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Output level</source>
+        <translation>Stellgrad</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Alpha</source>
+        <translation>Alpha</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mains voltage</source>
+        <translation>Netzspannung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mains frequency</source>
+        <translation>Netzfrequenz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load voltage slave/slave1</source>
+        <translation>Lastspannung Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load current slave/slave1</source>
+        <translation>Laststrom Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power slave/slave1</source>
+        <translation>Leistung Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load resistance slave/slave1</source>
+        <translation>Lastwiderstand Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mains voltage slave/slave1</source>
+        <translation>Netzspannung Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device temp. slave/slave1</source>
+        <translation>Gerätetemp. Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load voltage slave2</source>
+        <translation>Lastspannung Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load current slave2</source>
+        <translation>Laststrom Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power slave2</source>
+        <translation>Leistung Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load resistance slave2</source>
+        <translation>Lastwiderstand Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mains voltage slave2</source>
+        <translation>Netzspannung Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device temp. slave2</source>
+        <translation>Gerätetemp. Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Three-phase power</source>
+        <translation>Drehstromleistung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Alpha default value</source>
+        <translation>Alpha-Vorgabewert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Logic mode (Config level → Power controller → SCR control = &quot;Logics (switch)&quot;) with the default α value set to &quot;via interface&quot; under Config level → Set point value config. (6.2; the menu path is cut off in the manual).</source>
+        <translation>Logikbetrieb (Konfigurationsebene → Leistungssteller → Thyristoransteuerung = &quot;Logik (Schalter)&quot;) mit α-Vorgabewert auf &quot;über Schnittstelle&quot; unter Konfigurationsebene → Sollwertkonfiguration (6.2; der Menüpfad ist im Handbuch abgeschnitten).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Analog output</source>
+        <translation>Analogausgang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Config level → Analog output → Output value = &quot;From Interface&quot; (6.3; table: only writable if &quot;via interface&quot; is configured); signal range start 0 %, end 100 % recommended.</source>
+        <translation>Konfigurationsebene → Analogausgang → Ausgabewert = &quot;Von Schnittstelle&quot; (6.3; Tabelle: nur beschreibbar, wenn &quot;über Schnittstelle&quot; konfiguriert ist); Signalbereich Anfang 0 %, Ende 100 % empfohlen.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary signals - 1st section</source>
+        <translation>Binärsignale - 1. Abschnitt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.4 Binary signals (bit field)</source>
+        <translation>5.4 Binärsignale (Bitfeld)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>External binary input 1</source>
+        <translation>Externer Binäreingang 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>External binary input 2</source>
+        <translation>Externer Binäreingang 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary output</source>
+        <translation>Binärausgang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inhibit by the slave</source>
+        <translation>Sperre durch den Slave</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Soft start is still running</source>
+        <translation>Sanftanlauf läuft noch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Current limiting is active</source>
+        <translation>Strombegrenzung ist aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>External change-over to phase angle is active</source>
+        <translation>Externe Umschaltung auf Phasenanschnitt ist aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>External current limit value is used</source>
+        <translation>Externer Stromgrenzwert wird verwendet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Display PCB is connected</source>
+        <translation>Displayplatine ist angeschlossen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power controller is currently reconfigured</source>
+        <translation>Leistungssteller wird gerade umkonfiguriert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power controller operates in the test and calibration mode</source>
+        <translation>Leistungssteller arbeitet im Test- und Kalibriermodus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Binary signals - 2nd section</source>
+        <translation>Binärsignale - 2. Abschnitt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power controller operates in manual mode</source>
+        <translation>Leistungssteller arbeitet im Handbetrieb</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keyboard is locked</source>
+        <translation>Tastatur ist gesperrt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Display is switched off</source>
+        <translation>Anzeige ist ausgeschaltet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power controller is connected to the supply voltage</source>
+        <translation>Leistungssteller ist an die Versorgungsspannung angeschlossen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slave/slave1 power controller is connected to the supply voltage</source>
+        <translation>Leistungssteller Slave/Slave1 ist an die Versorgungsspannung angeschlossen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rotary field detection was successfully completed</source>
+        <translation>Drehfelderkennung wurde erfolgreich abgeschlossen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Resistance limitation is active</source>
+        <translation>Widerstandsbegrenzung ist aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>External switching of setpoint value is active</source>
+        <translation>Externe Sollwertumschaltung ist aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slave2 is connected to the supply voltage</source>
+        <translation>Slave2 ist an die Versorgungsspannung angeschlossen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inhibit of slave2</source>
+        <translation>Sperre von Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Malfunction signals - 1st section</source>
+        <translation>Störmeldungen - 1. Abschnitt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Min alarm</source>
+        <translation>Min-Alarm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Max alarm</source>
+        <translation>Max-Alarm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Teach-in for load monitoring is still missing</source>
+        <translation>Teach-In für Lastkreisüberwachung fehlt noch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Blown fuse</source>
+        <translation>Sicherungsbruch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Thyristor breakage</source>
+        <translation>Thyristorbruch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Thyristor short circuit</source>
+        <translation>Thyristorkurzschluss</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Performance limitation due to over-temperature</source>
+        <translation>Leistungsbegrenzung wegen Übertemperatur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Over-temperature</source>
+        <translation>Übertemperatur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Supply voltage too low</source>
+        <translation>Versorgungsspannung zu niedrig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Supply voltage too high</source>
+        <translation>Versorgungsspannung zu hoch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Temporary supply voltage drop</source>
+        <translation>Kurzzeitiger Einbruch der Versorgungsspannung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wire breakage on input current</source>
+        <translation>Drahtbruch am Stromeingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wire breakage on input voltage</source>
+        <translation>Drahtbruch am Spannungseingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Malfunction signals - 2nd section</source>
+        <translation>Störmeldungen - 2. Abschnitt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Min alarm on slave/slave1</source>
+        <translation>Min-Alarm an Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Max alarm on slave/slave1</source>
+        <translation>Max-Alarm an Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load error on slave/slave1</source>
+        <translation>Lastfehler an Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Blown fuse at the slave or slave1</source>
+        <translation>Sicherungsbruch an Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Thyristor breakage at the slave/slave1</source>
+        <translation>Thyristorbruch an Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Thyristor short circuit at the slave/slave1</source>
+        <translation>Thyristorkurzschluss an Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Performance limitation due to over-temperature in slave/slave1</source>
+        <translation>Leistungsbegrenzung wegen Übertemperatur in Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Over-temperature in slave/slave1</source>
+        <translation>Übertemperatur in Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Supply voltage slave/slave1 too low</source>
+        <translation>Versorgungsspannung Slave/Slave1 zu niedrig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Supply voltage slave/slave1 too high</source>
+        <translation>Versorgungsspannung Slave/Slave1 zu hoch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Temporary supply voltage drop at slave/slave1</source>
+        <translation>Kurzzeitiger Einbruch der Versorgungsspannung an Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wrong energy counter configuration</source>
+        <translation>Falsche Konfiguration des Energiezählers</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Malfunction signals - 3rd section</source>
+        <translation>Störmeldungen - 3. Abschnitt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Master/slave synchronization has failed</source>
+        <translation>Master/Slave-Synchronisation fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Error in the master/slave communication</source>
+        <translation>Fehler in der Master/Slave-Kommunikation</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Error on the data cable between master and slave</source>
+        <translation>Fehler an der Datenleitung zwischen Master und Slave</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rotary field detection has failed</source>
+        <translation>Drehfelderkennung fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rotary field error</source>
+        <translation>Drehfeldfehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wiring error</source>
+        <translation>Verdrahtungsfehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power controller or one of the slaves is incompatible</source>
+        <translation>Leistungssteller oder einer der Slaves ist inkompatibel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Regulation not possible</source>
+        <translation>Regelung nicht möglich</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Malfunction signals - 4th section</source>
+        <translation>Störmeldungen - 4. Abschnitt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Min alarm on slave2</source>
+        <translation>Min-Alarm an Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Max alarm on slave2</source>
+        <translation>Max-Alarm an Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load error on slave2</source>
+        <translation>Lastfehler an Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Blown fuse at the slave2</source>
+        <translation>Sicherungsbruch an Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Thyristor breakage at the slave2</source>
+        <translation>Thyristorbruch an Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Thyristor short circuit at the slave2</source>
+        <translation>Thyristorkurzschluss an Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Performance limitation due to over-temperature in slave2</source>
+        <translation>Leistungsbegrenzung wegen Übertemperatur in Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Over-temperature in slave2</source>
+        <translation>Übertemperatur in Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Supply voltage slave2 too low</source>
+        <translation>Versorgungsspannung Slave2 zu niedrig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Supply voltage slave2 too high</source>
+        <translation>Versorgungsspannung Slave2 zu hoch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Temporary supply voltage drop at slave2</source>
+        <translation>Kurzzeitiger Einbruch der Versorgungsspannung an Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Systembus: invalid configuration</source>
+        <translation>Systembus: ungültige Konfiguration</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Systembus: watchdog timeout</source>
+        <translation>Systembus: Watchdog-Zeitüberschreitung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Systembus: local error</source>
+        <translation>Systembus: lokaler Fehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.5 Digital inputs and -output</source>
+        <translation>5.5 Digitaleingänge und -ausgang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Config level → Binary output → Output mode binary out = &quot;Interf.sign.outp&quot; (6.4; table: only writable if &quot;interface-signal&quot; is configured).</source>
+        <translation>Konfigurationsebene → Binärausgang → Ausgabemodus Binärausgang = &quot;Schnittst.-Signal&quot; (6.4; Tabelle: nur beschreibbar, wenn &quot;Schnittstellensignal&quot; konfiguriert ist).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.6 Device status</source>
+        <translation>5.6 Gerätestatus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inhibit slave/slave1</source>
+        <translation>Sperre Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Soft start phase</source>
+        <translation>Sanftanlaufphase</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Current limitation active</source>
+        <translation>Strombegrenzung aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ext. change-over to phase angle active</source>
+        <translation>Ext. Umschaltung auf Phasenanschnitt aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ext. current limit value active</source>
+        <translation>Ext. Stromgrenzwert aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The display socket is connected</source>
+        <translation>Displayanschluss ist belegt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power controller is in calibrating mode</source>
+        <translation>Leistungssteller ist im Kalibriermodus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keyboard locked</source>
+        <translation>Tastatur gesperrt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Display lighting deactivated</source>
+        <translation>Displaybeleuchtung deaktiviert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power controller is connected on power supply</source>
+        <translation>Leistungssteller ist an Versorgungsspannung angeschlossen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slave/slave1 is connected on power supply</source>
+        <translation>Slave/Slave1 ist an Versorgungsspannung angeschlossen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rotating field detected</source>
+        <translation>Drehfeld erkannt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ext. change-over of setpoint specification active</source>
+        <translation>Ext. Umschaltung der Sollwertvorgabe aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slave2 is connected on power supply</source>
+        <translation>Slave2 ist an Versorgungsspannung angeschlossen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inhibit slave2</source>
+        <translation>Sperre Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Collective fault</source>
+        <translation>Sammelstörung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>5.7 Faults</source>
+        <translation>5.7 Störungen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Low alarm</source>
+        <translation>Min-Alarm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>High alarm</source>
+        <translation>Max-Alarm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Missing teach-in</source>
+        <translation>Teach-In fehlt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Thyristor short-circuit</source>
+        <translation>Thyristorkurzschluss</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limitation active due to overtemperature</source>
+        <translation>Begrenzung aktiv wegen Übertemperatur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mains voltage is too low</source>
+        <translation>Netzspannung ist zu niedrig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mains voltage is too high</source>
+        <translation>Netzspannung ist zu hoch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Short-term mains drop</source>
+        <translation>Kurzzeitiger Netzeinbruch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wire break current input</source>
+        <translation>Drahtbruch Stromeingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wire break voltage input</source>
+        <translation>Drahtbruch Spannungseingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>System bus error</source>
+        <translation>Systembusfehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Low alarm slave/slave1</source>
+        <translation>Min-Alarm Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>High alarm slave/slave1</source>
+        <translation>Max-Alarm Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load error slave/slave1</source>
+        <translation>Lastfehler Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fuse breakage slave/slave1</source>
+        <translation>Sicherungsbruch Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Thyristor breakage slave/slave1</source>
+        <translation>Thyristorbruch Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Thyristor short-circuit slave/slave1</source>
+        <translation>Thyristorkurzschluss Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limitation active due to overtemperature of slave/slave1</source>
+        <translation>Begrenzung aktiv wegen Übertemperatur von Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Over-temperature slave/slave1</source>
+        <translation>Übertemperatur Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mains voltage of slave/slave1 is too low</source>
+        <translation>Netzspannung von Slave/Slave1 ist zu niedrig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mains voltage of slave/slave1 is too high</source>
+        <translation>Netzspannung von Slave/Slave1 ist zu hoch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Short-term mains drop slave/slave1</source>
+        <translation>Kurzzeitiger Netzeinbruch Slave/Slave1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Master slave synchronisation failed</source>
+        <translation>Master-Slave-Synchronisation fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Error in master slave communication</source>
+        <translation>Fehler in der Master-Slave-Kommunikation</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Data cable faulty</source>
+        <translation>Datenleitung fehlerhaft</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rotation field detection failed</source>
+        <translation>Drehfelderkennung fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rotation field error</source>
+        <translation>Drehfeldfehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The or one of the slave controllers is incompatible</source>
+        <translation>Der bzw. einer der Slave-Steller ist inkompatibel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setpoint cannot be reached</source>
+        <translation>Sollwert kann nicht erreicht werden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Low alarm slave2</source>
+        <translation>Min-Alarm Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Max alarm slave2</source>
+        <translation>Max-Alarm Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load error slave2</source>
+        <translation>Lastfehler Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fuse breakage slave2</source>
+        <translation>Sicherungsbruch Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Thyristor breakage slave2</source>
+        <translation>Thyristorbruch Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Thyristor short-circuit slave2</source>
+        <translation>Thyristorkurzschluss Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Limitation active due to overtemperature of slave2</source>
+        <translation>Begrenzung aktiv wegen Übertemperatur von Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Over-temperature slave2</source>
+        <translation>Übertemperatur Slave2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mains voltage of slave2 is too low</source>
+        <translation>Netzspannung von Slave2 ist zu niedrig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mains voltage of slave2 is too high</source>
+        <translation>Netzspannung von Slave2 ist zu hoch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Short-term mains drop slave2</source>
+        <translation>Kurzzeitiger Netzeinbruch Slave2</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+19"/>
+        <location filename="../app/jumo-hmi.cpp" line="+28"/>
         <source>JUMO commissioning and monitoring HMI.</source>
         <translation>JUMO-HMI für Inbetriebnahme und Überwachung.</translation>
     </message>
@@ -1222,12 +5316,47 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
         <translation>Leitwarten-Modus: Es wird nie etwas auf die Geräte geschrieben.</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>Map files refused</source>
-        <translation>Map-Dateien abgelehnt</translation>
+        <location line="+2"/>
+        <source>Open the page of this device, e.g. ipc300@1.</source>
+        <translation>Die Seite dieses Geräts öffnen, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location filename="../app/jumo-sim.cpp" line="+24"/>
+        <location line="+3"/>
+        <source>With --show: open this tab of the device page (0 = live values).</source>
+        <translation>Mit --show: diese Registerkarte der Geräteseite öffnen (0 = Live-Werte).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Connect to this serial port at start (with --baud, --format, --device).</source>
+        <translation>Beim Start mit dieser seriellen Schnittstelle verbinden (mit --baud, --format, --device).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Baud rate for --port (default 9600).</source>
+        <translation>Baudrate für --port (Standard 9600).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Data format for --port (default 8N1).</source>
+        <translation>Datenformat für --port (Standard 8N1).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A device to monitor, e.g. ipc300@1 (repeatable).</source>
+        <translation>Ein zu überwachendes Gerät, z. B. ipc300@1 (mehrfach möglich).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Print on stderr when the first live value arrives.</source>
+        <translation>Auf stderr ausgeben, wann der erste Live-Wert eintrifft.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Map files refused: %1</source>
+        <translation>Map-Dateien abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/jumo-sim.cpp" line="+26"/>
         <source>Simulated JUMO devices on a serial line. DEVICE is FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>Simulierte JUMO-Geräte an einer seriellen Leitung. DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
@@ -1292,12 +5421,13 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
         <translation>mindestens ein Gerät angeben, z. B. ipc300@1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location filename="../app/jumo-hmi.cpp" line="+10"/>
+        <location filename="../app/jumo-sim.cpp" line="+8"/>
         <source>&apos;%1&apos; is not FAMILY@ADDRESS with a known family</source>
         <translation>&apos;%1&apos; ist nicht FAMILY@ADDRESS mit einer bekannten Gerätefamilie</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location filename="../app/jumo-sim.cpp" line="+10"/>
         <source>cannot open %1: %2</source>
         <translation>%1 kann nicht geöffnet werden: %2</translation>
     </message>

@@ -3,6 +3,7 @@
 #include "linetiming.h"
 #include "rtuframe.h"
 
+#include <QCoreApplication>
 #include <QLoggingCategory>
 #include <QModbusReply>
 #include <QModbusRtuSerialClient>
@@ -674,7 +675,8 @@ void Bus::onReplyFinished(QModbusReply *reply, Job job, qint64 sentMs)
                                            : tr("exception %1").arg(exceptionCode);
             QString message = tr("refused by the device: exception %1, %2").arg(exceptionCode).arg(meaning);
             if (job.entry && !job.entry->precondition.isEmpty())
-                message += tr(" (precondition: %1)").arg(job.entry->precondition);
+                message += tr(" (precondition: %1)")
+                                   .arg(QCoreApplication::translate("jumo::maps", job.entry->precondition.toUtf8().constData()));
             finishWrite(job, {WriteOutcome::Result::Refused, message, exceptionCode, {}});
         } else {
             finishWrite(job, {WriteOutcome::Result::Failed,

@@ -99,6 +99,8 @@ public:
 
     int requestTimeoutMs(const ProtocolInfo &protocol, int requestBytes, int replyBytes) const;
     double interFrameDelayMs() const;
+    // The monotonic clock of EntryState times and TrafficRecord times.
+    qint64 clockMs() const { return m_clock.elapsed(); }
 
 signals:
     void stateChanged(jumo::LineState state);

@@ -189,7 +189,7 @@ int main(int argc, char *argv[])
             failed = true;
             continue;
         }
-        std::printf("%-6d %-8d %-9s %12.1f %12.1f %7.3f   (+%.1f %% against %d live devices alone)\n", baud, many,
+        std::printf("%-6d %-8d %-9s %12.1f %12.1f %7.3f   (%+.1f %% against %d live devices alone)\n", baud, many,
                     "1", d.cycleMs, d.theoryMs, d.cycleMs / d.theoryMs, 100.0 * (d.cycleMs / liveMany - 1.0), many - 1);
         std::fflush(stdout);
     }

@@ -86,6 +86,15 @@ public:
         return m_line.open(port, testFormat());
     }
     void stop() override { m_line.close(); }
+    // ipc300@1, tya200@2, quantrol@3 and dtron300@4, their models running.
+    bool startOneOfEachFamily(const QString &port)
+    {
+        quint8 address = 1;
+        for (const char *family : {"ipc300", "tya200", "quantrol", "dtron300"})
+            m_line.addDevice(families().family(family), address++);
+        m_line.setTickInterval(100);
+        return start(port, {});
+    }
     bool reopen() { return m_line.open(m_port, testFormat()); }
 
     bool setWords(quint8 slave, quint16 address, const QList<quint16> &words) override

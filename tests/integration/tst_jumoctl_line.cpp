@@ -66,12 +66,7 @@ void tst_JumoctlLine::initTestCase()
     qputenv("JUMO_MAP_PATH", "");
     qputenv("XDG_DATA_HOME", QByteArray(QDir::tempPath().toUtf8() + "/jumo-test-no-maps"));
     QVERIFY(m_line.start());
-    m_sim.line().addDevice(families().family("ipc300"), 1);
-    m_sim.line().addDevice(families().family("tya200"), 2);
-    m_sim.line().addDevice(families().family("quantrol"), 3);
-    m_sim.line().addDevice(families().family("dtron300"), 4);
-    m_sim.line().setTickInterval(100);
-    QVERIFY(m_sim.start(m_line.deviceEnd(), {}));
+    QVERIFY(m_sim.startOneOfEachFamily(m_line.deviceEnd()));
 }
 
 void tst_JumoctlLine::scanFindsEveryFamily()

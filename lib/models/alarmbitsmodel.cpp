@@ -1,0 +1,115 @@
+#include "alarmbitsmodel.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+
+namespace jumo {
+
+AlarmBitsModel::AlarmBitsModel(Bus *bus, DeviceId device, QObject *parent)
+    : QAbstractListModel(parent), m_bus(bus), m_device(device), m_map(bus->deviceMap(device))
+{
+    if (m_map) {
+        for (const RegisterEntry &e : m_map->entries()) {
+            if (e.type != ValueType::Bitfield || !e.isReadable() || e.isCommand())
+                continue;
+            for (const BitDefinition &b : e.bits) {
+                // Reserved bits are hidden; multi-bit codes are no LEDs.
+                if (!b.reserved && b.width == 1 && b.kind != BitKind::Command)
+                    m_rows << Row{&e, &b};
+            }
+        }
+    }
+    connect(m_bus, &Bus::entriesUpdated, this, &AlarmBitsModel::onEntriesUpdated);
+}
+
+int AlarmBitsModel::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : int(m_rows.size());
+}
+
+int AlarmBitsModel::rowOf(const QString &reference) const
+{
+    for (int i = 0; i < m_rows.size(); ++i) {
+        if (m_rows[i].entry->id + QLatin1Char('.') + m_rows[i].bit->id == reference)
+            return i;
+    }
+    return -1;
+}
+
+bool AlarmBitsModel::isActive(const Row &row) const
+{
+    const EntryState *s = m_bus->entryState(m_device, row.entry->id);
+    return s && s->hasValue() && (s->value.raw & row.bit->mask());
+}
+
+void AlarmBitsModel::onEntriesUpdated(DeviceId device, const QStringList &ids)
+{
+    if (device != m_device)
+        return;
+    int first = int(m_rows.size());
+    int last = -1;
+    for (int i = 0; i < m_rows.size(); ++i) {
+        if (ids.contains(m_rows[i].entry->id)) {
+            first = std::min(first, i);
+            last = std::max(last, i);
+        }
+    }
+    if (last < 0)
+        return;
+    recount();   // first, so views that repaint on dataChanged see the new count
+    emit dataChanged(index(first), index(last));
+}
+
+void AlarmBitsModel::recount()
+{
+    const int count = int(std::count_if(m_rows.cbegin(), m_rows.cend(), [this](const Row &r) {
+        return r.bit->kind == BitKind::Alarm && isActive(r);
+    }));
+    if (count != m_activeAlarms) {
+        m_activeAlarms = count;
+        emit activeAlarmsChanged(count);
+    }
+}
+
+QVariant AlarmBitsModel::data(const QModelIndex &index, int role) const
+{
+    if (!index.isValid() || index.row() >= m_rows.size())
+        return {};
+    const Row &row = m_rows.at(index.row());
+    const EntryState *state = m_bus->entryState(m_device, row.entry->id);
+    switch (role) {
+    case Qt::DisplayRole:
+        return QCoreApplication::translate("jumo::maps", row.bit->label.toUtf8().constData());
+    case KindRole:
+        return int(row.bit->kind);
+    case ActiveRole:
+        return isActive(row);
+    case CurrentRole:
+        return state && state->isCurrent();
+    case ReferenceRole:
+        return row.entry->id + QLatin1Char('.') + row.bit->id;
+    case GroupTitleRole:
+        return tr("%1 (register %2)")
+                .arg(QCoreApplication::translate("jumo::maps", row.entry->label.toUtf8().constData()),
+                     formatAddress(row.entry->address));
+    case Qt::ToolTipRole: {
+        const QString kind = row.bit->kind == BitKind::Alarm ? tr("alarm")
+                : row.bit->kind == BitKind::Warning         ? tr("warning")
+                                                            : tr("status");
+        QString tip = tr("%1\nRegister %2 (%3), bit %4, %5\nManual %6: \"%7\"")
+                              .arg(QCoreApplication::translate("jumo::maps", row.bit->label.toUtf8().constData()),
+                                   formatAddress(row.entry->address),
+                                   QCoreApplication::translate("jumo::maps", row.entry->label.toUtf8().constData()))
+                              .arg(row.bit->bit)
+                              .arg(kind, row.entry->group, row.bit->label);
+        if (!state || !state->isCurrent())
+            tip += QLatin1Char('\n') + tr("Not current: the last read failed or none was made yet.");
+        return tip;
+    }
+    default:
+        return {};
+    }
+}
+
+} // namespace jumo

@@ -1,0 +1,157 @@
+#include "livevaluesmodel.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+
+namespace jumo {
+
+LiveValuesModel::LiveValuesModel(Bus *bus, DeviceId device, QObject *parent)
+    : QAbstractTableModel(parent), m_bus(bus), m_device(device), m_map(bus->deviceMap(device))
+{
+    if (m_map) {
+        for (const RegisterEntry &e : m_map->entries()) {
+            if (e.isReadable() && e.alias.isEmpty() && !e.reserved) {
+                m_rowOf.insert(e.id, int(m_rows.size()));
+                m_rows << &e;
+            }
+        }
+    }
+    connect(m_bus, &Bus::entriesUpdated, this, &LiveValuesModel::onEntriesUpdated);
+    // Ages move on by themselves, and old values turn stale: one refresh a second.
+    m_ageTimer.setInterval(1000);
+    connect(&m_ageTimer, &QTimer::timeout, this, [this] {
+        if (!m_rows.isEmpty())
+            emit dataChanged(index(0, 0), index(int(m_rows.size()) - 1, ColumnCount - 1),
+                             {Qt::DisplayRole, StaleRole, AgeMsRole});
+    });
+    m_ageTimer.start();
+}
+
+void LiveValuesModel::onEntriesUpdated(DeviceId device, const QStringList &ids)
+{
+    if (device != m_device)
+        return;
+    int first = int(m_rows.size());
+    int last = -1;
+    for (const QString &id : ids) {
+        const int row = m_rowOf.value(id, -1);
+        if (row >= 0) {
+            first = std::min(first, row);
+            last = std::max(last, row);
+        }
+    }
+    if (last >= 0)
+        emit dataChanged(index(first, 0), index(last, ColumnCount - 1));
+}
+
+int LiveValuesModel::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : int(m_rows.size());
+}
+
+int LiveValuesModel::columnCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QString LiveValuesModel::entryId(int row) const
+{
+    return row >= 0 && row < m_rows.size() ? m_rows.at(row)->id : QString();
+}
+
+QString LiveValuesModel::statusText(const EntryState &state) const
+{
+    switch (state.error) {
+    case ReadError::None:
+        return state.value.isOk() ? tr("OK") : ValueCodec::statusDescription(state.value.status, *m_map);
+    case ReadError::Exception:
+        return tr("Exception %1: %2").arg(state.exceptionCode).arg(m_map->exceptionMeaning(state.exceptionCode));
+    case ReadError::Mismatch:
+        return tr("Reply did not fit the request");
+    case ReadError::Disconnected:
+        return tr("Line disconnected");
+    case ReadError::Timeout:
+        return tr("No answer");
+    }
+    return {};
+}
+
+QVariant LiveValuesModel::data(const QModelIndex &index, int role) const
+{
+    if (!index.isValid() || index.row() >= m_rows.size())
+        return {};
+    const RegisterEntry &e = *m_rows.at(index.row());
+    const EntryState *state = m_bus->entryState(m_device, e.id);
+    const qint64 age = state && state->hasValue() ? m_bus->clockMs() - state->goodMs : -1;
+    const bool stale = !state || !state->isCurrent() || age > m_staleAfterMs;
+
+    switch (role) {
+    case EntryIdRole:
+        return e.id;
+    case StatusNameRole:
+        return state ? state->statusName() : QString();
+    case StaleRole:
+        return stale;
+    case AgeMsRole:
+        return age;
+    case NumericRole: {
+        if (!state || !state->isCurrent() || !state->value.isOk() || e.type == ValueType::Text)
+            return {};
+        bool ok = false;
+        const double v = state->value.value.toDouble(&ok);
+        return ok ? QVariant(v) : QVariant();
+    }
+    case ErrorValueRole:
+        return state && state->isCurrent() && !state->value.isOk();
+    case Qt::TextAlignmentRole:
+        return index.column() == ValueColumn || index.column() == AgeColumn
+                ? QVariant(Qt::AlignRight | Qt::AlignVCenter)
+                : QVariant();
+    case Qt::ToolTipRole: {
+        QString tip = tr("%1, register %2, %3").arg(e.id, formatAddress(e.address), valueTypeName(e.type));
+        if (!e.notes.isEmpty())
+            tip += QLatin1Char('\n') + e.notes;
+        return tip;
+    }
+    case Qt::DisplayRole:
+        break;
+    default:
+        return {};
+    }
+
+    switch (index.column()) {
+    case SectionColumn:
+        return QCoreApplication::translate("jumo::maps", e.group.toUtf8().constData());
+    case LabelColumn:
+        return QCoreApplication::translate("jumo::maps", e.label.toUtf8().constData());
+    case ValueColumn:
+        // Error values show as what they are, never as a number.
+        return state && state->hasValue() ? state->value.display : QString();
+    case UnitColumn:
+        return e.unit;
+    case StatusColumn:
+        return state ? statusText(*state) : tr("Not read yet");
+    case AgeColumn:
+        return age < 0 ? QString() : tr("%1 s").arg(QString::number(age / 1000.0, 'f', 1));
+    default:
+        return {};
+    }
+}
+
+QVariant LiveValuesModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case SectionColumn: return tr("Section");
+    case LabelColumn: return tr("Signal");
+    case ValueColumn: return tr("Value");
+    case UnitColumn: return tr("Unit");
+    case StatusColumn: return tr("Status");
+    case AgeColumn: return tr("Age");
+    default: return {};
+    }
+}
+
+} // namespace jumo

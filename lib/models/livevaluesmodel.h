@@ -1,0 +1,48 @@
+// The live values of one device on the bus, for a table view: section, label, value,
+// unit, status and age of every readable entry. One dataChanged per poll block.
+#pragma once
+
+#include "bus.h"
+
+#include <QAbstractTableModel>
+#include <QTimer>
+
+namespace jumo {
+
+class LiveValuesModel : public QAbstractTableModel
+{
+    Q_OBJECT
+
+public:
+    enum Column { SectionColumn, LabelColumn, ValueColumn, UnitColumn, StatusColumn, AgeColumn, ColumnCount };
+    // Colours are the view's business: it reads StaleRole and ErrorValueRole.
+    enum Role { EntryIdRole = Qt::UserRole + 1, StatusNameRole, StaleRole, AgeMsRole, ErrorValueRole,
+                NumericRole };   // double, only for a current good number
+
+    LiveValuesModel(Bus *bus, DeviceId device, QObject *parent = nullptr);
+
+    // A value older than this, or whose last read failed, is shown as stale.
+    void setStaleAfterMs(int ms) { m_staleAfterMs = ms; }
+
+    int rowCount(const QModelIndex &parent = {}) const override;
+    int columnCount(const QModelIndex &parent = {}) const override;
+    QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+
+    int rowOf(const QString &entryId) const { return m_rowOf.value(entryId, -1); }
+    QString entryId(int row) const;
+
+private:
+    void onEntriesUpdated(DeviceId device, const QStringList &ids);
+    QString statusText(const EntryState &state) const;
+
+    Bus *m_bus;
+    DeviceId m_device;
+    std::shared_ptr<const RegisterMap> m_map;
+    QList<const RegisterEntry *> m_rows;
+    QHash<QString, int> m_rowOf;
+    QTimer m_ageTimer;
+    int m_staleAfterMs = 10000;
+};
+
+} // namespace jumo

@@ -1,0 +1,44 @@
+#include "demoline.h"
+
+#include "familyregistry.h"
+
+namespace jumo {
+
+DemoLine::DemoLine(const FamilyRegistry &registry, QObject *parent) : QObject(parent)
+{
+    m_format = *LineFormat::parse(38400, QStringLiteral("8N1"));
+    quint8 address = 1;
+    for (const char *family : {"ipc300", "tya200", "quantrol", "dtron300"}) {
+        if (const auto map = registry.family(QLatin1String(family)))
+            m_simulator.addDevice(map, address++);
+    }
+    m_simulator.setTickInterval(100);
+    connect(&m_pty, &PtyPair::failed, this, &DemoLine::failed);
+    connect(&m_pty, &PtyPair::ready, this, [this] {
+        QString error;
+        if (!m_simulator.open(m_pty.deviceEnd(), m_format, &error)) {
+            emit failed(tr("the simulator cannot open %1: %2").arg(m_pty.deviceEnd(), error));
+            return;
+        }
+        emit ready(m_pty.masterEnd());
+    });
+}
+
+void DemoLine::start()
+{
+    if (!m_dir.isValid()) {
+        emit failed(tr("no temporary folder for the demo line"));
+        return;
+    }
+    m_pty.start(m_dir.path());
+}
+
+QList<QPair<QString, quint8>> DemoLine::devices() const
+{
+    QList<QPair<QString, quint8>> out;
+    for (SimulatedDevice *d : m_simulator.devices())
+        out << qMakePair(d->map().family, d->address());
+    return out;
+}
+
+} // namespace jumo

@@ -1,0 +1,182 @@
+// The HMI's real widgets, offscreen, against the simulator over a pty line: connect,
+// scan and live values; an alarm LED; a setpoint confirmed by read-back; read-only mode;
+// an error value shown as what it is.
+#include "connectionbar.h"
+#include "controlrow.h"
+#include "controlspanel.h"
+#include "devicepage.h"
+#include "devicetile.h"
+#include "ledgrid.h"
+#include "ledindicator.h"
+#include "livevaluesview.h"
+#include "mainwindow.h"
+#include "scandialog.h"
+#include "testpeers.h"
+
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTest>
+
+using namespace jumo;
+using namespace jumo::test;
+
+class tst_Hmi : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void connectScanAndSeeLiveValuesMove();
+    void alarmLedTurnsOn();
+    void setpointIsConfirmedByReadBack();
+    void readOnlyDisablesControlsAndSendsNothing();
+    void errorValueShowsAsOverrange();
+
+private:
+    // A window connected to the line with the IPC 300 at address 1 on its page.
+    std::unique_ptr<MainWindow> connectedWindow(bool readOnly);
+
+    QTemporaryDir m_dir;
+    TestLine m_line;
+    SimulatorPeer m_sim;
+};
+
+void tst_Hmi::initTestCase()
+{
+    QVERIFY(m_line.start());
+    QVERIFY(m_sim.startOneOfEachFamily(m_line.deviceEnd()));
+}
+
+std::unique_ptr<MainWindow> tst_Hmi::connectedWindow(bool readOnly)
+{
+    MainWindow::Options options;
+    options.readOnly = readOnly;
+    options.settingsFile = m_dir.filePath(QStringLiteral("settings-%1.ini").arg(readOnly));
+    auto window = std::make_unique<MainWindow>(families(), options);
+    window->connectionBar()->setSettings(m_line.masterEnd(), 19200, "8N1");
+    if (!window->connectLine())
+        return nullptr;
+    window->addDevice(families().family("ipc300"), 1);
+    window->showDevice("ipc300", 1);
+    window->show();
+    return window;
+}
+
+void tst_Hmi::connectScanAndSeeLiveValuesMove()
+{
+    MainWindow::Options options;
+    options.settingsFile = m_dir.filePath("scan.ini");
+    MainWindow window(families(), options);
+    window.show();
+    window.connectionBar()->setSettings(m_line.masterEnd(), 19200, "8N1");
+    auto *connectButton = window.findChild<QPushButton *>("connectButton");
+    QVERIFY(connectButton);
+    QTest::mouseClick(connectButton, Qt::LeftButton);
+    QTRY_COMPARE(window.bus()->state(), LineState::Connected);
+    QVERIFY(window.findChild<QLabel *>("lineState")->text().contains(m_line.masterEnd()));
+
+    QTest::mouseClick(window.findChild<QPushButton *>("scanButton"), Qt::LeftButton);
+    auto *dialog = window.findChild<ScanDialog *>("scanDialog");
+    QVERIFY(dialog);
+    dialog->findChild<QSpinBox *>("fromBox")->setValue(1);
+    dialog->findChild<QSpinBox *>("toBox")->setValue(6);
+    QTest::mouseClick(dialog->findChild<QPushButton *>("startScan"), Qt::LeftButton);
+    auto *found = dialog->findChild<QListWidget *>("foundList");
+    QTRY_VERIFY_WITH_TIMEOUT(!dialog->isScanning() && found->count() == 4, 30000);
+    dialog->accept();
+    for (const auto &[family, address] : QList<QPair<QString, int>>{{"ipc300", 1}, {"tya200", 2}, {"quantrol", 3}, {"dtron300", 4}})
+        QVERIFY2(window.devicePage(family, quint8(address)), qPrintable(family));
+
+    // The overview tiles show key values while the overview is on screen.
+    QTRY_VERIFY_WITH_TIMEOUT(window.deviceTile("quantrol", 3)->valuesText().contains("Controller, setpoint: 120"), 20000);
+    DevicePage *page = window.devicePage("quantrol", 3);
+    window.showDevice(page);
+    LiveValuesView *view = page->valuesView();
+    QTRY_VERIFY_WITH_TIMEOUT(!view->displayedValue("actual_value_unfiltered").isEmpty(), 20000);
+    const QString first = view->displayedValue("actual_value_unfiltered");
+    // The process value moves towards the setpoint (and carries noise): it changes.
+    QTRY_VERIFY_WITH_TIMEOUT(view->displayedValue("actual_value_unfiltered") != first, 20000);
+}
+
+void tst_Hmi::alarmLedTurnsOn()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    DevicePage *page = window->devicePage("ipc300", 1);
+    page->tabs()->setCurrentWidget(page->ledGrid());
+    LedIndicator *led = page->ledGrid()->indicator("malfunction_signal_1.fuse_failure");
+    QVERIFY(led);
+    QCOMPARE(led->objectName(), QString("led_malfunction_signal_1.fuse_failure"));
+    QVERIFY(led->toolTip().contains("0x00ED"));
+    QVERIFY(led->toolTip().contains("bit 7"));
+    QTRY_VERIFY_WITH_TIMEOUT(led->isCurrent(), 20000);
+    QVERIFY(!led->isOn());
+    m_sim.line().device(1)->setFlag("malfunction_signal_1.fuse_failure", true);
+    QTRY_VERIFY_WITH_TIMEOUT(led->isOn(), 20000);
+    QVERIFY(page->ledGrid()->findChild<QLabel *>("activeAlarms")->text().startsWith("1 "));
+    m_sim.line().device(1)->setFlag("malfunction_signal_1.fuse_failure", false);
+    QTRY_VERIFY_WITH_TIMEOUT(!led->isOn(), 20000);
+}
+
+void tst_Hmi::setpointIsConfirmedByReadBack()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    ControlRow *row = window->devicePage("ipc300", 1)->controls()->row("input_setpoint");
+    QVERIFY(row);
+    row->setInputValue("37.5");
+    QTest::mouseClick(row->findChild<QPushButton *>("write_input_setpoint"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(row->stateText().startsWith("Confirmed"), 20000);
+    QVERIFY2(row->stateText().contains("37.5"), qPrintable(row->stateText()));
+    QCOMPARE(m_sim.line().device(1)->number("input_setpoint"), 37.5);
+
+    // Out of range: refused on the spot, nothing is written.
+    const int before = m_sim.writeFrames();
+    row->setInputValue("120");
+    QTest::mouseClick(row->findChild<QPushButton *>("write_input_setpoint"), Qt::LeftButton);
+    QVERIFY2(row->stateText().startsWith("Not written"), qPrintable(row->stateText()));
+    QTest::qWait(300);
+    QCOMPARE(m_sim.writeFrames(), before);
+}
+
+void tst_Hmi::readOnlyDisablesControlsAndSendsNothing()
+{
+    const int before = m_sim.writeFrames();
+    auto window = connectedWindow(true);
+    QVERIFY(window);
+    QVERIFY(window->windowTitle().contains("read-only"));
+    DevicePage *page = window->devicePage("ipc300", 1);
+    QVERIFY(page->findChild<QLabel *>("readOnlyBanner")->isVisibleTo(page));
+    const QList<ControlRow *> rows = page->findChildren<ControlRow *>();
+    QVERIFY(rows.size() > 10);
+    for (ControlRow *row : rows) {
+        for (QPushButton *button : row->findChildren<QPushButton *>())
+            QVERIFY2(!button->isEnabled(), qPrintable(row->objectName()));
+    }
+    // Even when asked directly, nothing goes out.
+    ControlRow *row = page->controls()->row("input_setpoint");
+    row->setInputValue("12");
+    row->writeInput();
+    QTRY_VERIFY_WITH_TIMEOUT(!page->valuesView()->displayedValue("load_current").isEmpty(), 20000);
+    QTest::qWait(500);
+    QCOMPARE(m_sim.writeFrames(), before);
+}
+
+void tst_Hmi::errorValueShowsAsOverrange()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    LiveValuesView *view = window->devicePage("ipc300", 1)->valuesView();
+    m_sim.line().device(1)->forceStatus("load_current", ValueStatus::Overrange);
+    m_sim.line().device(1)->forceStatus("power", ValueStatus::Invalid);
+    QTRY_COMPARE_WITH_TIMEOUT(view->displayedValue("load_current"), QString("Overrange"), 20000);
+    QTRY_COMPARE_WITH_TIMEOUT(view->displayedValue("power"), QString("Invalid"), 20000);
+    QVERIFY(!view->displayedValue("load_current").contains("inf", Qt::CaseInsensitive));
+    m_sim.line().device(1)->forceStatus("load_current", ValueStatus::Ok);
+    m_sim.line().device(1)->forceStatus("power", ValueStatus::Ok);
+}
+
+QTEST_MAIN(tst_Hmi)
+#include "tst_hmi.moc"

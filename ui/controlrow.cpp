@@ -1,0 +1,252 @@
+#include "controlrow.h"
+
+#include "bus.h"
+#include "livevaluesmodel.h"
+#include "valuecodec.h"
+#include "writecommand.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QDoubleValidator>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+
+namespace jumo {
+
+namespace {
+
+QString translatedLabel(const QString &label)
+{
+    return QCoreApplication::translate("jumo::maps", label.toUtf8().constData());
+}
+
+// Writes that change what the device drives ask first.
+bool changesOutputs(const RegisterEntry &e)
+{
+    static const QStringList controls{"analog_output", "digital_output", "external_input", "binary_outputs",
+                                      "command", "override", "alpha"};
+    return controls.contains(e.control);
+}
+
+} // namespace
+
+ControlRow::ControlRow(Bus *bus, int device, const RegisterMap &map, const RegisterEntry &entry, LiveValuesModel *values,
+                       QWidget *parent)
+    : QWidget(parent), m_map(map), m_entry(entry), m_values(values),
+      m_command(new WriteCommand(bus, device, entry.id, this)), m_current(new QLabel(this)), m_state(new QLabel(this))
+{
+    setObjectName(QStringLiteral("control_") + entry.id);
+    m_state->setObjectName(QStringLiteral("state_") + entry.id);
+    m_state->setWordWrap(true);
+    auto *layout = new QGridLayout(this);
+    layout->setContentsMargins(0, 2, 0 , 2);
+    auto *title = new QLabel(QStringLiteral("<b>%1</b> <span style='color:gray'>%2</span>")
+                                     .arg(translatedLabel(entry.label).toHtmlEscaped(), formatAddress(entry.address)),
+                             this);
+    layout->addWidget(title, 0, 0, 1, 3);
+    QStringList hints;
+    if (!entry.precondition.isEmpty())
+        hints << tr("Precondition: %1").arg(translatedLabel(entry.precondition));
+    if (entry.storage == Storage::Eeprom)
+        hints << tr("Stored in EEPROM: about 10,000 write cycles, write only when needed.");
+    else if (entry.storage == Storage::Ram)
+        hints << tr("Stored in RAM: lost when the device is switched off.");
+    if (!hints.isEmpty()) {
+        auto *hint = new QLabel(hints.join(QLatin1Char('\n')), this);
+        hint->setWordWrap(true);
+        hint->setStyleSheet(QStringLiteral("color: gray"));
+        layout->addWidget(hint, 1, 0, 1, 3);
+    }
+
+    auto *inputs = new QHBoxLayout;
+    if (entry.type == ValueType::Bitfield && entry.control == QLatin1String("command")) {
+        for (const BitDefinition &b : entry.bits) {
+            if (b.reserved || (entry.activationMask && b.mask() == *entry.activationMask) || b.width != 1)
+                continue;
+            auto *button = new QPushButton(translatedLabel(b.label), this);
+            button->setObjectName(QStringLiteral("command_%1_%2").arg(entry.id, b.id));
+            connect(button, &QPushButton::clicked, this, [this, b] {
+                write(b.id, tr("send the command \"%1\"").arg(translatedLabel(b.label)));
+            });
+            inputs->addWidget(button);
+            m_buttons << button;
+        }
+    } else if (entry.type == ValueType::Bitfield) {
+        for (const BitDefinition &b : entry.bits) {
+            if (b.reserved || (entry.activationMask && b.mask() == *entry.activationMask) || b.width != 1)
+                continue;
+            auto *box = new QCheckBox(translatedLabel(b.label), this);
+            box->setProperty("bitId", b.id);
+            inputs->addWidget(box);
+            m_bits << box;
+        }
+    } else if (entry.type == ValueType::Bool || entry.type == ValueType::Enum) {
+        m_choice = new QComboBox(this);
+        if (entry.type == ValueType::Bool) {
+            m_choice->addItem(tr("Off"), QStringLiteral("0"));
+            m_choice->addItem(tr("On"), QStringLiteral("1"));
+        } else {
+            for (auto it = entry.enumValues.cbegin(); it != entry.enumValues.cend(); ++it)
+                m_choice->addItem(translatedLabel(it.value()), QString::number(it.key()));
+        }
+        inputs->addWidget(m_choice);
+    } else {
+        m_edit = new QLineEdit(this);
+        m_edit->setObjectName(QStringLiteral("input_") + entry.id);
+        QString range;
+        if (entry.minimum || entry.maximum)
+            range = tr("%1 to %2").arg(entry.minimum ? ValueCodec::formatFloat(*entry.minimum) : QStringLiteral("..."),
+                                       entry.maximum ? ValueCodec::formatFloat(*entry.maximum) : QStringLiteral("..."));
+        m_edit->setPlaceholderText(range.isEmpty() ? entry.unit : range + QLatin1Char(' ') + entry.unit);
+        connect(m_edit, &QLineEdit::returnPressed, this, &ControlRow::writeInput);
+        inputs->addWidget(m_edit);
+        auto *unit = new QLabel(entry.unit, this);
+        inputs->addWidget(unit);
+    }
+    if (m_buttons.isEmpty()) {
+        m_writeButton = new QPushButton(tr("Write"), this);
+        m_writeButton->setObjectName(QStringLiteral("write_") + entry.id);
+        connect(m_writeButton, &QPushButton::clicked, this, &ControlRow::writeInput);
+        inputs->addWidget(m_writeButton);
+    }
+    if (entry.restoreValue) {
+        m_restoreButton = new QPushButton(tr("Back to the device's own value"), this);
+        m_restoreButton->setObjectName(QStringLiteral("restore_") + entry.id);
+        connect(m_restoreButton, &QPushButton::clicked, this, [this] {
+            write(ValueCodec::formatFloat(*m_entry.restoreValue), tr("hand %1 back to the device").arg(translatedLabel(m_entry.label)));
+        });
+        inputs->addWidget(m_restoreButton);
+    }
+    inputs->addStretch();
+    layout->addLayout(inputs, 2, 0, 1, 3);
+    layout->addWidget(m_current, 3, 0);
+    layout->addWidget(m_state, 3, 1, 1, 2);
+
+    connect(m_command, &WriteCommand::stateChanged, this, [this](WriteCommand::State state, const QString &message) {
+        switch (state) {
+        case WriteCommand::State::Pending:
+            m_state->setStyleSheet(QStringLiteral("color: #806000"));
+            m_state->setText(tr("Pending: %1").arg(message));
+            break;
+        case WriteCommand::State::Confirmed:
+            m_state->setStyleSheet(QStringLiteral("color: #207020"));
+            m_state->setText(tr("Confirmed: %1").arg(message));
+            break;
+        case WriteCommand::State::Refused:
+            m_state->setStyleSheet(QStringLiteral("color: #b00000"));
+            m_state->setText(tr("Refused: %1").arg(message));
+            break;
+        case WriteCommand::State::Idle:
+            m_state->clear();
+            break;
+        }
+    });
+    if (m_values) {
+        connect(m_values, &QAbstractItemModel::dataChanged, this, &ControlRow::refreshCurrent);
+        refreshCurrent();
+    }
+}
+
+void ControlRow::refreshCurrent()
+{
+    if (!isVisible()) {
+        m_dirty = true;   // caught up in showEvent()
+        return;
+    }
+    m_dirty = false;
+    const int row = m_values->rowOf(m_entry.id);
+    if (row < 0) {
+        m_current->setText(m_entry.isReadable() ? QString() : tr("Write-only: the device cannot report it."));
+        return;
+    }
+    const QString value = m_values->index(row, LiveValuesModel::ValueColumn).data().toString();
+    m_current->setText(tr("Device: %1 %2").arg(value.isEmpty() ? tr("not read yet") : value, m_entry.unit));
+}
+
+void ControlRow::setReadOnly(bool readOnly)
+{
+    m_readOnly = readOnly;
+    for (QWidget *w : findChildren<QWidget *>()) {
+        if (qobject_cast<QLineEdit *>(w) || qobject_cast<QComboBox *>(w) || qobject_cast<QCheckBox *>(w)
+            || qobject_cast<QPushButton *>(w))
+            w->setEnabled(!readOnly);
+    }
+    setToolTip(readOnly ? tr("Read-only mode: nothing is written to the devices.") : QString());
+}
+
+QString ControlRow::inputValue() const
+{
+    if (m_edit)
+        return m_edit->text().trimmed();
+    if (m_choice)
+        return m_choice->currentData().toString();
+    QStringList on;
+    for (QCheckBox *box : m_bits) {
+        if (box->isChecked())
+            on << box->property("bitId").toString();
+    }
+    return on.isEmpty() ? QStringLiteral("0") : on.join(QLatin1Char('+'));
+}
+
+void ControlRow::setInputValue(const QString &value)
+{
+    if (m_edit)
+        m_edit->setText(value);
+    if (m_choice)
+        m_choice->setCurrentIndex(std::max(0, m_choice->findData(value)));
+    for (QCheckBox *box : m_bits)
+        box->setChecked(value.split(QLatin1Char('+')).contains(box->property("bitId").toString()));
+}
+
+QString ControlRow::stateText() const
+{
+    return m_state->text();
+}
+
+void ControlRow::writeInput()
+{
+    const QString value = inputValue();
+    if (value.isEmpty())
+        return;
+    write(value, tr("write %1 = %2 %3").arg(translatedLabel(m_entry.label), value, m_entry.unit));
+}
+
+bool ControlRow::confirm(const QString &description) const
+{
+    if (!changesOutputs(m_entry))
+        return true;
+    // A modal question only ever answers an action the user just started.
+    return QMessageBox::question(window(), tr("Confirm write"),
+                                 tr("Do you want to %1 on the device?\nThis changes what the device drives.").arg(description))
+            == QMessageBox::Yes;
+}
+
+void ControlRow::write(const QString &value, const QString &description)
+{
+    if (m_readOnly)
+        return;
+    // Check before asking: a value the device would refuse never gets a confirmation.
+    const EncodeResult check = ValueCodec::encode(m_entry, m_map, value);
+    if (!check.ok()) {
+        m_state->setStyleSheet(QStringLiteral("color: #b00000"));
+        m_state->setText(tr("Not written: %1").arg(check.error));
+        return;
+    }
+    if (!confirm(description))
+        return;
+    m_command->write(value);
+}
+
+void ControlRow::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    if (m_dirty)
+        refreshCurrent();
+}
+
+} // namespace jumo

@@ -1,0 +1,62 @@
+// One control of a device page: the input that fits the entry (number, on/off, choice,
+// output bits, command buttons), a write button, the current value, and the state of
+// the last write with the device's answer.
+#pragma once
+
+#include <QWidget>
+
+class QLabel;
+class QLineEdit;
+class QComboBox;
+class QCheckBox;
+class QPushButton;
+
+namespace jumo {
+
+class Bus;
+class LiveValuesModel;
+class WriteCommand;
+struct RegisterEntry;
+class RegisterMap;
+
+class ControlRow : public QWidget
+{
+    Q_OBJECT
+
+public:
+    ControlRow(Bus *bus, int device, const RegisterMap &map, const RegisterEntry &entry, LiveValuesModel *values,
+               QWidget *parent = nullptr);
+
+    void setReadOnly(bool readOnly);
+    // The value as the input holds it now (for tests and confirmations).
+    QString inputValue() const;
+    void setInputValue(const QString &value);
+    // Writes the input's value, after a confirmation where the write changes outputs.
+    void writeInput();
+    QString stateText() const;
+
+protected:
+    void showEvent(QShowEvent *event) override;
+
+private:
+    bool m_dirty = true;
+    void write(const QString &value, const QString &description);
+    bool confirm(const QString &description) const;
+    void refreshCurrent();
+
+    const RegisterMap &m_map;
+    const RegisterEntry &m_entry;
+    LiveValuesModel *m_values;
+    WriteCommand *m_command;
+    QLineEdit *m_edit = nullptr;
+    QComboBox *m_choice = nullptr;
+    QList<QCheckBox *> m_bits;
+    QList<QPushButton *> m_buttons;
+    QPushButton *m_writeButton = nullptr;
+    QPushButton *m_restoreButton = nullptr;
+    QLabel *m_current;
+    QLabel *m_state;
+    bool m_readOnly = false;
+};
+
+} // namespace jumo

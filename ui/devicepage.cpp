@@ -1,0 +1,75 @@
+#include "devicepage.h"
+
+#include "alarmbitsmodel.h"
+#include "bus.h"
+#include "controlspanel.h"
+#include "identitypanel.h"
+#include "ledgrid.h"
+#include "livevaluesmodel.h"
+#include "livevaluesview.h"
+#include "trendview.h"
+
+#include <QLabel>
+#include <QTabWidget>
+#include <QVBoxLayout>
+
+namespace jumo {
+
+DevicePage::DevicePage(Bus *bus, int device, LiveValuesModel *values, AlarmBitsModel *alarms, QWidget *parent)
+    : QWidget(parent), m_device(device), m_values(values), m_alarms(alarms), m_tabs(new QTabWidget(this)),
+      m_readOnlyBanner(new QLabel(this))
+{
+    const RegisterMap &map = *bus->deviceMap(device);
+    setObjectName(QStringLiteral("device_%1_%2").arg(map.family).arg(bus->deviceAddress(device)));
+    m_readOnlyBanner->setObjectName(QStringLiteral("readOnlyBanner"));
+    m_readOnlyBanner->setText(tr("Read-only mode: values are shown, nothing is written to the device."));
+    m_readOnlyBanner->setStyleSheet(QStringLiteral("background: #fff3c0; color: #604000; padding: 4px"));
+    m_readOnlyBanner->hide();
+
+    auto *valuesTab = new QWidget(this);
+    auto *valuesLayout = new QVBoxLayout(valuesTab);
+    valuesLayout->addWidget(new IdentityPanel(map, bus->deviceAddress(device), m_values, valuesTab));
+    m_valuesView = new LiveValuesView(m_values, valuesTab);
+    m_valuesView->setObjectName(QStringLiteral("liveValues"));
+    valuesLayout->addWidget(m_valuesView);
+    m_tabs->addTab(valuesTab, tr("Live values"));
+
+    m_leds = new LedGrid(m_alarms, this);
+    const int alarmsTab = m_tabs->addTab(m_leds, tr("Alarms and status"));
+    auto showCount = [this, alarmsTab](int count) {
+        m_tabs->setTabText(alarmsTab, count ? tr("Alarms and status (%1)").arg(count) : tr("Alarms and status"));
+    };
+    connect(m_alarms, &AlarmBitsModel::activeAlarmsChanged, this, showCount);
+    showCount(m_alarms->activeAlarms());
+
+    m_controls = new ControlsPanel(bus, device, map,
+                                   {"setpoint", "analog_output", "digital_output", "external_input", "alpha",
+                                    "setpoint_select", "parameter_set_select", "binary_outputs", "command", "override"},
+                                   m_values, this);
+    m_tabs->addTab(m_controls, tr("Controls"));
+    m_parameters = new ControlsPanel(bus, device, map, {"parameter"}, m_values, this);
+    m_tabs->addTab(m_parameters, tr("Parameters"));
+    auto *program = new ControlsPanel(bus, device, map, {"program"}, m_values, this);
+    if (program->isEmpty()) {
+        delete program;
+    } else {
+        m_program = program;
+        m_tabs->addTab(m_program, tr("Program"));
+    }
+    m_tabs->addTab(new TrendView(m_values, this), tr("Trend"));
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_readOnlyBanner);
+    layout->addWidget(m_tabs);
+}
+
+void DevicePage::setReadOnly(bool readOnly)
+{
+    m_readOnlyBanner->setVisible(readOnly);
+    m_controls->setReadOnly(readOnly);
+    m_parameters->setReadOnly(readOnly);
+    if (m_program)
+        m_program->setReadOnly(readOnly);
+}
+
+} // namespace jumo

@@ -1,0 +1,51 @@
+// The page of one device, built entirely from its family's map: identity and live
+// values, LED grid, controls, parameters, program (where the family has one), trend.
+#pragma once
+
+#include <QWidget>
+
+class QLabel;
+class QTabWidget;
+
+namespace jumo {
+
+class AlarmBitsModel;
+class Bus;
+class ControlsPanel;
+class LedGrid;
+class LiveValuesModel;
+class LiveValuesView;
+class TrendView;
+
+class DevicePage : public QWidget
+{
+    Q_OBJECT
+
+public:
+    // The models belong to the caller: they outlive the page, which is made when first shown.
+    DevicePage(Bus *bus, int device, LiveValuesModel *values, AlarmBitsModel *alarms, QWidget *parent = nullptr);
+
+    void setReadOnly(bool readOnly);
+    int device() const { return m_device; }
+    LiveValuesModel *values() const { return m_values; }
+    AlarmBitsModel *alarms() const { return m_alarms; }
+    LiveValuesView *valuesView() const { return m_valuesView; }
+    LedGrid *ledGrid() const { return m_leds; }
+    ControlsPanel *controls() const { return m_controls; }
+    ControlsPanel *parameters() const { return m_parameters; }
+    QTabWidget *tabs() const { return m_tabs; }
+
+private:
+    int m_device;
+    LiveValuesModel *m_values;
+    AlarmBitsModel *m_alarms;
+    QTabWidget *m_tabs;
+    LiveValuesView *m_valuesView;
+    LedGrid *m_leds;
+    ControlsPanel *m_controls;
+    ControlsPanel *m_parameters;
+    ControlsPanel *m_program = nullptr;
+    QLabel *m_readOnlyBanner;
+};
+
+} // namespace jumo

@@ -1,0 +1,409 @@
+#include "mainwindow.h"
+
+#include "adddevicedialog.h"
+#include "alarmbitsmodel.h"
+#include "connectionbar.h"
+#include "demoline.h"
+#include "devicepage.h"
+#include "devicetile.h"
+#include "familyregistry.h"
+#include "livevaluesmodel.h"
+#include "overviewpage.h"
+#include "scandialog.h"
+#include "trafficview.h"
+
+#include <QApplication>
+#include <QCloseEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSplitter>
+#include <QStackedWidget>
+#include <QStatusBar>
+#include <QTimer>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+namespace jumo {
+
+namespace {
+
+constexpr int overviewRow = 0;
+constexpr int trafficRow = 1;
+constexpr int firstDeviceRow = 2;
+
+} // namespace
+
+MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, QWidget *parent)
+    : QMainWindow(parent), m_registry(registry), m_options(options), m_connectionBar(new ConnectionBar(this)),
+      m_navigation(new QListWidget(this)), m_pages(new QStackedWidget(this)), m_overview(new OverviewPage(this)),
+      m_traffic(new TrafficView(&m_bus, this)), m_lineStatus(new QLabel(this)), m_loadStatus(new QLabel(this)),
+      m_errorStatus(new QLabel(this))
+{
+    setObjectName(QStringLiteral("mainWindow"));
+    // An administrator can fix read-only mode for a control room in the system-wide
+    // configuration; the command line cannot lift it.
+    const QSettings system(QSettings::SystemScope, QStringLiteral("jumo"), QStringLiteral("jumo-hmi"));
+    m_readOnly = options.readOnly || system.value(QStringLiteral("readOnly"), false).toBool();
+    m_bus.setReadOnly(m_readOnly);
+    setWindowTitle(m_readOnly ? tr("JUMO HMI [read-only]") : tr("JUMO HMI"));
+
+    auto *toolbar = addToolBar(tr("Connection"));
+    toolbar->setObjectName(QStringLiteral("connectionToolBar"));
+    toolbar->setMovable(false);
+    toolbar->addWidget(m_connectionBar);
+    connect(m_connectionBar, &ConnectionBar::connectRequested, this, [this] {
+        if (!connectLine())
+            QMessageBox::warning(this, tr("Connect"), m_bus.lastError());
+    });
+    connect(m_connectionBar, &ConnectionBar::disconnectRequested, this, &MainWindow::disconnectLine);
+
+    m_navigation->setObjectName(QStringLiteral("navigation"));
+    m_navigation->addItem(tr("Overview"));
+    m_navigation->addItem(tr("Traffic and statistics"));
+    m_pages->addWidget(m_overview);
+    m_pages->addWidget(m_traffic);
+    connect(m_navigation, &QListWidget::currentRowChanged, this, &MainWindow::onNavigation);
+    auto *addButton = new QPushButton(tr("Add..."), this);
+    auto *scanButton = new QPushButton(tr("Scan..."), this);
+    auto *removeButton = new QPushButton(tr("Remove"), this);
+    addButton->setObjectName(QStringLiteral("addDeviceButton"));
+    scanButton->setObjectName(QStringLiteral("scanButton"));
+    removeButton->setObjectName(QStringLiteral("removeDeviceButton"));
+    connect(addButton, &QPushButton::clicked, this, [this] {
+        AddDeviceDialog dialog(m_registry, this);
+        if (dialog.exec() == QDialog::Accepted && dialog.family()) {
+            addDevice(dialog.family(), dialog.address());
+            showDevice(dialog.family()->family, dialog.address());
+        }
+    });
+    connect(scanButton, &QPushButton::clicked, this, &MainWindow::openScanDialog);
+    connect(removeButton, &QPushButton::clicked, this, &MainWindow::removeCurrentDevice);
+    auto *side = new QWidget(this);
+    auto *sideLayout = new QVBoxLayout(side);
+    sideLayout->setContentsMargins(0, 0, 0, 0);
+    sideLayout->addWidget(m_navigation);
+    auto *sideButtons = new QHBoxLayout;
+    sideButtons->addWidget(addButton);
+    sideButtons->addWidget(scanButton);
+    sideButtons->addWidget(removeButton);
+    sideLayout->addLayout(sideButtons);
+    auto *split = new QSplitter(this);
+    split->setObjectName(QStringLiteral("mainSplitter"));
+    split->addWidget(side);
+    split->addWidget(m_pages);
+    split->setStretchFactor(1, 4);
+    setCentralWidget(split);
+
+    m_lineStatus->setObjectName(QStringLiteral("lineStatus"));
+    m_loadStatus->setObjectName(QStringLiteral("loadStatus"));
+    m_errorStatus->setObjectName(QStringLiteral("errorStatus"));
+    statusBar()->addWidget(m_lineStatus);
+    statusBar()->addWidget(m_loadStatus);
+    statusBar()->addWidget(m_errorStatus, 1);
+    if (m_readOnly) {
+        auto *mode = new QLabel(tr("READ-ONLY"), this);
+        mode->setObjectName(QStringLiteral("readOnlyIndicator"));
+        mode->setStyleSheet(QStringLiteral("background: #fff3c0; color: #604000; padding: 0 6px; font-weight: bold"));
+        statusBar()->addPermanentWidget(mode);
+    }
+    connect(&m_bus, &Bus::stateChanged, this, &MainWindow::onStateChanged);
+    connect(&m_bus, &Bus::lineError, this, [this](const QString &message) { m_lastError = message; });
+    connect(&m_bus, &Bus::traffic, this, [this](const TrafficRecord &record) {
+        if (!record.error.isEmpty())
+            m_lastError = tr("address %1: %2").arg(record.slave).arg(record.error);
+    });
+    connect(&m_bus, &Bus::onlineChanged, this, [this](DeviceId id, bool online) {
+        for (const DeviceEntry &d : std::as_const(m_devices)) {
+            if (d.id == id)
+                d.tile->setOnline(online);
+        }
+    });
+    auto *statusTimer = new QTimer(this);
+    connect(statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
+    statusTimer->start(1000);
+
+    buildMenus();
+    onStateChanged(LineState::Disconnected);
+    m_navigation->setCurrentRow(overviewRow);
+    resize(1280, 800);
+    if (options.demo)
+        startDemo();
+    else
+        restoreSettings();
+}
+
+MainWindow::~MainWindow()
+{
+    // The client goes first, then the simulator, then socat.
+    m_bus.close();
+}
+
+QSettings &MainWindow::settings()
+{
+    if (!m_settings) {
+        m_settings = m_options.settingsFile.isEmpty()
+                ? std::make_unique<QSettings>(QStringLiteral("jumo"), QStringLiteral("jumo-hmi"))
+                : std::make_unique<QSettings>(m_options.settingsFile, QSettings::IniFormat);
+    }
+    return *m_settings;
+}
+
+void MainWindow::buildMenus()
+{
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    QMenu *devices = menuBar()->addMenu(tr("&Devices"));
+    devices->addAction(tr("&Scan the line..."), this, &MainWindow::openScanDialog);
+    devices->addAction(tr("&Remove the shown device"), this, &MainWindow::removeCurrentDevice);
+    QMenu *language = menuBar()->addMenu(tr("&Language"));
+    for (const auto &[code, name] : {std::pair{"", QT_TR_NOOP("System language")}, std::pair{"en", "English"},
+                                     std::pair{"de", "Deutsch"}}) {
+        QAction *action = language->addAction(code[0] ? QString::fromUtf8(name) : tr(name));
+        action->setCheckable(true);
+        action->setChecked(settings().value(QStringLiteral("language")).toString() == QLatin1String(code));
+        connect(action, &QAction::triggered, this, [this, code = QString::fromLatin1(code)] {
+            settings().setValue(QStringLiteral("language"), code);
+            QMessageBox::information(this, tr("Language"), tr("The language changes when the HMI is started again."));
+        });
+    }
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About"), this, [this] {
+        QMessageBox::about(this, tr("About JUMO HMI"),
+                           tr("JUMO HMI %1\nCommissioning and monitoring of JUMO power and process controllers "
+                              "over Modbus RTU.")
+                                   .arg(QApplication::applicationVersion()));
+    });
+}
+
+void MainWindow::startDemo()
+{
+    m_demo = std::make_unique<DemoLine>(m_registry);
+    connect(m_demo.get(), &DemoLine::failed, this, [this](const QString &reason) {
+        m_lineStatus->setText(tr("Demo line failed: %1").arg(reason));
+    });
+    connect(m_demo.get(), &DemoLine::ready, this, [this](const QString &port) {
+        const LineFormat f = m_demo->format();
+        m_connectionBar->setSettings(port, f.baudRate, f.formatName());
+        if (!connectLine()) {
+            m_lineStatus->setText(m_bus.lastError());
+            return;
+        }
+        for (const auto &[family, address] : m_demo->devices())
+            addDevice(m_registry.family(family), address);
+        emit demoReady();
+    });
+    m_lineStatus->setText(tr("Starting the simulated demo line..."));
+    m_demo->start();
+}
+
+bool MainWindow::connectLine()
+{
+    BusSettings s = m_bus.settings();
+    s.portName = m_connectionBar->port();
+    const std::optional<LineFormat> format = LineFormat::parse(m_connectionBar->baud(), m_connectionBar->format());
+    if (!format || s.portName.isEmpty()) {
+        QMessageBox::warning(this, tr("Connect"), tr("Choose or type a serial port first."));
+        return false;
+    }
+    s.format = *format;
+    s.readOnly = m_readOnly;
+    m_bus.setSettings(s);
+    return m_bus.open();
+}
+
+void MainWindow::disconnectLine()
+{
+    m_bus.close();
+}
+
+void MainWindow::onStateChanged(LineState state)
+{
+    switch (state) {
+    case LineState::Connected:
+        m_connectionBar->setConnected(true, tr("Connected to %1").arg(m_bus.settings().portName));
+        break;
+    case LineState::Lost:
+        m_connectionBar->setConnected(true, tr("Line lost, waiting for the port to come back..."));
+        break;
+    case LineState::Disconnected:
+        m_connectionBar->setConnected(false, tr("Disconnected"));
+        break;
+    }
+    updateStatus();
+}
+
+void MainWindow::updateStatus()
+{
+    int requests = 0;
+    int errors = 0;
+    for (DeviceId id : m_bus.devices()) {
+        const DeviceStatistics *s = m_bus.statistics(id);
+        requests += s->requests;
+        errors += s->timeouts + s->crcErrors + s->mismatches;
+        for (int n : s->exceptions)
+            errors += n;
+    }
+    const int perSecond = requests - m_requestsAtLastStatus;
+    m_requestsAtLastStatus = requests;
+    m_lineStatus->setText(m_bus.state() == LineState::Connected ? tr("Line: %1").arg(m_bus.settings().portName)
+                                                                : m_connectionBar->findChild<QLabel *>(QStringLiteral("lineState"))->text());
+    m_loadStatus->setText(tr("%1 requests/s").arg(perSecond));
+    // Repeated errors are throttled: the newest one, at most once every 5 s.
+    const qint64 now = m_bus.clockMs();
+    if (!m_lastError.isEmpty() && (m_lastErrorShownMs < 0 || now - m_lastErrorShownMs >= 5000)) {
+        m_errorStatus->setText(tr("%n error(s); last: %1", nullptr, errors).arg(m_lastError));
+        m_lastErrorShownMs = now;
+        m_lastError.clear();
+    } else if (errors == 0) {
+        m_errorStatus->setText(tr("no errors"));
+    }
+}
+
+bool MainWindow::addDevice(std::shared_ptr<const RegisterMap> map, quint8 address)
+{
+    if (!map || deviceTile(map->family, address))
+        return false;
+    const DeviceId id = m_bus.addDevice(map, address);
+    auto *values = new LiveValuesModel(&m_bus, id, this);
+    auto *alarms = new AlarmBitsModel(&m_bus, id, this);
+    auto *tile = new DeviceTile(*map, address, values, alarms, m_overview);
+    m_overview->addTile(tile);
+    m_navigation->addItem(QStringLiteral("%1 @ %2").arg(map->name).arg(address));
+    m_devices << DeviceEntry{id, values, alarms, tile, nullptr};
+    const int index = int(m_devices.size()) - 1;
+    connect(tile, &DeviceTile::activated, this, [this, index] { m_navigation->setCurrentRow(firstDeviceRow + index); });
+    return true;
+}
+
+void MainWindow::showDevice(const QString &family, quint8 address)
+{
+    showDevice(devicePage(family, address));
+}
+
+DevicePage *MainWindow::ensurePage(int index) const
+{
+    DeviceEntry &d = m_devices[index];
+    if (!d.page) {
+        d.page = new DevicePage(const_cast<Bus *>(&m_bus), d.id, d.values, d.alarms, m_pages);
+        d.page->setReadOnly(m_readOnly);
+        m_pages->addWidget(d.page);
+    }
+    return d.page;
+}
+
+void MainWindow::onNavigation(int row)
+{
+    if (row == overviewRow)
+        m_pages->setCurrentWidget(m_overview);
+    else if (row == trafficRow)
+        m_pages->setCurrentWidget(m_traffic);
+    else if (row >= firstDeviceRow && row - firstDeviceRow < m_devices.size())
+        m_pages->setCurrentWidget(ensurePage(row - firstDeviceRow));
+}
+
+void MainWindow::showDevice(DevicePage *page)
+{
+    for (int i = 0; i < m_devices.size(); ++i) {
+        if (m_devices[i].page == page)
+            m_navigation->setCurrentRow(firstDeviceRow + i);
+    }
+}
+
+DevicePage *MainWindow::devicePage(const QString &family, quint8 address) const
+{
+    for (int i = 0; i < m_devices.size(); ++i) {
+        const DeviceEntry &d = m_devices[i];
+        if (m_bus.deviceMap(d.id)->family == family && m_bus.deviceAddress(d.id) == address)
+            return ensurePage(i);
+    }
+    return nullptr;
+}
+
+DeviceTile *MainWindow::deviceTile(const QString &family, quint8 address) const
+{
+    for (const DeviceEntry &d : m_devices) {
+        if (m_bus.deviceMap(d.id)->family == family && m_bus.deviceAddress(d.id) == address)
+            return d.tile;
+    }
+    return nullptr;
+}
+
+void MainWindow::removeCurrentDevice()
+{
+    const int index = m_navigation->currentRow() - firstDeviceRow;
+    if (index < 0 || index >= m_devices.size())
+        return;
+    m_navigation->setCurrentRow(overviewRow);
+    const DeviceEntry d = m_devices.takeAt(index);
+    m_bus.removeDevice(d.id);
+    m_overview->removeTile(d.tile);
+    if (d.page) {
+        m_pages->removeWidget(d.page);
+        d.page->deleteLater();
+    }
+    d.values->deleteLater();
+    d.alarms->deleteLater();
+    delete m_navigation->takeItem(firstDeviceRow + index);
+}
+
+void MainWindow::openScanDialog()
+{
+    if (m_bus.state() != LineState::Connected) {
+        QMessageBox::information(this, tr("Scan"), tr("Connect to a line first."));
+        return;
+    }
+    auto *dialog = new ScanDialog(&m_bus, m_registry, this);
+    dialog->setObjectName(QStringLiteral("scanDialog"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        for (const auto &[map, address] : dialog->chosen())
+            addDevice(map, address);
+    });
+    dialog->show();
+}
+
+void MainWindow::restoreSettings()
+{
+    QSettings &s = settings();
+    restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(s.value(QStringLiteral("window/state")).toByteArray());
+    m_connectionBar->setSettings(s.value(QStringLiteral("line/port")).toString(),
+                                 s.value(QStringLiteral("line/baud"), 9600).toInt(),
+                                 s.value(QStringLiteral("line/format"), QStringLiteral("8N1")).toString());
+    for (const QString &device : s.value(QStringLiteral("devices")).toStringList()) {
+        const auto map = m_registry.family(device.section(QLatin1Char('@'), 0, 0));
+        bool ok = false;
+        const int address = device.section(QLatin1Char('@'), 1).toInt(&ok);
+        if (map && ok && address >= 1 && address <= 255)
+            addDevice(map, quint8(address));
+    }
+}
+
+void MainWindow::saveSettings()
+{
+    // The demo's line is gone after the demo: it must not replace the user's own.
+    if (m_options.demo)
+        return;
+    QSettings &s = settings();
+    s.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    s.setValue(QStringLiteral("window/state"), saveState());
+    s.setValue(QStringLiteral("line/port"), m_connectionBar->port());
+    s.setValue(QStringLiteral("line/baud"), m_connectionBar->baud());
+    s.setValue(QStringLiteral("line/format"), m_connectionBar->format());
+    QStringList devices;
+    for (const DeviceEntry &d : std::as_const(m_devices))
+        devices << QStringLiteral("%1@%2").arg(m_bus.deviceMap(d.id)->family).arg(m_bus.deviceAddress(d.id));
+    s.setValue(QStringLiteral("devices"), devices);
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    saveSettings();
+    event->accept();
+}
+
+} // namespace jumo

@@ -1,0 +1,108 @@
+// The HMI's main window: it composes the connection bar, the device list, the overview,
+// the traffic page and one page per device, and keeps the settings. Everything that
+// knows about devices lives in the pages and models it creates.
+#pragma once
+
+#include "bus.h"
+
+#include <QMainWindow>
+#include <QSettings>
+
+#include <memory>
+
+class QLabel;
+class QListWidget;
+class QStackedWidget;
+
+namespace jumo {
+
+class AlarmBitsModel;
+class ConnectionBar;
+class LiveValuesModel;
+class DemoLine;
+class DevicePage;
+class DeviceTile;
+class FamilyRegistry;
+class OverviewPage;
+class TrafficView;
+
+class MainWindow : public QMainWindow
+{
+    Q_OBJECT
+
+public:
+    struct Options
+    {
+        bool demo = false;
+        bool readOnly = false;
+        QString settingsFile;   // empty: the user's settings
+    };
+
+    MainWindow(const FamilyRegistry &registry, const Options &options, QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    Bus *bus() { return &m_bus; }
+    bool isReadOnly() const { return m_readOnly; }
+    ConnectionBar *connectionBar() const { return m_connectionBar; }
+    DevicePage *devicePage(const QString &family, quint8 address) const;
+    DeviceTile *deviceTile(const QString &family, quint8 address) const;
+    DemoLine *demoLine() const { return m_demo.get(); }
+
+    bool connectLine();
+    void disconnectLine();
+    // Adds a device to the line, the list and the overview; its page is made when shown.
+    bool addDevice(std::shared_ptr<const RegisterMap> map, quint8 address);
+    void showDevice(DevicePage *page);
+    void showDevice(const QString &family, quint8 address);
+    void openScanDialog();
+
+signals:
+    void demoReady();
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
+
+private:
+    // Models live as long as the device; its page is made the first time it is shown,
+    // so thirty devices in a control room cost thirty tiles, not thirty pages.
+    struct DeviceEntry
+    {
+        DeviceId id;
+        LiveValuesModel *values;
+        AlarmBitsModel *alarms;
+        DeviceTile *tile;
+        DevicePage *page;
+    };
+    DevicePage *ensurePage(int index) const;
+    void onNavigation(int row);
+
+    void buildMenus();
+    void startDemo();
+    void removeCurrentDevice();
+    void onStateChanged(LineState state);
+    void updateStatus();
+    void restoreSettings();
+    void saveSettings();
+    QSettings &settings();
+
+    const FamilyRegistry &m_registry;
+    Options m_options;
+    bool m_readOnly = false;
+    Bus m_bus;
+    std::unique_ptr<DemoLine> m_demo;
+    std::unique_ptr<QSettings> m_settings;
+    ConnectionBar *m_connectionBar;
+    QListWidget *m_navigation;
+    QStackedWidget *m_pages;
+    OverviewPage *m_overview;
+    TrafficView *m_traffic;
+    QLabel *m_lineStatus;
+    QLabel *m_loadStatus;
+    QLabel *m_errorStatus;
+    mutable QList<DeviceEntry> m_devices;
+    int m_requestsAtLastStatus = 0;
+    QString m_lastError;
+    qint64 m_lastErrorShownMs = -1;
+};
+
+} // namespace jumo

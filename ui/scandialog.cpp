@@ -1,0 +1,109 @@
+#include "scandialog.h"
+
+#include "devicescanner.h"
+#include "familyregistry.h"
+
+#include <QDialogButtonBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+namespace jumo {
+
+ScanDialog::ScanDialog(Bus *bus, const FamilyRegistry &registry, QWidget *parent)
+    : QDialog(parent), m_scanner(new DeviceScanner(*bus, registry.families(), this)), m_from(new QSpinBox(this)),
+      m_to(new QSpinBox(this)), m_progress(new QProgressBar(this)), m_found(new QListWidget(this)),
+      m_startButton(new QPushButton(tr("Scan"), this)), m_cancelButton(new QPushButton(tr("Cancel scan"), this))
+{
+    setWindowTitle(tr("Scan the line"));
+    m_from->setObjectName(QStringLiteral("fromBox"));
+    m_to->setObjectName(QStringLiteral("toBox"));
+    m_found->setObjectName(QStringLiteral("foundList"));
+    m_startButton->setObjectName(QStringLiteral("startScan"));
+    m_progress->setObjectName(QStringLiteral("scanProgress"));
+    m_from->setRange(1, 255);
+    m_to->setRange(1, 255);
+    m_from->setValue(1);
+    m_to->setValue(247);
+    m_cancelButton->setEnabled(false);
+    connect(m_startButton, &QPushButton::clicked, this, &ScanDialog::start);
+    connect(m_cancelButton, &QPushButton::clicked, m_scanner, &DeviceScanner::cancel);
+    connect(m_scanner, &DeviceScanner::progress, this, [this](int address, int done, int total) {
+        m_progress->setRange(0, total);
+        m_progress->setValue(done);
+        m_progress->setFormat(tr("address %1").arg(address));
+    });
+    connect(m_scanner, &DeviceScanner::found, this, [this](int address, std::shared_ptr<const RegisterMap> map) {
+        auto *item = new QListWidgetItem(tr("%1 at address %2").arg(map->name).arg(address), m_found);
+        item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+        item->setCheckState(Qt::Checked);
+        item->setData(Qt::UserRole, int(m_results.size()));
+        m_results << qMakePair(map, quint8(address));
+    });
+    connect(m_scanner, &DeviceScanner::unknownDevice, this, [this](int address) {
+        auto *item = new QListWidgetItem(tr("Unknown device at address %1").arg(address), m_found);
+        item->setFlags(Qt::ItemIsEnabled);
+    });
+    connect(m_scanner, &DeviceScanner::finished, this, [this](bool cancelled) {
+        m_startButton->setEnabled(true);
+        m_cancelButton->setEnabled(false);
+        m_progress->setValue(m_progress->maximum());
+        m_progress->setFormat(cancelled ? tr("cancelled") : tr("%n device(s) found", nullptr, int(m_results.size())));
+    });
+
+    auto *range = new QHBoxLayout;
+    range->addWidget(new QLabel(tr("From address"), this));
+    range->addWidget(m_from);
+    range->addWidget(new QLabel(tr("to"), this));
+    range->addWidget(m_to);
+    range->addWidget(m_startButton);
+    range->addWidget(m_cancelButton);
+    auto *buttons = new QDialogButtonBox(this);
+    buttons->addButton(tr("Add checked devices"), QDialogButtonBox::AcceptRole);
+    buttons->addButton(QDialogButtonBox::Close);
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, [this] {
+        m_scanner->cancel();
+        reject();
+    });
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(range);
+    layout->addWidget(m_progress);
+    layout->addWidget(m_found);
+    layout->addWidget(buttons);
+    resize(480, 360);
+}
+
+void ScanDialog::start()
+{
+    if (m_scanner->isRunning())
+        return;
+    m_found->clear();
+    m_results.clear();
+    m_startButton->setEnabled(false);
+    m_cancelButton->setEnabled(true);
+    m_scanner->start(m_from->value(), std::max(m_from->value(), m_to->value()));
+}
+
+bool ScanDialog::isScanning() const
+{
+    return m_scanner->isRunning();
+}
+
+QList<QPair<std::shared_ptr<const RegisterMap>, quint8>> ScanDialog::chosen() const
+{
+    QList<QPair<std::shared_ptr<const RegisterMap>, quint8>> out;
+    for (int i = 0; i < m_found->count(); ++i) {
+        const QListWidgetItem *item = m_found->item(i);
+        if (item->data(Qt::UserRole).isValid() && item->checkState() == Qt::Checked)
+            out << m_results.at(item->data(Qt::UserRole).toInt());
+    }
+    return out;
+}
+
+} // namespace jumo

@@ -1,0 +1,169 @@
+#include "trendview.h"
+
+#include "livevaluesmodel.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDateTime>
+#include <QDateTimeAxis>
+#include <QFile>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QLineSeries>
+#include <QListWidget>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSplitter>
+#include <QTextStream>
+#include <QValueAxis>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <limits>
+
+namespace jumo {
+
+TrendView::TrendView(LiveValuesModel *values, QWidget *parent)
+    : QWidget(parent), m_values(values), m_choice(new QListWidget(this)), m_window(new QComboBox(this)),
+      m_chart(new QChart), m_view(new QChartView(m_chart, this)), m_timeAxis(new QDateTimeAxis),
+      m_valueAxis(new QValueAxis)
+{
+    m_choice->setObjectName(QStringLiteral("trendChoice"));
+    for (int row = 0; row < m_values->rowCount(); ++row) {
+        const QModelIndex label = m_values->index(row, LiveValuesModel::LabelColumn);
+        auto *item = new QListWidgetItem(label.data().toString(), m_choice);
+        item->setData(Qt::UserRole, row);
+        item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+        item->setCheckState(Qt::Unchecked);
+    }
+    connect(m_choice, &QListWidget::itemChanged, this, [this](QListWidgetItem *item) {
+        setSelected(item->data(Qt::UserRole).toInt(), item->checkState() == Qt::Checked);
+    });
+    m_window->addItem(tr("1 minute"), 60);
+    m_window->addItem(tr("5 minutes"), 300);
+    m_window->addItem(tr("15 minutes"), 900);
+    m_window->addItem(tr("1 hour"), 3600);
+    connect(m_window, &QComboBox::currentIndexChanged, this, &TrendView::rescale);
+    auto *pause = new QCheckBox(tr("Pause"), this);
+    connect(pause, &QCheckBox::toggled, this, [this](bool on) { m_paused = on; });
+    auto *exportButton = new QPushButton(tr("Export CSV..."), this);
+    connect(exportButton, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export trend"), QString(), tr("CSV files (*.csv)"));
+        QString error;
+        if (!path.isEmpty() && !exportCsv(path, &error))
+            QMessageBox::warning(this, tr("Export trend"), error);
+    });
+
+    m_timeAxis->setFormat(QStringLiteral("HH:mm:ss"));
+    m_chart->addAxis(m_timeAxis, Qt::AlignBottom);
+    m_chart->addAxis(m_valueAxis, Qt::AlignLeft);
+    m_chart->legend()->setAlignment(Qt::AlignBottom);
+    m_view->setRenderHint(QPainter::Antialiasing);
+
+    auto *bar = new QHBoxLayout;
+    bar->addWidget(m_window);
+    bar->addWidget(pause);
+    bar->addStretch();
+    bar->addWidget(exportButton);
+    auto *right = new QWidget(this);
+    auto *rightLayout = new QVBoxLayout(right);
+    rightLayout->setContentsMargins(0, 0, 0, 0);
+    rightLayout->addLayout(bar);
+    rightLayout->addWidget(m_view);
+    auto *split = new QSplitter(this);
+    split->addWidget(m_choice);
+    split->addWidget(right);
+    split->setStretchFactor(1, 3);
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(split);
+    connect(m_values, &QAbstractItemModel::dataChanged, this,
+            [this](const QModelIndex &first, const QModelIndex &last) { onDataChanged(first.row(), last.row()); });
+    rescale();
+}
+
+void TrendView::setSelected(int row, bool on)
+{
+    if (!on) {
+        if (QLineSeries *s = m_series.take(row)) {
+            m_chart->removeSeries(s);
+            delete s;
+        }
+        return;
+    }
+    if (m_series.contains(row))
+        return;
+    auto *series = new QLineSeries;
+    series->setName(m_values->index(row, LiveValuesModel::LabelColumn).data().toString() + QStringLiteral(" [")
+                    + m_values->index(row, LiveValuesModel::UnitColumn).data().toString() + QLatin1Char(']'));
+    m_chart->addSeries(series);
+    series->attachAxis(m_timeAxis);
+    series->attachAxis(m_valueAxis);
+    m_series.insert(row, series);
+}
+
+void TrendView::onDataChanged(int first, int last)
+{
+    if (m_paused || m_series.isEmpty())
+        return;
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    const qint64 keepFrom = now - 3600 * 1000;
+    bool added = false;
+    for (auto it = m_series.begin(); it != m_series.end(); ++it) {
+        if (it.key() < first || it.key() > last)
+            continue;
+        const QVariant v = m_values->index(it.key(), 0).data(LiveValuesModel::NumericRole);
+        if (!v.isValid())
+            continue;   // error values and failed reads leave a gap, never a false point
+        it.value()->append(double(now), v.toDouble());
+        while (it.value()->count() > 0 && it.value()->at(0).x() < keepFrom)
+            it.value()->remove(0);
+        added = true;
+    }
+    if (added)
+        rescale();
+}
+
+void TrendView::rescale()
+{
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    const qint64 span = m_window->currentData().toLongLong() * 1000;
+    m_timeAxis->setRange(QDateTime::fromMSecsSinceEpoch(now - span), QDateTime::fromMSecsSinceEpoch(now));
+    double lo = std::numeric_limits<double>::max();
+    double hi = std::numeric_limits<double>::lowest();
+    for (QLineSeries *s : std::as_const(m_series)) {
+        for (const QPointF &p : s->points()) {
+            if (p.x() >= now - span) {
+                lo = std::min(lo, p.y());
+                hi = std::max(hi, p.y());
+            }
+        }
+    }
+    if (lo > hi)
+        m_valueAxis->setRange(0, 1);
+    else
+        m_valueAxis->setRange(lo - (hi - lo) * 0.05 - 0.5, hi + (hi - lo) * 0.05 + 0.5);
+}
+
+bool TrendView::exportCsv(const QString &path, QString *error) const
+{
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
+        if (error)
+            *error = tr("cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    QTextStream out(&file);
+    out << "time,entry,value,unit\n";
+    for (auto it = m_series.cbegin(); it != m_series.cend(); ++it) {
+        const QString id = m_values->entryId(it.key());
+        const QString unit = m_values->index(it.key(), LiveValuesModel::UnitColumn).data().toString();
+        for (const QPointF &p : it.value()->points())
+            out << QDateTime::fromMSecsSinceEpoch(qint64(p.x()), Qt::UTC).toString(Qt::ISODateWithMs) << ',' << id << ','
+                << QString::number(p.y(), 'g', 7) << ',' << unit << '\n';
+    }
+    return true;
+}
+
+} // namespace jumo
