@@ -111,6 +111,23 @@ QString ValueCodec::statusDescription(ValueStatus status, const RegisterMap &map
     return statusText(status);
 }
 
+QString ValueCodec::exactText(const RegisterEntry &entry, const RegisterMap &map, std::span<const quint16> words)
+{
+    const DecodedValue v = decode(entry, map, words);
+    if (!v.isOk())
+        return {};
+    switch (entry.type) {
+    case ValueType::Float:
+        return QString::number(double(decodeFloat(words[0], words[1], map.protocol.floatWordOrder)), 'g', 9);
+    case ValueType::Text:
+        return v.value.toString();
+    case ValueType::Bool:
+        return v.value.toBool() ? QStringLiteral("1") : QStringLiteral("0");
+    default:
+        return QString::number(v.value.toLongLong());
+    }
+}
+
 QString ValueCodec::formatFloat(double value)
 {
     return QString::number(value, 'g', 7);

@@ -62,6 +62,11 @@ public:
     // '+'; command words get their activation bit added.
     static EncodeResult encode(const RegisterEntry &entry, const RegisterMap &map, const QString &text);
 
+    // The value of the words as a text that encode() turns back into the same words
+    // (floats with 9 significant digits, enums and bit fields as numbers); empty for
+    // error values.
+    static QString exactText(const RegisterEntry &entry, const RegisterMap &map, std::span<const quint16> words);
+
     // Formats a float with the precision the devices have (7 significant digits).
     static QString formatFloat(double value);
 };

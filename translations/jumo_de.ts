@@ -161,7 +161,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>geschrieben, aber das Rücklesen ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+119"/>
         <source>broadcast sent; it cannot be read back</source>
         <translation>Broadcast gesendet; er kann nicht zurückgelesen werden</translation>
     </message>
@@ -218,33 +218,41 @@ Commands on a serial line (all take --port PATH --baud N --format 8N1|8E1|8O1|8N
   dump DEVICE [--json]     read every readable entry once
   monitor DEVICE... --jsonl|--csv [--interval MS] [--cycles N]
                            poll continuously, one record per poll cycle
+  backup DEVICE FILE       save every parameter of a device to a file
+  diff DEVICE FILE         compare a device with a file (or FILE FILE)
+  restore DEVICE FILE [--yes]
+                           write what differs, each verified by read-back
 
 &apos;jumoctl COMMAND --help&apos; describes a command.
 </source>
         <translation>Aufruf: jumoctl COMMAND [Optionen] [Argumente]
 
-Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Modbus RTU.
+Inbetriebnahme und Überwachung von JUMO-Leistungsstellern und Reglern über Modbus RTU.
 
-Befehle zu den Registertabellen:
+Befehle auf den Registertabellen:
   families                 Gerätefamilien und ihre Map-Dateien auflisten
-  map FAMILY --csv|--json  Registertabelle einer Gerätefamilie ausgeben
-  plan FAMILY [ID...]      Leseanfragen für Einträge einer Gerätefamilie anzeigen
-  decode FAMILY ID WORD... rohe Registerwörter als Eintrag dekodieren
+  map FAMILY --csv|--json  Registertabelle einer Familie ausgeben
+  plan FAMILY [ID...]      Leseanfragen für Einträge einer Familie zeigen
+  decode FAMILY ID WORD... Registerwörter als Eintrag dekodieren
 
 Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8E1|8O1|8N2
 --timeout MS --read-only); DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1:
-  scan [--from A --to B]   Geräte suchen und ihre Gerätefamilie benennen
+  scan [--from A --to B]   Geräte suchen und ihre Familie nennen
   read DEVICE ID...        Einträge einmal lesen
-  write DEVICE ID=VALUE... Einträge schreiben, durch Rücklesen überprüft
-  dump DEVICE [--json]     jeden lesbaren Eintrag einmal lesen
+  write DEVICE ID=VALUE... Einträge schreiben, durch Rücklesen geprüft
+  dump DEVICE [--json]     alle lesbaren Einträge einmal lesen
   monitor DEVICE... --jsonl|--csv [--interval MS] [--cycles N]
                            fortlaufend abfragen, ein Datensatz je Abfragezyklus
+  backup DEVICE FILE       alle Parameter eines Geräts in einer Datei sichern
+  diff DEVICE FILE         ein Gerät mit einer Datei vergleichen (oder FILE FILE)
+  restore DEVICE FILE [--yes]
+                           Abweichendes schreiben, jeweils durch Rücklesen geprüft
 
 &apos;jumoctl COMMAND --help&apos; beschreibt einen Befehl.
 </translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+49"/>
         <source>warning: refused map file: %1</source>
         <translation>Warnung: Map-Datei abgelehnt: %1</translation>
     </message>
@@ -502,7 +510,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Adresse %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+45"/>
+        <location line="+47"/>
         <source>%n active alarm(s)</source>
         <translation>
             <numerusform>%n aktiver Alarm</numerusform>
@@ -537,7 +545,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+65"/>
+        <location filename="../app/cli/linecommands.cpp" line="+67"/>
         <source>Serial port, e.g. /dev/ttyUSB0 (required).</source>
         <translation>Serielle Schnittstelle, z. B. /dev/ttyUSB0 (erforderlich).</translation>
     </message>
@@ -705,11 +713,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location line="+317"/>
         <source>FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-315"/>
         <source>Entry ids.</source>
         <translation>Kennungen der Einträge.</translation>
     </message>
@@ -834,6 +843,120 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <source>&apos;%1&apos; is not a readable entry of %2</source>
         <translation>&apos;%1&apos; ist kein lesbarer Eintrag von %2</translation>
     </message>
+    <message>
+        <location line="+104"/>
+        <source>no differences</source>
+        <translation>keine Unterschiede</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n parameter(s) differ (%1 -&gt; %2):</source>
+        <translation>
+            <numerusform>%n Parameter weicht ab (%1 -&gt; %2):</numerusform>
+            <numerusform>%n Parameter weichen ab (%1 -&gt; %2):</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+1"/>
+        <source>(missing)</source>
+        <translation>(fehlt)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Saves every parameter of a device to a file.</source>
+        <translation>Sichert alle Parameter eines Geräts in einer Datei.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Writes the parameters of a file that differ from the device, each verified by read-back.</source>
+        <translation>Schreibt die Parameter einer Datei, die vom Gerät abweichen, jeweils durch Rücklesen geprüft.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Compares a device with a parameter file, or two files.</source>
+        <translation>Vergleicht ein Gerät mit einer Parameterdatei oder zwei Dateien miteinander.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Write without asking.</source>
+        <translation>Ohne Rückfrage schreiben.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>FAMILY@ADDRESS, or a first parameter file.</source>
+        <translation>FAMILY@ADDRESS oder eine erste Parameterdatei.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Parameter file (JSON).</source>
+        <translation>Parameterdatei (JSON).</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>the files are for different or unknown families: %1, %2</source>
+        <translation>die Dateien gehören zu verschiedenen oder unbekannten Gerätefamilien: %1, %2</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <location line="+34"/>
+        <source>refused: %1</source>
+        <translation>abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location line="-29"/>
+        <source>read-only mode: nothing would be restored</source>
+        <translation>Nur-Lese-Modus: es würde nichts wiederhergestellt</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>these parameters could not be read, nothing was done: %1</source>
+        <translation>diese Parameter konnten nicht gelesen werden, es wurde nichts getan: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>%n parameter(s) of %1 saved to %2</source>
+        <translation>
+            <numerusform>%n Parameter von %1 in %2 gesichert</numerusform>
+            <numerusform>%n Parameter von %1 in %2 gesichert</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+23"/>
+        <source>Write %n parameter(s) to the device? [y/N] </source>
+        <translation>
+            <numerusform>%n Parameter auf das Gerät schreiben? [j/N] </numerusform>
+            <numerusform>%n Parameter auf das Gerät schreiben? [j/N] </numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>y</source>
+        <translation>j</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nothing written</source>
+        <translation>nichts geschrieben</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+27"/>
+        <source>%n parameter(s) restored and verified</source>
+        <translation>
+            <numerusform>%n Parameter wiederhergestellt und geprüft</numerusform>
+            <numerusform>%n Parameter wiederhergestellt und geprüft</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>jumo::LiveValuesModel</name>
@@ -927,12 +1050,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+147"/>
+        <location line="+149"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-142"/>
+        <location line="-144"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -957,7 +1080,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Entfernen</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+36"/>
         <source>READ-ONLY</source>
         <translation>NUR LESEN</translation>
     </message>
@@ -1087,7 +1210,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>keine Fehler</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+94"/>
         <source>Scan</source>
         <translation>Suchen</translation>
     </message>
@@ -1560,6 +1683,54 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
 </context>
 <context>
+    <name>jumo::ParameterSet</name>
+    <message>
+        <location filename="../lib/parameterset.cpp" line="+57"/>
+        <source>not a parameter file: %1 at byte %2</source>
+        <translation>keine Parameterdatei: %1 bei Byte %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>not a parameter file (no &quot;format&quot;: &quot;jumo-parameters&quot;)</source>
+        <translation>keine Parameterdatei (kein &quot;format&quot;: &quot;jumo-parameters&quot;)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>parameter file version %1 is not supported (expected %2)</source>
+        <translation>Version %1 der Parameterdatei wird nicht unterstützt (erwartet: %2)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>the parameter file lacks &quot;family&quot; or &quot;values&quot;</source>
+        <translation>der Parameterdatei fehlt &quot;family&quot; oder &quot;values&quot;</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the value of &apos;%1&apos; must be a text</source>
+        <translation>der Wert von &apos;%1&apos; muss ein Text sein</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>the file is for the family %1, the device is %2</source>
+        <translation>die Datei gehört zur Gerätefamilie %1, das Gerät ist %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the file is from software version %1, the device runs %2</source>
+        <translation>die Datei stammt von Softwareversion %1, auf dem Gerät läuft %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&apos;%1&apos; in the file is no parameter of %2</source>
+        <translation>&apos;%1&apos; in der Datei ist kein Parameter von %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&apos;%1&apos; in the file: %2</source>
+        <translation>&apos;%1&apos; in der Datei: %2</translation>
+    </message>
+</context>
+<context>
     <name>jumo::PtyPair</name>
     <message>
         <location filename="../lib/sim/ptypair.cpp" line="+15"/>
@@ -1877,7 +2048,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Dekodierfehler</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+46"/>
         <source>expected %1 words, got %2</source>
         <translation>%1 Wörter erwartet, %2 erhalten</translation>
     </message>

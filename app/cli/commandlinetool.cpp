@@ -33,6 +33,10 @@ QString CommandLineTool::usage() const
               "  dump DEVICE [--json]     read every readable entry once\n"
               "  monitor DEVICE... --jsonl|--csv [--interval MS] [--cycles N]\n"
               "                           poll continuously, one record per poll cycle\n"
+              "  backup DEVICE FILE       save every parameter of a device to a file\n"
+              "  diff DEVICE FILE         compare a device with a file (or FILE FILE)\n"
+              "  restore DEVICE FILE [--yes]\n"
+              "                           write what differs, each verified by read-back\n"
               "\n"
               "'jumoctl COMMAND --help' describes a command.\n");
 }

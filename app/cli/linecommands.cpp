@@ -5,6 +5,8 @@
 #include "familyregistry.h"
 
 #include <QDateTime>
+#include <QFile>
+#include <QSaveFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -41,8 +43,8 @@ LineCommands::~LineCommands() = default;
 
 QStringList LineCommands::commands()
 {
-    return {QStringLiteral("scan"), QStringLiteral("read"), QStringLiteral("write"), QStringLiteral("dump"),
-            QStringLiteral("monitor")};
+    return {QStringLiteral("scan"),   QStringLiteral("read"), QStringLiteral("write"),  QStringLiteral("dump"),
+            QStringLiteral("monitor"), QStringLiteral("backup"), QStringLiteral("diff"), QStringLiteral("restore")};
 }
 
 std::optional<int> LineCommands::run(const QString &command, const QStringList &arguments)
@@ -57,7 +59,7 @@ std::optional<int> LineCommands::run(const QString &command, const QStringList &
         return write(arguments);
     if (command == QLatin1String("monitor"))
         return monitor(arguments);
-    return 2;
+    return parameters(command, arguments);
 }
 
 void LineCommands::addLineOptions(CommandParser &parser)
@@ -491,6 +493,206 @@ std::optional<int> LineCommands::monitor(const QStringList &arguments)
             finish(m_failed ? 1 : 0);
     });
     return std::nullopt;
+}
+
+void LineCommands::readParameters(const std::function<void(const ParameterSet &, const QStringList &)> &done)
+{
+    Target &target = m_targets.first();
+    QStringList ids = ParameterSet::parameterIds(*target.map) + target.map->identity;
+    if (target.map->entry(QStringLiteral("software_version")))
+        ids << QStringLiteral("software_version");
+    ids.removeDuplicates();
+    m_bus.setPolling(false);
+    target.id = m_bus.addDevice(target.map, target.address);
+    m_bus.setPollEntries(target.id, ids);
+    connect(&m_bus, &Bus::pollCycleFinished, this, [this, done](DeviceId id, double) {
+        const Target &t = m_targets.first();
+        if (id != t.id)
+            return;
+        ParameterSet set;
+        set.family = t.map->family;
+        set.address = t.address;
+        set.time = QDateTime::currentDateTimeUtc();
+        QStringList failed;
+        for (const QString &id : ParameterSet::parameterIds(*t.map)) {
+            const EntryState *s = m_bus.entryState(t.id, id);
+            const QString text = s && s->isCurrent() ? ValueCodec::exactText(*t.map->entry(id), *t.map, s->words) : QString();
+            if (text.isNull())
+                failed << QStringLiteral("%1 (%2)").arg(id, s ? s->statusName() : QStringLiteral("timeout"));
+            else
+                set.values.insert(id, text);
+        }
+        for (const QString &id : t.map->identity) {
+            if (const EntryState *s = m_bus.entryState(t.id, id); s && s->isCurrent())
+                set.identity.insert(id, s->value.display.trimmed());
+        }
+        if (const EntryState *s = m_bus.entryState(t.id, QStringLiteral("software_version")); s && s->isCurrent())
+            set.softwareVersion = s->value.display.trimmed();
+        done(set, failed);
+    });
+    m_bus.requestCycle(target.id);
+}
+
+void LineCommands::printDifferences(const QList<ParameterDifference> &differences, const QString &oldName,
+                                    const QString &newName)
+{
+    if (differences.isEmpty()) {
+        m_out << tr("no differences") << Qt::endl;
+        return;
+    }
+    m_out << tr("%n parameter(s) differ (%1 -> %2):", nullptr, int(differences.size())).arg(oldName, newName) << Qt::endl;
+    for (const ParameterDifference &d : differences) {
+        m_out << "  " << d.id << " (" << d.label << "): " << (d.oldValue.isNull() ? tr("(missing)") : d.oldDisplay)
+              << " -> " << (d.newValue.isNull() ? tr("(missing)") : d.newDisplay);
+        if (!d.unit.isEmpty())
+            m_out << ' ' << d.unit;
+        m_out << Qt::endl;
+    }
+}
+
+std::optional<int> LineCommands::parameters(const QString &command, const QStringList &arguments)
+{
+    const bool backup = command == QLatin1String("backup");
+    const bool restore = command == QLatin1String("restore");
+    CommandParser parser(command, backup ? tr("Saves every parameter of a device to a file.")
+                                  : restore ? tr("Writes the parameters of a file that differ from the device, each "
+                                                 "verified by read-back.")
+                                            : tr("Compares a device with a parameter file, or two files."));
+    addLineOptions(parser);
+    if (restore)
+        parser.addOption({QStringLiteral("yes"), tr("Write without asking.")});
+    parser.addPositionalArgument(QStringLiteral("device"), command == QLatin1String("diff")
+                                                                   ? tr("FAMILY@ADDRESS, or a first parameter file.")
+                                                                   : tr("FAMILY@ADDRESS, e.g. ipc300@1."));
+    parser.addPositionalArgument(QStringLiteral("file"), tr("Parameter file (JSON)."));
+    if (const auto stop = parser.parseArguments(arguments, m_out, m_err, 2, 2))
+        return stop;
+    const QString first = parser.positionalArguments().at(0);
+    const QString path = parser.positionalArguments().at(1);
+
+    auto load = [this](const QString &file) -> std::optional<ParameterSet> {
+        QFile f(file);
+        if (!f.open(QIODevice::ReadOnly)) {
+            m_err << tr("cannot read %1: %2").arg(file, f.errorString()) << Qt::endl;
+            return std::nullopt;
+        }
+        QString error;
+        std::optional<ParameterSet> set = ParameterSet::fromJson(f.readAll(), &error);
+        if (!set)
+            m_err << file << ": " << error << Qt::endl;
+        return set;
+    };
+
+    if (command == QLatin1String("diff") && !first.contains(QLatin1Char('@'))) {
+        const std::optional<ParameterSet> a = load(first);
+        const std::optional<ParameterSet> b = load(path);
+        if (!a || !b)
+            return 2;
+        const auto map = m_registry.family(a->family);
+        if (!map || a->family != b->family) {
+            m_err << tr("the files are for different or unknown families: %1, %2").arg(a->family, b->family) << Qt::endl;
+            return 2;
+        }
+        const QList<ParameterDifference> d = a->differences(*b, *map);
+        printDifferences(d, first, path);
+        return d.isEmpty() ? 0 : 1;
+    }
+
+    Target target;
+    if (!parseDevice(first, target))
+        return 2;
+    std::optional<ParameterSet> file;
+    if (!backup) {
+        file = load(path);
+        if (!file)
+            return 2;
+        if (file->family != target.map->family) {
+            m_err << tr("refused: %1").arg(file->incompatibility(*target.map, QString())) << Qt::endl;
+            return 1;
+        }
+    }
+    if (restore && parser.isSet(QStringLiteral("read-only"))) {
+        m_err << tr("read-only mode: nothing would be restored") << Qt::endl;
+        return 1;
+    }
+    if (const auto stop = openLine(parser))
+        return stop;
+    m_targets = {target};
+    const bool yes = restore && parser.isSet(QStringLiteral("yes"));
+    readParameters([this, backup, restore, path, file, yes, first](const ParameterSet &device, const QStringList &failed) {
+        if (!failed.isEmpty()) {
+            m_err << tr("these parameters could not be read, nothing was done: %1").arg(failed.join(QStringLiteral(", ")))
+                  << Qt::endl;
+            finish(1);
+            return;
+        }
+        const RegisterMap &map = *m_targets.first().map;
+        if (backup) {
+            QSaveFile out(path);
+            if (!out.open(QIODevice::WriteOnly) || out.write(device.toJson()) < 0 || !out.commit()) {
+                m_err << tr("cannot write %1: %2").arg(path, out.errorString()) << Qt::endl;
+                finish(1);
+                return;
+            }
+            m_out << tr("%n parameter(s) of %1 saved to %2", nullptr, int(device.values.size())).arg(first, path)
+                  << Qt::endl;
+            finish(0);
+            return;
+        }
+        const QString refused = file->incompatibility(map, device.softwareVersion);
+        if (!refused.isEmpty()) {
+            m_err << tr("refused: %1").arg(refused) << Qt::endl;
+            finish(1);
+            return;
+        }
+        const QList<ParameterDifference> differences = device.differences(*file, map);
+        printDifferences(differences, first, path);
+        if (!restore) {
+            finish(differences.isEmpty() ? 0 : 1);
+            return;
+        }
+        if (differences.isEmpty()) {
+            finish(0);
+            return;
+        }
+        if (!yes) {
+            // A person at a terminal confirms; a script has to say --yes.
+            m_out << tr("Write %n parameter(s) to the device? [y/N] ", nullptr, int(differences.size())) << Qt::flush;
+            QTextStream in(stdin);
+            const QString answer = in.readLine().trimmed().toLower();
+            if (answer != QLatin1String("y") && answer != tr("y") && answer != QLatin1String("yes")) {
+                m_err << tr("nothing written") << Qt::endl;
+                finish(1);
+                return;
+            }
+        }
+        // EEPROM-aware: only what differs is written, one entry at a time.
+        for (const ParameterDifference &d : differences)
+            m_pendingWrites << qMakePair(d.id, d.newValue);
+        connect(&m_bus, &Bus::writeFinished, this, [this](int ticket, const WriteOutcome &outcome) {
+            if (ticket != m_writeTicket)
+                return;
+            const QString id = m_pendingWrites.takeFirst().first;
+            (outcome.succeeded() ? m_out : m_err) << id << ": " << outcome.message << Qt::endl;
+            if (outcome.succeeded())
+                ++m_restored;
+            else
+                m_failed = true;
+            restoreNext();
+        });
+        restoreNext();
+    });
+    return std::nullopt;
+}
+
+void LineCommands::restoreNext()
+{
+    if (m_pendingWrites.isEmpty()) {
+        m_out << tr("%n parameter(s) restored and verified", nullptr, m_restored) << Qt::endl;
+        finish(m_failed ? 1 : 0);
+        return;
+    }
+    m_writeTicket = m_bus.write(m_targets.first().id, m_pendingWrites.first().first, m_pendingWrites.first().second);
 }
 
 } // namespace jumo

@@ -3,11 +3,13 @@
 #pragma once
 
 #include "bus.h"
+#include "parameterset.h"
 
 #include <QObject>
 #include <QStringList>
 #include <QTextStream>
 
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -48,6 +50,11 @@ private:
     std::optional<int> read(const QStringList &arguments, bool dump);
     std::optional<int> write(const QStringList &arguments);
     std::optional<int> monitor(const QStringList &arguments);
+    std::optional<int> parameters(const QString &command, const QStringList &arguments);
+    // Reads the parameters and identity of the target once; then calls done.
+    void readParameters(const std::function<void(const ParameterSet &, const QStringList &failed)> &done);
+    void printDifferences(const QList<ParameterDifference> &differences, const QString &oldName, const QString &newName);
+    void restoreNext();
     void printValues(const Target &target, const QStringList &ids);
     void writeNext();
     void finish(int code);
@@ -60,6 +67,7 @@ private:
     QList<Target> m_targets;
     QStringList m_ids;
     QList<QPair<QString, QString>> m_pendingWrites;
+    int m_restored = 0;
     int m_writeTicket = -1;
     bool m_failed = false;
     bool m_json = false;

@@ -706,7 +706,8 @@ void Bus::completePoll(const Job &job, const QList<quint16> &words)
             continue;
         EntryState &s = d.values[e.id];
         const auto first = words.cbegin() + (e.address - job.start);
-        s.value = ValueCodec::decode(e, *d.map, std::span<const quint16>(&*first, std::size_t(e.wordCount())));
+        s.words = QList<quint16>(first, first + e.wordCount());
+        s.value = ValueCodec::decode(e, *d.map, s.words);
         s.error = ReadError::None;
         s.exceptionCode = 0;
         s.updatedMs = t;

@@ -13,6 +13,7 @@ enum class ReadError { None, Timeout, Exception, Mismatch, Disconnected };
 struct EntryState
 {
     DecodedValue value;      // last value that decoded; kept while errors come in
+    QList<quint16> words;    // the register words of that value
     ReadError error = ReadError::Timeout;
     int exceptionCode = 0;
     qint64 updatedMs = -1;   // monotonic time of the last attempt, -1 = never

@@ -54,6 +54,8 @@ private slots:
     void monitorCsv();
     void absentDeviceIsATimeout();
     void badPortIsAClearError();
+    void backupChangeDiffRestore();
+    void restoreRefusesOtherFamilyAndVersion();
 
 private:
     TestLine m_line;
@@ -202,6 +204,64 @@ void tst_JumoctlLine::badPortIsAClearError()
     const Run noDevice = run(QStringList{"read"} + port() + QStringList{"ipc300-1", "load_current"});
     QCOMPARE(noDevice.code, 2);
     QVERIFY(noDevice.err.contains("use FAMILY@ADDRESS"));
+}
+
+void tst_JumoctlLine::backupChangeDiffRestore()
+{
+    QTemporaryDir dir;
+    const QString file = dir.filePath("dtron.json");
+    Run r = run(QStringList{"backup"} + port() + QStringList{"dtron300@4", file});
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.contains("saved to"), qPrintable(r.out + r.err));
+    SimulatedDevice *dtron = m_sim.line().device(4);
+    const double pb1 = dtron->number("ps1_pb1");
+    const double w2 = dtron->number("setpoint_w2");
+
+    // Someone changes two parameters on the device.
+    r = run(QStringList{"write"} + port() + QStringList{"dtron300@4", "ps1_pb1=77.7", "setpoint_w2=12.34"});
+    QCOMPARE(r.code, 0);
+    r = run(QStringList{"diff"} + port() + QStringList{"dtron300@4", file});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.out.contains("2 parameter(s) differ"), qPrintable(r.out));
+    QVERIFY2(r.out.contains("ps1_pb1") && r.out.contains("77.7 -> "), qPrintable(r.out));
+    QVERIFY2(r.out.contains("setpoint_w2") && r.out.contains("12.34 -> "), qPrintable(r.out));
+
+    // Restore writes only what differs, each verified; the device is back.
+    const int writesBefore = m_sim.writeFrames();
+    r = run(QStringList{"restore", "--yes"} + port() + QStringList{"dtron300@4", file});
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.contains("2 parameter(s) restored and verified"), qPrintable(r.out + r.err));
+    QCOMPARE(m_sim.writeFrames() - writesBefore, 2);
+    QCOMPARE(dtron->number("ps1_pb1"), pb1);
+    QCOMPARE(dtron->number("setpoint_w2"), w2);
+    r = run(QStringList{"diff"} + port() + QStringList{"dtron300@4", file});
+    QCOMPARE(r.code, 0);
+    QVERIFY(r.out.contains("no differences"));
+}
+
+void tst_JumoctlLine::restoreRefusesOtherFamilyAndVersion()
+{
+    QTemporaryDir dir;
+    const QString file = dir.filePath("ipc.json");
+    QCOMPARE(run(QStringList{"backup"} + port() + QStringList{"ipc300@1", file}).code, 0);
+    const int writesBefore = m_sim.writeFrames();
+    Run r = run(QStringList{"restore", "--yes"} + port() + QStringList{"tya200@2", file});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains("refused: the file is for the family ipc300, the device is tya200"), qPrintable(r.err));
+
+    QFile f(file);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QByteArray json = f.readAll();
+    f.close();
+    QVERIFY(json.contains("\"softwareVersion\": \"123.01.01\""));
+    json.replace("\"softwareVersion\": \"123.01.01\"", "\"softwareVersion\": \"124.00.00\"");
+    QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    f.write(json);
+    f.close();
+    r = run(QStringList{"restore", "--yes"} + port() + QStringList{"ipc300@1", file});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains("software version 124.00.00, the device runs 123.01.01"), qPrintable(r.err));
+    QCOMPARE(m_sim.writeFrames(), writesBefore);
 }
 
 QTEST_GUILESS_MAIN(tst_JumoctlLine)

@@ -1,0 +1,124 @@
+// Parameter files: what they hold, how they round-trip, and what is refused.
+#include "familyregistry.h"
+#include "parameterset.h"
+
+#include <QTest>
+
+using namespace jumo;
+
+namespace {
+
+const RegisterMap &map(const QString &family)
+{
+    static const FamilyRegistry r = FamilyRegistry::load({}, true);
+    return *r.family(family);
+}
+
+} // namespace
+
+class tst_ParameterSet : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void holdsParametersNotCommandsOrOutputs();
+    void jsonRoundTrip();
+    void refusesBadFiles_data();
+    void refusesBadFiles();
+    void incompatibility();
+    void differencesCompareStoredWords();
+};
+
+void tst_ParameterSet::holdsParametersNotCommandsOrOutputs()
+{
+    const QStringList ipc = ParameterSet::parameterIds(map("ipc300"));
+    QVERIFY(ipc.contains("input_setpoint"));
+    QVERIFY(ipc.contains("max_alarm_limit"));
+    QVERIFY(!ipc.contains("digital_output"));
+    QVERIFY(!ipc.contains("load_current"));
+    const QStringList quantrol = ParameterSet::parameterIds(map("quantrol"));
+    QVERIFY(quantrol.contains("controller_xp1"));
+    QVERIFY(!quantrol.contains("controller_functions"));       // command word
+    QVERIFY(!quantrol.contains("binary_output_control"));      // outputs
+    QVERIFY(!quantrol.contains("ram_controller_setpoint"));    // write-only override
+    QVERIFY(ParameterSet::parameterIds(map("dtron300")).contains("segment_setpoint_1"));
+}
+
+void tst_ParameterSet::jsonRoundTrip()
+{
+    ParameterSet set;
+    set.family = "ipc300";
+    set.address = 7;
+    set.time = QDateTime(QDate(2026, 11, 22), QTime(3, 30), Qt::UTC);
+    set.softwareVersion = "123.01.01";
+    set.identity.insert("device_name", "IPC300");
+    set.values.insert("input_setpoint", "12.3399992");
+    QString error;
+    const std::optional<ParameterSet> back = ParameterSet::fromJson(set.toJson(), &error);
+    QVERIFY2(back, qPrintable(error));
+    QCOMPARE(back->family, set.family);
+    QCOMPARE(back->address, 7);
+    QCOMPARE(back->time, set.time);
+    QCOMPARE(back->softwareVersion, set.softwareVersion);
+    QCOMPARE(back->identity, set.identity);
+    QCOMPARE(back->values, set.values);
+}
+
+void tst_ParameterSet::refusesBadFiles_data()
+{
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("problem");
+    QTest::newRow("not JSON") << QByteArray("{ nope") << "not a parameter file";
+    QTest::newRow("another JSON file") << QByteArray("{\"family\": \"ipc300\"}") << "jumo-parameters";
+    QTest::newRow("future version") << QByteArray("{\"format\": \"jumo-parameters\", \"version\": 2}") << "version 2";
+    QTest::newRow("no values") << QByteArray("{\"format\": \"jumo-parameters\", \"version\": 1, \"family\": \"ipc300\"}")
+                               << "lacks";
+    QTest::newRow("number instead of text")
+            << QByteArray("{\"format\": \"jumo-parameters\", \"version\": 1, \"family\": \"ipc300\", \"values\": {\"input_setpoint\": 5}}")
+            << "must be a text";
+}
+
+void tst_ParameterSet::refusesBadFiles()
+{
+    QFETCH(QByteArray, json);
+    QFETCH(QString, problem);
+    QString error;
+    QVERIFY(!ParameterSet::fromJson(json, &error));
+    QVERIFY2(error.contains(problem), qPrintable(error));
+}
+
+void tst_ParameterSet::incompatibility()
+{
+    ParameterSet set;
+    set.family = "ipc300";
+    set.softwareVersion = "123.01.01";
+    set.values.insert("input_setpoint", "20");
+    QCOMPARE(set.incompatibility(map("ipc300"), "123.01.07"), QString());
+    QVERIFY(set.incompatibility(map("ipc300"), "123.02.00").contains("software version 123.01.01"));
+    QVERIFY(set.incompatibility(map("tya200"), "123.01.01").contains("family ipc300"));
+    set.values.insert("input_setpoint", "250");
+    QVERIFY(set.incompatibility(map("ipc300"), QString()).contains("outside the range"));
+    set.values.clear();
+    set.values.insert("load_current", "1");
+    QVERIFY(set.incompatibility(map("ipc300"), QString()).contains("no parameter"));
+}
+
+void tst_ParameterSet::differencesCompareStoredWords()
+{
+    ParameterSet a;
+    a.family = "quantrol";
+    a.values.insert("setpoint_sp1", "25");
+    a.values.insert("controller_xp1", "33.2999992");
+    a.values.insert("limit_1_alarm_value", "150");
+    ParameterSet b = a;
+    b.values.insert("controller_xp1", "33.3");   // the same float
+    b.values.insert("setpoint_sp1", "26");
+    const QList<ParameterDifference> d = a.differences(b, map("quantrol"));
+    QCOMPARE(d.size(), 1);
+    QCOMPARE(d[0].id, QString("setpoint_sp1"));
+    QCOMPARE(d[0].oldDisplay, QString("25"));
+    QCOMPARE(d[0].newDisplay, QString("26"));
+}
+
+QTEST_GUILESS_MAIN(tst_ParameterSet)
+#include "tst_parameterset.moc"
