@@ -80,18 +80,18 @@ Handbuch %6: &quot;%7&quot;</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+77"/>
+        <location line="+82"/>
         <source>unknown device</source>
         <translation>unbekanntes Gerät</translation>
     </message>
     <message>
-        <location line="-77"/>
-        <location line="+85"/>
+        <location line="-82"/>
+        <location line="+90"/>
         <source>&apos;%1&apos; is not an entry of %2</source>
         <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
     <message>
-        <location line="-75"/>
+        <location line="-80"/>
         <source>&apos;%1&apos; needs more words than one write may carry</source>
         <translation>&apos;%1&apos; benötigt mehr Wörter, als eine Schreibanfrage umfassen darf</translation>
     </message>
@@ -101,7 +101,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>die Leitung ist nicht verbunden</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+48"/>
         <source>no %1 device on this line to read a broadcast back from</source>
         <translation>kein Gerät der Familie %1 an dieser Leitung, von dem ein Broadcast zurückgelesen werden kann</translation>
     </message>
@@ -524,6 +524,50 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
 </context>
 <context>
+    <name>jumo::EventLog</name>
+    <message>
+        <location filename="../lib/eventlog.cpp" line="+36"/>
+        <source>cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <location line="+12"/>
+        <location line="+14"/>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::EventLogView</name>
+    <message>
+        <location filename="../ui/eventlogview.cpp" line="+33"/>
+        <source>Filter: device, entry, kind, text...</source>
+        <translation>Filter: Gerät, Eintrag, Art, Text...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export CSV...</source>
+        <translation>CSV exportieren...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+3"/>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Kept in %1</source>
+        <translation>Gespeichert in %1</translation>
+    </message>
+</context>
+<context>
     <name>jumo::IdentityPanel</name>
     <message>
         <location filename="../ui/identitypanel.cpp" line="+44"/>
@@ -545,7 +589,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+67"/>
+        <location filename="../app/cli/linecommands.cpp" line="+73"/>
         <source>Serial port, e.g. /dev/ttyUSB0 (required).</source>
         <translation>Serielle Schnittstelle, z. B. /dev/ttyUSB0 (erforderlich).</translation>
     </message>
@@ -582,12 +626,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <message>
         <location line="+0"/>
         <location line="+2"/>
-        <location line="+326"/>
+        <location line="+343"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-326"/>
+        <location line="-343"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
@@ -598,12 +642,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+326"/>
+        <location line="+343"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-324"/>
+        <location line="-341"/>
         <source>Never write to the line (control-room mode).</source>
         <translation>Nie auf die Leitung schreiben (Leitwarten-Modus).</translation>
     </message>
@@ -713,12 +757,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+317"/>
+        <location line="+334"/>
         <source>FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="-315"/>
+        <location line="-332"/>
         <source>Entry ids.</source>
         <translation>Kennungen der Einträge.</translation>
     </message>
@@ -784,7 +828,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>&apos;%1&apos; hat nicht die Form ID=VALUE</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+32"/>
+        <source>(was %1)</source>
+        <translation>(vorher %1)</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>Polls devices continuously and prints every poll cycle.</source>
         <translation>Fragt Geräte fortlaufend ab und gibt jeden Abfragezyklus aus.</translation>
     </message>
@@ -1034,7 +1083,74 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::MainWindow</name>
     <message>
-        <location filename="../ui/mainwindow.cpp" line="+52"/>
+        <location filename="../ui/mainwindow.cpp" line="+57"/>
+        <location line="+4"/>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <location line="+4"/>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>Register</source>
+        <translation>Register</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Bit</source>
+        <translation>Bit</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Id</source>
+        <translation>Kennung</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Signal</source>
+        <translation>Signal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Entry</source>
+        <translation>Eintrag</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Old value</source>
+        <translation>Alter Wert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>New value</source>
+        <translation>Neuer Wert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Result</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Message</source>
+        <translation>Meldung</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>JUMO HMI [read-only]</source>
         <translation>JUMO HMI [Nur-Lese-Modus]</translation>
     </message>
@@ -1050,12 +1166,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+149"/>
+        <location line="+157"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-144"/>
+        <location line="-152"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -1065,7 +1181,17 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Datenverkehr und Statistik</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+1"/>
+        <source>Alarm journal</source>
+        <translation>Alarmjournal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Write audit log</source>
+        <translation>Schreibprotokoll</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Add...</source>
         <translation>Hinzufügen...</translation>
     </message>
@@ -1210,7 +1336,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>keine Fehler</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+98"/>
         <source>Scan</source>
         <translation>Suchen</translation>
     </message>

@@ -228,8 +228,8 @@ bool ControlRow::confirm(const QString &description) const
 
 void ControlRow::write(const QString &value, const QString &description)
 {
-    if (m_readOnly)
-        return;
+    // In read-only mode the controls are disabled; a write that still comes here goes to
+    // the bus, which refuses it, so the refusal shows here and in the audit log.
     // Check before asking: a value the device would refuse never gets a confirmation.
     const EncodeResult check = ValueCodec::encode(m_entry, m_map, value);
     if (!check.ok()) {
@@ -237,7 +237,7 @@ void ControlRow::write(const QString &value, const QString &description)
         m_state->setText(tr("Not written: %1").arg(check.error));
         return;
     }
-    if (!confirm(description))
+    if (!m_readOnly && !confirm(description))
         return;
     m_command->write(value);
 }

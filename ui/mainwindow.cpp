@@ -6,6 +6,10 @@
 #include "demoline.h"
 #include "devicepage.h"
 #include "devicetile.h"
+#include "alarmjournal.h"
+#include "eventlog.h"
+#include "eventlogview.h"
+#include "writeaudit.h"
 #include "familyregistry.h"
 #include "livevaluesmodel.h"
 #include "overviewpage.h"
@@ -33,14 +37,31 @@ namespace {
 
 constexpr int overviewRow = 0;
 constexpr int trafficRow = 1;
-constexpr int firstDeviceRow = 2;
+constexpr int journalRow = 2;
+constexpr int auditRow = 3;
+constexpr int firstDeviceRow = 4;
 
 } // namespace
 
 MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, QWidget *parent)
     : QMainWindow(parent), m_registry(registry), m_options(options), m_connectionBar(new ConnectionBar(this)),
       m_navigation(new QListWidget(this)), m_pages(new QStackedWidget(this)), m_overview(new OverviewPage(this)),
-      m_traffic(new TrafficView(&m_bus, this)), m_lineStatus(new QLabel(this)), m_loadStatus(new QLabel(this)),
+      m_traffic(new TrafficView(&m_bus, this)),
+      m_journalLog(new EventLog((options.logFolder.isEmpty() ? EventLog::defaultFolder() : options.logFolder)
+                                        + QStringLiteral("/alarm-journal.jsonl"),
+                                this)),
+      m_auditLog(new EventLog((options.logFolder.isEmpty() ? EventLog::defaultFolder() : options.logFolder)
+                                      + QStringLiteral("/write-audit.jsonl"),
+                              this)),
+      m_journalView(new EventLogView(m_journalLog, AlarmJournal::columns(),
+                                     {tr("Time"), tr("Device"), tr("Register"), tr("Bit"), tr("Id"), tr("Signal"),
+                                      tr("Kind"), tr("State")},
+                                     this)),
+      m_auditView(new EventLogView(m_auditLog, WriteAudit::columns(),
+                                   {tr("Time"), tr("Device"), tr("Entry"), tr("Old value"), tr("New value"),
+                                    tr("Result"), tr("Message")},
+                                   this)),
+      m_lineStatus(new QLabel(this)), m_loadStatus(new QLabel(this)),
       m_errorStatus(new QLabel(this))
 {
     setObjectName(QStringLiteral("mainWindow"));
@@ -64,8 +85,16 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
     m_navigation->setObjectName(QStringLiteral("navigation"));
     m_navigation->addItem(tr("Overview"));
     m_navigation->addItem(tr("Traffic and statistics"));
+    m_navigation->addItem(tr("Alarm journal"));
+    m_navigation->addItem(tr("Write audit log"));
     m_pages->addWidget(m_overview);
     m_pages->addWidget(m_traffic);
+    m_pages->addWidget(m_journalView);
+    m_pages->addWidget(m_auditView);
+    m_journalView->setObjectName(QStringLiteral("alarmJournal"));
+    m_auditView->setObjectName(QStringLiteral("auditLog"));
+    new AlarmJournal(&m_bus, m_journalLog, this);
+    new WriteAudit(&m_bus, m_auditLog, this);
     connect(m_navigation, &QListWidget::currentRowChanged, this, &MainWindow::onNavigation);
     auto *addButton = new QPushButton(tr("Add..."), this);
     auto *scanButton = new QPushButton(tr("Scan..."), this);
@@ -301,6 +330,10 @@ void MainWindow::onNavigation(int row)
         m_pages->setCurrentWidget(m_overview);
     else if (row == trafficRow)
         m_pages->setCurrentWidget(m_traffic);
+    else if (row == journalRow)
+        m_pages->setCurrentWidget(m_journalView);
+    else if (row == auditRow)
+        m_pages->setCurrentWidget(m_auditView);
     else if (row >= firstDeviceRow && row - firstDeviceRow < m_devices.size())
         m_pages->setCurrentWidget(ensurePage(row - firstDeviceRow));
 }

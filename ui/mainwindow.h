@@ -21,6 +21,8 @@ class ConnectionBar;
 class LiveValuesModel;
 class DemoLine;
 class DevicePage;
+class EventLog;
+class EventLogView;
 class DeviceTile;
 class FamilyRegistry;
 class OverviewPage;
@@ -36,6 +38,7 @@ public:
         bool demo = false;
         bool readOnly = false;
         QString settingsFile;   // empty: the user's settings
+        QString logFolder;      // empty: EventLog::defaultFolder()
     };
 
     MainWindow(const FamilyRegistry &registry, const Options &options, QWidget *parent = nullptr);
@@ -47,6 +50,10 @@ public:
     DevicePage *devicePage(const QString &family, quint8 address) const;
     DeviceTile *deviceTile(const QString &family, quint8 address) const;
     DemoLine *demoLine() const { return m_demo.get(); }
+    EventLog *alarmJournal() const { return m_journalLog; }
+    EventLog *auditLog() const { return m_auditLog; }
+    EventLogView *journalView() const { return m_journalView; }
+    EventLogView *auditView() const { return m_auditView; }
 
     bool connectLine();
     void disconnectLine();
@@ -96,6 +103,10 @@ private:
     QStackedWidget *m_pages;
     OverviewPage *m_overview;
     TrafficView *m_traffic;
+    EventLog *m_journalLog;
+    EventLog *m_auditLog;
+    EventLogView *m_journalView;
+    EventLogView *m_auditView;
     QLabel *m_lineStatus;
     QLabel *m_loadStatus;
     QLabel *m_errorStatus;

@@ -2,7 +2,9 @@
 
 #include "commandparser.h"
 #include "devicescanner.h"
+#include "eventlog.h"
 #include "familyregistry.h"
+#include "writeaudit.h"
 
 #include <QDateTime>
 #include <QFile>
@@ -37,6 +39,10 @@ bool isFailure(const EntryState *state)
 LineCommands::LineCommands(const FamilyRegistry &registry, QTextStream &out, QTextStream &err, QObject *parent)
     : QObject(parent), m_registry(registry), m_out(out), m_err(err)
 {
+    // Writes from the command line are audited like the HMI's, in the same log.
+    auto *log = new EventLog(EventLog::defaultFolder() + QStringLiteral("/write-audit.jsonl"), this,
+                             EventLog::Open::AppendOnly);
+    new WriteAudit(&m_bus, log, this);
 }
 
 LineCommands::~LineCommands() = default;
@@ -372,12 +378,29 @@ std::optional<int> LineCommands::write(const QStringList &arguments)
             return;
         const QString id = m_pendingWrites.first().first;
         m_pendingWrites.removeFirst();
-        (outcome.succeeded() ? m_out : m_err) << id << ": " << outcome.message << Qt::endl;
+        const EntryState *old = m_targets.first().address ? m_bus.entryState(m_targets.first().id, id) : nullptr;
+        (outcome.succeeded() ? m_out : m_err) << id << ": " << outcome.message;
+        if (outcome.succeeded() && old && old->hasValue())
+            (outcome.succeeded() ? m_out : m_err) << ' ' << tr("(was %1)").arg(old->value.display);
+        (outcome.succeeded() ? m_out : m_err) << Qt::endl;
         if (!outcome.succeeded())
             m_failed = true;
         writeNext();
     });
-    writeNext();
+    // Read what is readable first, so the output and the audit log show the old values.
+    QStringList readable;
+    for (const auto &[id, value] : std::as_const(m_pendingWrites)) {
+        if (!broadcast && target.map->entry(id)->isReadable())
+            readable << id;
+    }
+    if (readable.isEmpty()) {
+        writeNext();
+        return std::nullopt;
+    }
+    m_bus.setPollEntries(target.id, readable);
+    connect(&m_bus, &Bus::pollCycleFinished, this, [this](DeviceId, double) { writeNext(); },
+            Qt::SingleShotConnection);
+    m_bus.requestCycle(target.id);
     return std::nullopt;
 }
 

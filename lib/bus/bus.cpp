@@ -327,6 +327,10 @@ int Bus::write(DeviceId id, const QString &entryId, const QString &value, bool v
 {
     const int ticket = m_nextTicket++;
     const auto it = m_devices.constFind(id);
+    const EntryState *previous = entryState(id, entryId);
+    emit writeRequested(ticket,
+                        it == m_devices.cend() ? QString() : QStringLiteral("%1@%2").arg(it->map->family).arg(it->address),
+                        entryId, value, previous && previous->hasValue() ? previous->value.display : QString());
     std::optional<Job> job = makeWriteJob(ticket, it == m_devices.cend() ? nullptr : it->map, entryId, value);
     if (!job)
         return ticket;
@@ -341,6 +345,7 @@ int Bus::write(DeviceId id, const QString &entryId, const QString &value, bool v
 int Bus::writeBroadcast(const QString &family, const QString &entryId, const QString &value)
 {
     const int ticket = m_nextTicket++;
+    emit writeRequested(ticket, QStringLiteral("%1@0").arg(family), entryId, value, QString());
     std::shared_ptr<const RegisterMap> map;
     QList<DeviceId> targets;
     for (auto it = m_devices.cbegin(); it != m_devices.cend(); ++it) {

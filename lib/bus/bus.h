@@ -110,6 +110,10 @@ signals:
     void pollCycleFinished(jumo::DeviceId id, double cycleMs);
     void onlineChanged(jumo::DeviceId id, bool online);
     void writeFinished(int ticket, const jumo::WriteOutcome &outcome);
+    // Every write asked for, before any check: device -1 for a broadcast (then the
+    // family is in entryId's map), with the value it replaces where one is known.
+    void writeRequested(int ticket, const QString &device, const QString &entryId, const QString &value,
+                        const QString &previous);
     // Probe result: words on success; else timedOut or the exception code.
     void probeFinished(int ticket, const QList<quint16> &words, bool timedOut, int exceptionCode);
     void traffic(const jumo::TrafficRecord &record);

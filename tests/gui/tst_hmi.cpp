@@ -3,6 +3,8 @@
 // an error value shown as what it is.
 #include "connectionbar.h"
 #include "controlrow.h"
+#include "eventlog.h"
+#include "eventlogview.h"
 #include "controlspanel.h"
 #include "devicepage.h"
 #include "devicetile.h"
@@ -33,6 +35,7 @@ private slots:
     void setpointIsConfirmedByReadBack();
     void readOnlyDisablesControlsAndSendsNothing();
     void errorValueShowsAsOverrange();
+    void journalAndAuditSurviveARestart();
 
 private:
     // A window connected to the line with the IPC 300 at address 1 on its page.
@@ -54,6 +57,7 @@ std::unique_ptr<MainWindow> tst_Hmi::connectedWindow(bool readOnly)
     MainWindow::Options options;
     options.readOnly = readOnly;
     options.settingsFile = m_dir.filePath(QStringLiteral("settings-%1.ini").arg(readOnly));
+    options.logFolder = m_dir.filePath(QStringLiteral("logs"));
     auto window = std::make_unique<MainWindow>(families(), options);
     window->connectionBar()->setSettings(m_line.masterEnd(), 19200, "8N1");
     if (!window->connectLine())
@@ -118,6 +122,20 @@ void tst_Hmi::alarmLedTurnsOn()
     QVERIFY(page->ledGrid()->findChild<QLabel *>("activeAlarms")->text().startsWith("1 "));
     m_sim.line().device(1)->setFlag("malfunction_signal_1.fuse_failure", false);
     QTRY_VERIFY_WITH_TIMEOUT(!led->isOn(), 20000);
+
+    // The journal has the alarm set and cleared, with device and register.
+    QStringList states;
+    for (const QJsonObject &r : window->alarmJournal()->records()) {
+        if (r.value("id").toString() == "malfunction_signal_1.fuse_failure") {
+            QCOMPARE(r.value("device").toString(), QString("ipc300@1"));
+            QCOMPARE(r.value("register").toString(), QString("0x00ED"));
+            QCOMPARE(r.value("kind").toString(), QString("alarm"));
+            states << r.value("state").toString();
+        }
+    }
+    QCOMPARE(states, QStringList({"set", "cleared"}));
+    window->journalView()->setFilter("fuse");
+    QCOMPARE(window->journalView()->visibleRows(), 2);
 }
 
 void tst_Hmi::setpointIsConfirmedByReadBack()
@@ -159,9 +177,34 @@ void tst_Hmi::readOnlyDisablesControlsAndSendsNothing()
     ControlRow *row = page->controls()->row("input_setpoint");
     row->setInputValue("12");
     row->writeInput();
+    QTRY_VERIFY_WITH_TIMEOUT(row->stateText().startsWith("Refused"), 10000);
     QTRY_VERIFY_WITH_TIMEOUT(!page->valuesView()->displayedValue("load_current").isEmpty(), 20000);
     QTest::qWait(500);
     QCOMPARE(m_sim.writeFrames(), before);
+    // The audit log has the refusal.
+    const QJsonObject last = window->auditLog()->records().last();
+    QCOMPARE(last.value("device").toString(), QString("ipc300@1"));
+    QCOMPARE(last.value("entry").toString(), QString("input_setpoint"));
+    QCOMPARE(last.value("new").toString(), QString("12"));
+    QCOMPARE(last.value("result").toString(), QString("read_only"));
+}
+
+void tst_Hmi::journalAndAuditSurviveARestart()
+{
+    // The windows of the tests above are gone; a new one reads their records back.
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    bool refusal = false;
+    for (const QJsonObject &r : window->auditLog()->records())
+        refusal |= r.value("result").toString() == "read_only";
+    QVERIFY(refusal);
+    bool cleared = false;
+    for (const QJsonObject &r : window->alarmJournal()->records())
+        cleared |= r.value("id").toString() == "malfunction_signal_1.fuse_failure" && r.value("state").toString() == "cleared";
+    QVERIFY(cleared);
+    window->showDevice("ipc300", 1);
+    window->auditView()->setFilter("read_only");
+    QVERIFY(window->auditView()->visibleRows() >= 1);
 }
 
 void tst_Hmi::errorValueShowsAsOverrange()

@@ -3,6 +3,7 @@
 #include "commandlinetool.h"
 #include "testpeers.h"
 
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -58,8 +59,10 @@ private slots:
     void restoreRefusesOtherFamilyAndVersion();
 
 private:
+    QTemporaryDir m_logs;
     TestLine m_line;
     SimulatorPeer m_sim;
+    QList<QJsonObject> auditRecords() const;
     QStringList port() const { return {"--port", m_line.masterEnd(), "--baud", "19200"}; }
 };
 
@@ -67,8 +70,22 @@ void tst_JumoctlLine::initTestCase()
 {
     qputenv("JUMO_MAP_PATH", "");
     qputenv("XDG_DATA_HOME", QByteArray(QDir::tempPath().toUtf8() + "/jumo-test-no-maps"));
+    qputenv("JUMO_LOG_DIR", m_logs.path().toUtf8());
     QVERIFY(m_line.start());
     QVERIFY(m_sim.startOneOfEachFamily(m_line.deviceEnd()));
+}
+
+QList<QJsonObject> tst_JumoctlLine::auditRecords() const
+{
+    QList<QJsonObject> records;
+    QFile file(m_logs.filePath("write-audit.jsonl"));
+    if (file.open(QIODevice::ReadOnly)) {
+        for (const QByteArray &line : file.readAll().split('\n')) {
+            if (!line.isEmpty())
+                records << QJsonDocument::fromJson(line).object();
+        }
+    }
+    return records;
 }
 
 void tst_JumoctlLine::scanFindsEveryFamily()
@@ -129,6 +146,15 @@ void tst_JumoctlLine::writeIsConfirmed()
     const Run check = run(QStringList{"read"} + port() + QStringList{"tya200@2", "setpoint"});
     QCOMPARE(check.code, 0);
     QVERIFY2(check.out.contains("setpoint = 42.5 %  [ok]"), qPrintable(check.out));
+    // Audited: device, entry, the value it replaced, the new one, the result.
+    const QList<QJsonObject> audit = auditRecords();
+    QVERIFY(audit.size() >= 2);
+    const QJsonObject &setpoint = audit.at(audit.size() - 2);
+    QCOMPARE(setpoint.value("device").toString(), QString("tya200@2"));
+    QCOMPARE(setpoint.value("entry").toString(), QString("setpoint"));
+    QCOMPARE(setpoint.value("new").toString(), QString("42.5"));
+    QVERIFY(!setpoint.value("old").toString().isEmpty());   // read before the write
+    QCOMPARE(setpoint.value("result").toString(), QString("confirmed"));
 }
 
 void tst_JumoctlLine::readOnlyWriteSendsNothing()
@@ -138,6 +164,8 @@ void tst_JumoctlLine::readOnlyWriteSendsNothing()
     QCOMPARE(r.code, 1);
     QVERIFY2(r.err.contains("read-only mode"), qPrintable(r.err));
     QCOMPARE(m_sim.writeFrames(), before);
+    QCOMPARE(auditRecords().last().value("result").toString(), QString("read_only"));
+    QCOMPARE(auditRecords().last().value("entry").toString(), QString("input_setpoint"));
 }
 
 void tst_JumoctlLine::monitorJsonl()

@@ -1,0 +1,54 @@
+#include "alarmjournal.h"
+
+namespace jumo {
+
+AlarmJournal::AlarmJournal(Bus *bus, EventLog *log, QObject *parent) : QObject(parent), m_bus(bus), m_log(log)
+{
+    connect(m_bus, &Bus::entriesUpdated, this, &AlarmJournal::onEntriesUpdated);
+}
+
+QStringList AlarmJournal::columns()
+{
+    return {QStringLiteral("time"), QStringLiteral("device"), QStringLiteral("register"), QStringLiteral("bit"),
+            QStringLiteral("id"),   QStringLiteral("label"),  QStringLiteral("kind"),     QStringLiteral("state")};
+}
+
+void AlarmJournal::onEntriesUpdated(DeviceId device, const QStringList &ids)
+{
+    const auto map = m_bus->deviceMap(device);
+    if (!map)
+        return;
+    const QString deviceName = QStringLiteral("%1@%2").arg(map->family).arg(m_bus->deviceAddress(device));
+    for (const QString &id : ids) {
+        const RegisterEntry *e = map->entry(id);
+        if (!e || e->type != ValueType::Bitfield || e->isCommand())
+            continue;
+        const EntryState *s = m_bus->entryState(device, id);
+        if (!s || !s->isCurrent())
+            continue;   // no reading, no event: a lost reply changes no bit
+        const QString key = deviceName + QLatin1Char('/') + id;
+        const bool firstSight = !m_last.contains(key);
+        const quint32 before = m_last.value(key);
+        const quint32 now = s->value.raw;
+        m_last.insert(key, now);
+        for (const BitDefinition &b : e->bits) {
+            if (b.reserved || b.width != 1 || b.kind == BitKind::Command)
+                continue;
+            const bool on = now & b.mask();
+            const bool was = before & b.mask();
+            // At the first reading only bits that are on are news.
+            if (firstSight ? !on : on == was)
+                continue;
+            m_log->append(QJsonObject{{"device", deviceName},
+                                      {"register", formatAddress(e->address)},
+                                      {"bit", b.bit},
+                                      {"id", id + QLatin1Char('.') + b.id},
+                                      {"label", b.label},
+                                      {"kind", bitKindName(b.kind)},
+                                      {"state", on ? (firstSight ? QStringLiteral("set at first reading") : QStringLiteral("set"))
+                                                   : QStringLiteral("cleared")}});
+        }
+    }
+}
+
+} // namespace jumo

@@ -1,0 +1,29 @@
+// The alarm journal: every alarm, warning and status bit of every polled device that
+// sets or clears, with time and device, in an EventLog that survives restarts.
+#pragma once
+
+#include "bus.h"
+#include "eventlog.h"
+
+#include <QHash>
+
+namespace jumo {
+
+class AlarmJournal : public QObject
+{
+    Q_OBJECT
+
+public:
+    AlarmJournal(Bus *bus, EventLog *log, QObject *parent = nullptr);
+
+    static QStringList columns();
+
+private:
+    void onEntriesUpdated(DeviceId device, const QStringList &ids);
+
+    Bus *m_bus;
+    EventLog *m_log;
+    QHash<QString, quint32> m_last;   // "device/entry" -> raw value last seen
+};
+
+} // namespace jumo

@@ -1,0 +1,45 @@
+#include "writeaudit.h"
+
+namespace jumo {
+
+WriteAudit::WriteAudit(Bus *bus, EventLog *log, QObject *parent) : QObject(parent), m_log(log)
+{
+    connect(bus, &Bus::writeRequested, this,
+            [this](int ticket, const QString &device, const QString &entry, const QString &value, const QString &previous) {
+                m_pending.insert(ticket, Pending{device, entry, value, previous});
+            });
+    connect(bus, &Bus::writeFinished, this, [this](int ticket, const WriteOutcome &outcome) {
+        const auto it = m_pending.constFind(ticket);
+        if (it == m_pending.cend())
+            return;
+        m_log->append(QJsonObject{{"device", it->device},
+                                  {"entry", it->entry},
+                                  {"old", it->previous},
+                                  {"new", it->value},
+                                  {"result", resultName(outcome.result)},
+                                  {"message", outcome.message}});
+        m_pending.erase(it);
+    });
+}
+
+QString WriteAudit::resultName(WriteOutcome::Result result)
+{
+    switch (result) {
+    case WriteOutcome::Result::Confirmed: return QStringLiteral("confirmed");
+    case WriteOutcome::Result::Accepted: return QStringLiteral("accepted");
+    case WriteOutcome::Result::Mismatch: return QStringLiteral("mismatch");
+    case WriteOutcome::Result::Refused: return QStringLiteral("refused");
+    case WriteOutcome::Result::Failed: return QStringLiteral("failed");
+    case WriteOutcome::Result::ReadOnlyMode: return QStringLiteral("read_only");
+    case WriteOutcome::Result::Invalid: return QStringLiteral("invalid");
+    }
+    return {};
+}
+
+QStringList WriteAudit::columns()
+{
+    return {QStringLiteral("time"), QStringLiteral("device"), QStringLiteral("entry"), QStringLiteral("old"),
+            QStringLiteral("new"), QStringLiteral("result"), QStringLiteral("message")};
+}
+
+} // namespace jumo
