@@ -222,6 +222,7 @@ Commands on a serial line (all take --port PATH --baud N --format 8N1|8E1|8O1|8N
   diff DEVICE FILE         compare a device with a file (or FILE FILE)
   restore DEVICE FILE [--yes]
                            write what differs, each verified by read-back
+  report DEVICE FILE       commissioning report as PDF (.pdf) or HTML
 
 &apos;jumoctl COMMAND --help&apos; describes a command.
 </source>
@@ -247,12 +248,13 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
   diff DEVICE FILE         ein Gerät mit einer Datei vergleichen (oder FILE FILE)
   restore DEVICE FILE [--yes]
                            Abweichendes schreiben, jeweils durch Rücklesen geprüft
+  report DEVICE FILE       Inbetriebnahmebericht als PDF (.pdf) oder HTML
 
 &apos;jumoctl COMMAND --help&apos; beschreibt einen Befehl.
 </translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+50"/>
         <source>warning: refused map file: %1</source>
         <translation>Warnung: Map-Datei abgelehnt: %1</translation>
     </message>
@@ -284,6 +286,137 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
         <location line="-1"/>
         <source>jumoctl %1: wrong number of arguments</source>
         <translation>jumoctl %1: falsche Anzahl von Argumenten</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::CommissioningReport</name>
+    <message>
+        <location filename="../lib/commissioningreport.cpp" line="+30"/>
+        <source>not read</source>
+        <translation>nicht gelesen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>(last read failed: %1)</source>
+        <translation>(letztes Lesen fehlgeschlagen: %1)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location line="+1"/>
+        <location filename="../ui/reportwriter.cpp" line="+20"/>
+        <source>Commissioning report</source>
+        <translation>Inbetriebnahmebericht</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>address %1</source>
+        <translation>Adresse %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Made %1</source>
+        <translation>Erstellt %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Identity</source>
+        <translation>Identität</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The family has no identity registers.</source>
+        <translation>Die Gerätefamilie hat keine Identitätsregister.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Active alarms and warnings</source>
+        <translation>Aktive Alarme und Warnungen</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>bit %1</source>
+        <translation>Bit %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+30"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location line="-25"/>
+        <source>Register</source>
+        <translation>Register</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Id</source>
+        <translation>Kennung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Signal</source>
+        <translation>Signal</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Storage</source>
+        <translation>Speicherort</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Live values</source>
+        <translation>Live-Werte</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Writes of the session</source>
+        <translation>Schreibvorgänge der Sitzung</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Entry</source>
+        <translation>Eintrag</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Old value</source>
+        <translation>Alter Wert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>New value</source>
+        <translation>Neuer Wert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Result</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <location filename="../ui/reportwriter.cpp" line="+9"/>
+        <source>cannot write %1</source>
+        <translation>%1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
 </context>
 <context>
@@ -589,7 +722,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+73"/>
+        <location filename="../app/cli/linecommands.cpp" line="+78"/>
         <source>Serial port, e.g. /dev/ttyUSB0 (required).</source>
         <translation>Serielle Schnittstelle, z. B. /dev/ttyUSB0 (erforderlich).</translation>
     </message>
@@ -758,11 +891,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <message>
         <location line="+1"/>
         <location line="+334"/>
+        <location line="+128"/>
         <source>FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="-332"/>
+        <location line="-460"/>
         <source>Entry ids.</source>
         <translation>Kennungen der Einträge.</translation>
     </message>
@@ -998,8 +1132,28 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <source>nothing written</source>
         <translation>nichts geschrieben</translation>
     </message>
-    <message numerus="yes">
+    <message>
         <location line="+27"/>
+        <source>Writes the commissioning report of a device: identity, parameters, live values, active alarms and today&apos;s writes. FILE ending in .pdf gives PDF, else HTML.</source>
+        <translation>Schreibt den Inbetriebnahmebericht eines Geräts: Identität, Parameter, Live-Werte, aktive Alarme und die heutigen Schreibvorgänge. Endet FILE auf .pdf, entsteht ein PDF, sonst HTML.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Report file (.pdf or .html).</source>
+        <translation>Berichtsdatei (.pdf oder .html).</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>%1 did not answer: no report written</source>
+        <translation>%1 hat nicht geantwortet: kein Bericht geschrieben</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>report of %1 written to %2</source>
+        <translation>Bericht von %1 in %2 geschrieben</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
         <source>%n parameter(s) restored and verified</source>
         <translation>
             <numerusform>%n Parameter wiederhergestellt und geprüft</numerusform>
@@ -1083,7 +1237,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::MainWindow</name>
     <message>
-        <location filename="../ui/mainwindow.cpp" line="+57"/>
+        <location filename="../ui/mainwindow.cpp" line="+60"/>
         <location line="+4"/>
         <source>Time</source>
         <translation>Zeit</translation>
@@ -1166,12 +1320,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+157"/>
+        <location line="+170"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-152"/>
+        <location line="-165"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -1242,6 +1396,32 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Commissioning &amp;report of the shown device...</source>
+        <translation>Inbetriebnahme&amp;bericht des angezeigten Geräts...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+8"/>
+        <source>Report</source>
+        <translation>Bericht</translation>
+    </message>
+    <message>
+        <location line="-8"/>
+        <source>Open the page of a device first.</source>
+        <translation>Zuerst die Seite eines Geräts öffnen.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Commissioning report</source>
+        <translation>Inbetriebnahmebericht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PDF (*.pdf);;HTML (*.html)</source>
+        <translation>PDF (*.pdf);;HTML (*.html)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
@@ -1344,6 +1524,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+0"/>
         <source>Connect to a line first.</source>
         <translation>Zuerst mit einer Leitung verbinden.</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>no device %1@%2</source>
+        <translation>kein Gerät %1@%2</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,8 @@
 #include "mainwindow.h"
 
 #include "adddevicedialog.h"
+#include "commissioningreport.h"
+#include "reportwriter.h"
 #include "alarmbitsmodel.h"
 #include "connectionbar.h"
 #include "demoline.h"
@@ -17,6 +19,7 @@
 #include "trafficview.h"
 
 #include <QApplication>
+#include <QFileDialog>
 #include <QCloseEvent>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -188,6 +191,19 @@ void MainWindow::buildMenus()
     QMenu *devices = menuBar()->addMenu(tr("&Devices"));
     devices->addAction(tr("&Scan the line..."), this, &MainWindow::openScanDialog);
     devices->addAction(tr("&Remove the shown device"), this, &MainWindow::removeCurrentDevice);
+    devices->addAction(tr("Commissioning &report of the shown device..."), this, [this] {
+        const int index = m_navigation->currentRow() - firstDeviceRow;
+        if (index < 0 || index >= m_devices.size()) {
+            QMessageBox::information(this, tr("Report"), tr("Open the page of a device first."));
+            return;
+        }
+        const DeviceId id = m_devices[index].id;
+        const QString path = QFileDialog::getSaveFileName(this, tr("Commissioning report"), QString(),
+                                                          tr("PDF (*.pdf);;HTML (*.html)"));
+        QString error;
+        if (!path.isEmpty() && !writeReport(m_bus.deviceMap(id)->family, m_bus.deviceAddress(id), path, &error))
+            QMessageBox::warning(this, tr("Report"), error);
+    });
     QMenu *language = menuBar()->addMenu(tr("&Language"));
     for (const auto &[code, name] : {std::pair{"", QT_TR_NOOP("System language")}, std::pair{"en", "English"},
                                      std::pair{"de", "Deutsch"}}) {
@@ -397,6 +413,28 @@ void MainWindow::openScanDialog()
             addDevice(map, address);
     });
     dialog->show();
+}
+
+bool MainWindow::writeReport(const QString &family, quint8 address, const QString &path, QString *error)
+{
+    for (const DeviceEntry &d : std::as_const(m_devices)) {
+        if (m_bus.deviceMap(d.id)->family != family || m_bus.deviceAddress(d.id) != address)
+            continue;
+        CommissioningReport report(*m_bus.deviceMap(d.id), address,
+                                   [this, id = d.id](const QString &entry) { return m_bus.entryState(id, entry); });
+        const QString device = QStringLiteral("%1@%2").arg(family).arg(address);
+        QList<QJsonObject> writes;
+        for (const QJsonObject &r : m_auditLog->records()) {
+            if (r.value("device").toString() == device
+                && QDateTime::fromString(r.value("time").toString(), Qt::ISODateWithMs) >= m_sessionStart)
+                writes << r;
+        }
+        report.setWrites(writes);
+        return jumo::writeReport(report.html(), path, error);
+    }
+    if (error)
+        *error = tr("no device %1@%2").arg(family).arg(address);
+    return false;
 }
 
 void MainWindow::restoreSettings()

@@ -5,6 +5,7 @@
 
 #include "bus.h"
 
+#include <QDateTime>
 #include <QMainWindow>
 #include <QSettings>
 
@@ -62,6 +63,8 @@ public:
     void showDevice(DevicePage *page);
     void showDevice(const QString &family, quint8 address);
     void openScanDialog();
+    // The commissioning report of a device, with the writes since this window opened.
+    bool writeReport(const QString &family, quint8 address, const QString &path, QString *error);
 
 signals:
     void demoReady();
@@ -114,6 +117,7 @@ private:
     int m_requestsAtLastStatus = 0;
     QString m_lastError;
     qint64 m_lastErrorShownMs = -1;
+    QDateTime m_sessionStart = QDateTime::currentDateTimeUtc();
 };
 
 } // namespace jumo

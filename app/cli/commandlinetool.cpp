@@ -37,6 +37,7 @@ QString CommandLineTool::usage() const
               "  diff DEVICE FILE         compare a device with a file (or FILE FILE)\n"
               "  restore DEVICE FILE [--yes]\n"
               "                           write what differs, each verified by read-back\n"
+              "  report DEVICE FILE       commissioning report as PDF (.pdf) or HTML\n"
               "\n"
               "'jumoctl COMMAND --help' describes a command.\n");
 }

@@ -1,9 +1,11 @@
 #include "linecommands.h"
 
 #include "commandparser.h"
+#include "commissioningreport.h"
 #include "devicescanner.h"
 #include "eventlog.h"
 #include "familyregistry.h"
+#include "reportwriter.h"
 #include "writeaudit.h"
 
 #include <QDateTime>
@@ -50,7 +52,8 @@ LineCommands::~LineCommands() = default;
 QStringList LineCommands::commands()
 {
     return {QStringLiteral("scan"),   QStringLiteral("read"), QStringLiteral("write"),  QStringLiteral("dump"),
-            QStringLiteral("monitor"), QStringLiteral("backup"), QStringLiteral("diff"), QStringLiteral("restore")};
+            QStringLiteral("monitor"), QStringLiteral("backup"), QStringLiteral("diff"), QStringLiteral("restore"),
+            QStringLiteral("report")};
 }
 
 std::optional<int> LineCommands::run(const QString &command, const QStringList &arguments)
@@ -65,6 +68,8 @@ std::optional<int> LineCommands::run(const QString &command, const QStringList &
         return write(arguments);
     if (command == QLatin1String("monitor"))
         return monitor(arguments);
+    if (command == QLatin1String("report"))
+        return report(arguments);
     return parameters(command, arguments);
 }
 
@@ -705,6 +710,60 @@ std::optional<int> LineCommands::parameters(const QString &command, const QStrin
         });
         restoreNext();
     });
+    return std::nullopt;
+}
+
+std::optional<int> LineCommands::report(const QStringList &arguments)
+{
+    CommandParser parser(QStringLiteral("report"),
+                         tr("Writes the commissioning report of a device: identity, parameters, live values, active "
+                            "alarms and today's writes. FILE ending in .pdf gives PDF, else HTML."));
+    addLineOptions(parser);
+    parser.addPositionalArgument(QStringLiteral("device"), tr("FAMILY@ADDRESS, e.g. ipc300@1."));
+    parser.addPositionalArgument(QStringLiteral("file"), tr("Report file (.pdf or .html)."));
+    if (const auto stop = parser.parseArguments(arguments, m_out, m_err, 2, 2))
+        return stop;
+    Target target;
+    if (!parseDevice(parser.positionalArguments().at(0), target))
+        return 2;
+    if (const auto stop = openLine(parser))
+        return stop;
+    const QString path = parser.positionalArguments().at(1);
+    m_bus.setPolling(false);
+    target.id = m_bus.addDevice(target.map, target.address);
+    m_targets = {target};
+    connect(&m_bus, &Bus::pollCycleFinished, this, [this, path](DeviceId id, double) {
+        const Target &t = m_targets.first();
+        if (id != t.id)
+            return;
+        const DeviceStatistics *stats = m_bus.statistics(id);
+        if (stats->responses == 0) {
+            m_err << tr("%1 did not answer: no report written").arg(deviceName(*t.map, t.address)) << Qt::endl;
+            finish(1);
+            return;
+        }
+        CommissioningReport report(*t.map, t.address, [this, id](const QString &entry) { return m_bus.entryState(id, entry); });
+        // The command line has no session: its writes of today stand in for one.
+        const EventLog audit(EventLog::defaultFolder() + QStringLiteral("/write-audit.jsonl"));
+        const QString device = deviceName(*t.map, t.address);
+        const QDateTime since = QDateTime(QDate::currentDate(), QTime(0, 0));
+        QList<QJsonObject> writes;
+        for (const QJsonObject &r : audit.records()) {
+            if (r.value("device").toString() == device
+                && QDateTime::fromString(r.value("time").toString(), Qt::ISODateWithMs) >= since)
+                writes << r;
+        }
+        report.setWrites(writes);
+        QString error;
+        if (!writeReport(report.html(), path, &error)) {
+            m_err << error << Qt::endl;
+            finish(1);
+            return;
+        }
+        m_out << tr("report of %1 written to %2").arg(device, path) << Qt::endl;
+        finish(0);
+    });
+    m_bus.requestCycle(target.id);
     return std::nullopt;
 }
 

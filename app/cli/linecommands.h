@@ -50,6 +50,7 @@ private:
     std::optional<int> read(const QStringList &arguments, bool dump);
     std::optional<int> write(const QStringList &arguments);
     std::optional<int> monitor(const QStringList &arguments);
+    std::optional<int> report(const QStringList &arguments);
     std::optional<int> parameters(const QString &command, const QStringList &arguments);
     // Reads the parameters and identity of the target once; then calls done.
     void readParameters(const std::function<void(const ParameterSet &, const QStringList &failed)> &done);

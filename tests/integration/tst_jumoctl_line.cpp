@@ -5,6 +5,7 @@
 
 #include <QFile>
 #include <QJsonArray>
+#include <QProcess>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
@@ -57,6 +58,7 @@ private slots:
     void badPortIsAClearError();
     void backupChangeDiffRestore();
     void restoreRefusesOtherFamilyAndVersion();
+    void reportAsHtmlAndPdf();
 
 private:
     QTemporaryDir m_logs;
@@ -290,6 +292,36 @@ void tst_JumoctlLine::restoreRefusesOtherFamilyAndVersion()
     QCOMPARE(r.code, 1);
     QVERIFY2(r.err.contains("software version 124.00.00, the device runs 123.01.01"), qPrintable(r.err));
     QCOMPARE(m_sim.writeFrames(), writesBefore);
+}
+
+void tst_JumoctlLine::reportAsHtmlAndPdf()
+{
+    QTemporaryDir dir;
+    QCOMPARE(run(QStringList{"write"} + port() + QStringList{"ipc300@1", "max_alarm_limit=55"}).code, 0);
+    m_sim.line().device(1)->setFlag("malfunction_signal_1.igbt_break", true);
+    Run r = run(QStringList{"report"} + port() + QStringList{"ipc300@1", dir.filePath("report.html")});
+    m_sim.line().device(1)->setFlag("malfunction_signal_1.igbt_break", false);
+    QCOMPARE(r.code, 0);
+    QFile html(dir.filePath("report.html"));
+    QVERIFY(html.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(html.readAll());
+    QVERIFY(text.contains("Commissioning report"));
+    QVERIFY(text.contains("SIM-0000001"));                 // identity: fabrication number
+    QVERIFY(text.contains("<td>max_alarm_limit</td>"));    // a parameter...
+    QVERIFY(text.contains("<td>55 A</td>") || text.contains("<td>55</td>"));
+    QVERIFY(text.contains("IGBT break"));                  // an active alarm
+    QVERIFY(text.contains("<td>confirmed: "));             // the write of today
+
+    // PDF needs QtGui: the test process is GUI-less, so the real executable makes it.
+    QProcess p;
+    p.start(QStringLiteral(JUMOCTL_PATH), QStringList{"report"} + port() + QStringList{"ipc300@1", dir.filePath("report.pdf")});
+    // The simulator lives in this process: keep its event loop running meanwhile.
+    QTRY_VERIFY_WITH_TIMEOUT(p.state() == QProcess::NotRunning, 60000);
+    QCOMPARE(p.exitCode(), 0);
+    QFile pdf(dir.filePath("report.pdf"));
+    QVERIFY(pdf.open(QIODevice::ReadOnly));
+    QVERIFY(pdf.read(5) == "%PDF-");
+    QVERIFY(pdf.size() > 10000);
 }
 
 QTEST_GUILESS_MAIN(tst_JumoctlLine)

@@ -1,0 +1,115 @@
+#include "commissioningreport.h"
+
+#include "parameterset.h"
+
+namespace jumo {
+
+namespace {
+
+QString translated(const QString &text)
+{
+    return QCoreApplication::translate("jumo::maps", text.toUtf8().constData());
+}
+
+QString cell(const QString &text)
+{
+    return QStringLiteral("<td>%1</td>").arg(text.toHtmlEscaped());
+}
+
+} // namespace
+
+CommissioningReport::CommissioningReport(const RegisterMap &map, quint8 address, StateLookup states)
+    : m_map(map), m_address(address), m_states(std::move(states))
+{
+}
+
+QString CommissioningReport::valueText(const RegisterEntry &entry) const
+{
+    const EntryState *s = m_states(entry.id);
+    if (!s || !s->hasValue())
+        return tr("not read");
+    QString text = s->value.display;
+    if (s->value.isOk() && !entry.unit.isEmpty())
+        text += QLatin1Char(' ') + entry.unit;
+    if (!s->isCurrent())
+        text += QLatin1Char(' ') + tr("(last read failed: %1)").arg(s->statusName());
+    return text;
+}
+
+QString CommissioningReport::html() const
+{
+    QString h;
+    h += QStringLiteral("<html><head><meta charset=\"utf-8\"><title>%1</title>"
+                        "<style>body{font-family:sans-serif;font-size:10pt} table{border-collapse:collapse;width:100%}"
+                        "td,th{padding:2px 4px;text-align:left} th{background:#ddd}"
+                        "h1{font-size:16pt} h2{font-size:12pt;margin-top:14pt}</style></head><body>")
+                 .arg(tr("Commissioning report").toHtmlEscaped());
+    h += QStringLiteral("<h1>%1</h1>").arg(tr("Commissioning report").toHtmlEscaped());
+    h += QStringLiteral("<p><b>%1</b>, %2<br>%3</p>")
+                 .arg(m_map.name.toHtmlEscaped(), tr("address %1").arg(m_address).toHtmlEscaped(),
+                      tr("Made %1").arg(m_time.toString(Qt::ISODate)).toHtmlEscaped());
+
+    h += QStringLiteral("<h2>%1</h2><table border=\"1\" cellspacing=\"0\">").arg(tr("Identity").toHtmlEscaped());
+    for (const QString &id : m_map.identity) {
+        const RegisterEntry *e = m_map.entry(id);
+        h += QStringLiteral("<tr>") + cell(translated(e->label)) + cell(valueText(*e).trimmed()) + QStringLiteral("</tr>");
+    }
+    if (m_map.identity.isEmpty())
+        h += QStringLiteral("<tr><td>%1</td></tr>").arg(tr("The family has no identity registers.").toHtmlEscaped());
+    h += QStringLiteral("</table>");
+
+    h += QStringLiteral("<h2>%1</h2><table border=\"1\" cellspacing=\"0\">").arg(tr("Active alarms and warnings").toHtmlEscaped());
+    int active = 0;
+    for (const RegisterEntry &e : m_map.entries()) {
+        if (e.type != ValueType::Bitfield || !e.isReadable() || e.isCommand())
+            continue;
+        const EntryState *s = m_states(e.id);
+        if (!s || !s->hasValue())
+            continue;
+        for (const BitDefinition &b : e.bits) {
+            if (b.reserved || b.width != 1 || (b.kind != BitKind::Alarm && b.kind != BitKind::Warning))
+                continue;
+            if (s->value.raw & b.mask()) {
+                ++active;
+                h += QStringLiteral("<tr>") + cell(formatAddress(e.address)) + cell(tr("bit %1").arg(b.bit))
+                        + cell(translated(b.label)) + cell(bitKindName(b.kind)) + QStringLiteral("</tr>");
+            }
+        }
+    }
+    if (active == 0)
+        h += QStringLiteral("<tr><td>%1</td></tr>").arg(tr("none").toHtmlEscaped());
+    h += QStringLiteral("</table>");
+
+    const auto table = [&](const QString &title, const std::function<bool(const RegisterEntry &)> &wanted) {
+        h += QStringLiteral("<h2>%1</h2><table border=\"1\" cellspacing=\"0\"><tr><th>%2</th><th>%3</th><th>%4</th><th>%5</th><th>%6</th></tr>")
+                     .arg(title.toHtmlEscaped(), tr("Register").toHtmlEscaped(), tr("Id").toHtmlEscaped(),
+                          tr("Signal").toHtmlEscaped(), tr("Value").toHtmlEscaped(), tr("Storage").toHtmlEscaped());
+        for (const RegisterEntry &e : m_map.entries()) {
+            if (!wanted(e))
+                continue;
+            h += QStringLiteral("<tr>") + cell(formatAddress(e.address)) + cell(e.id) + cell(translated(e.label))
+                    + cell(valueText(e).trimmed()) + cell(storageName(e.storage)) + QStringLiteral("</tr>");
+        }
+        h += QStringLiteral("</table>");
+    };
+    table(tr("Parameters"), [](const RegisterEntry &e) { return ParameterSet::isParameter(e); });
+    table(tr("Live values"), [](const RegisterEntry &e) {
+        return e.isReadable() && !e.reserved && e.alias.isEmpty() && !ParameterSet::isParameter(e);
+    });
+
+    h += QStringLiteral("<h2>%1</h2><table border=\"1\" cellspacing=\"0\"><tr><th>%2</th><th>%3</th><th>%4</th><th>%5</th><th>%6</th></tr>")
+                 .arg(tr("Writes of the session").toHtmlEscaped(), tr("Time").toHtmlEscaped(), tr("Entry").toHtmlEscaped(),
+                      tr("Old value").toHtmlEscaped(), tr("New value").toHtmlEscaped(), tr("Result").toHtmlEscaped());
+    for (const QJsonObject &w : m_writes) {
+        h += QStringLiteral("<tr>") + cell(w.value("time").toString()) + cell(w.value("entry").toString())
+                + cell(w.value("old").toString()) + cell(w.value("new").toString())
+                + cell(w.value("result").toString() + QStringLiteral(": ") + w.value("message").toString())
+                + QStringLiteral("</tr>");
+    }
+    if (m_writes.isEmpty())
+        h += QStringLiteral("<tr><td colspan=\"5\">%1</td></tr>").arg(tr("none").toHtmlEscaped());
+    h += QStringLiteral("</table></body></html>");
+    return h;
+}
+
+} // namespace jumo
