@@ -579,6 +579,96 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
 </context>
 <context>
+    <name>jumo::DataLogger</name>
+    <message>
+        <location filename="../lib/datalogger.cpp" line="+18"/>
+        <source>choose at least one value, an interval of at least 100 ms and files of at least 1 KiB</source>
+        <translation>mindestens einen Wert, ein Intervall von mindestens 100 ms und Dateien von mindestens 1 KiB wählen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>cannot create the folder %1</source>
+        <translation>der Ordner %1 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <location line="+39"/>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::DataLoggingDialog</name>
+    <message>
+        <location filename="../ui/dataloggingdialog.cpp" line="+22"/>
+        <source>Data logging</source>
+        <translation>Datenaufzeichnung</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> MiB</source>
+        <translation> MiB</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Stopped: %1</source>
+        <translation>Angehalten: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Interval:</source>
+        <translation>Intervall:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>New file after:</source>
+        <translation>Neue Datei nach:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Folder:</source>
+        <translation>Ordner:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Values to log (a new file also starts each day):</source>
+        <translation>Aufzuzeichnende Werte (jeden Tag beginnt auch eine neue Datei):</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+13"/>
+        <source>Stopped; %n row(s) written.</source>
+        <translation>
+            <numerusform>Angehalten; %n Zeile geschrieben.</numerusform>
+            <numerusform>Angehalten; %n Zeilen geschrieben.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Not started: %1</source>
+        <translation>Nicht gestartet: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Logging to %1</source>
+        <translation>Aufzeichnung nach %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Stop logging</source>
+        <translation>Aufzeichnung beenden</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Start logging</source>
+        <translation>Aufzeichnung starten</translation>
+    </message>
+</context>
+<context>
     <name>jumo::DemoLine</name>
     <message>
         <location filename="../lib/sim/demoline.cpp" line="+20"/>
@@ -1237,7 +1327,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::MainWindow</name>
     <message>
-        <location filename="../ui/mainwindow.cpp" line="+60"/>
+        <location filename="../ui/mainwindow.cpp" line="+62"/>
         <location line="+4"/>
         <source>Time</source>
         <translation>Zeit</translation>
@@ -1320,12 +1410,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+170"/>
+        <location line="+184"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-165"/>
+        <location line="-179"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -1396,6 +1486,16 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>&amp;Data logging of the shown device...</source>
+        <translation>&amp;Datenaufzeichnung des angezeigten Geräts...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Data logging</source>
+        <translation>Datenaufzeichnung</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Commissioning &amp;report of the shown device...</source>
         <translation>Inbetriebnahme&amp;bericht des angezeigten Geräts...</translation>
     </message>
@@ -1406,7 +1506,8 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Bericht</translation>
     </message>
     <message>
-        <location line="-8"/>
+        <location line="-22"/>
+        <location line="+14"/>
         <source>Open the page of a device first.</source>
         <translation>Zuerst die Seite eines Geräts öffnen.</translation>
     </message>
@@ -1516,7 +1617,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>keine Fehler</translation>
     </message>
     <message>
-        <location line="+98"/>
+        <location line="+100"/>
         <source>Scan</source>
         <translation>Suchen</translation>
     </message>

@@ -5,6 +5,8 @@
 #include "reportwriter.h"
 #include "alarmbitsmodel.h"
 #include "connectionbar.h"
+#include "datalogger.h"
+#include "dataloggingdialog.h"
 #include "demoline.h"
 #include "devicepage.h"
 #include "devicetile.h"
@@ -191,6 +193,20 @@ void MainWindow::buildMenus()
     QMenu *devices = menuBar()->addMenu(tr("&Devices"));
     devices->addAction(tr("&Scan the line..."), this, &MainWindow::openScanDialog);
     devices->addAction(tr("&Remove the shown device"), this, &MainWindow::removeCurrentDevice);
+    devices->addAction(tr("&Data logging of the shown device..."), this, [this] {
+        const int index = m_navigation->currentRow() - firstDeviceRow;
+        if (index < 0 || index >= m_devices.size()) {
+            QMessageBox::information(this, tr("Data logging"), tr("Open the page of a device first."));
+            return;
+        }
+        // One logger per device, kept while the window lives, so logging goes on when
+        // the dialog is closed.
+        DeviceEntry &d = m_devices[index];
+        if (!d.logger)
+            d.logger = new DataLogger(&m_bus, this);
+        DataLoggingDialog dialog(&m_bus, d.id, d.logger, this);
+        dialog.exec();
+    });
     devices->addAction(tr("Commissioning &report of the shown device..."), this, [this] {
         const int index = m_navigation->currentRow() - firstDeviceRow;
         if (index < 0 || index >= m_devices.size()) {
@@ -318,7 +334,7 @@ bool MainWindow::addDevice(std::shared_ptr<const RegisterMap> map, quint8 addres
     auto *tile = new DeviceTile(*map, address, values, alarms, m_overview);
     m_overview->addTile(tile);
     m_navigation->addItem(QStringLiteral("%1 @ %2").arg(map->name).arg(address));
-    m_devices << DeviceEntry{id, values, alarms, tile, nullptr};
+    m_devices << DeviceEntry{id, values, alarms, tile, nullptr, nullptr};
     const int index = int(m_devices.size()) - 1;
     connect(tile, &DeviceTile::activated, this, [this, index] { m_navigation->setCurrentRow(firstDeviceRow + index); });
     return true;
@@ -396,6 +412,8 @@ void MainWindow::removeCurrentDevice()
     }
     d.values->deleteLater();
     d.alarms->deleteLater();
+    if (d.logger)
+        d.logger->deleteLater();
     delete m_navigation->takeItem(firstDeviceRow + index);
 }
 

@@ -19,6 +19,7 @@ namespace jumo {
 
 class AlarmBitsModel;
 class ConnectionBar;
+class DataLogger;
 class LiveValuesModel;
 class DemoLine;
 class DevicePage;
@@ -82,6 +83,7 @@ private:
         AlarmBitsModel *alarms;
         DeviceTile *tile;
         DevicePage *page;
+        DataLogger *logger;   // made when logging is first asked for
     };
     DevicePage *ensurePage(int index) const;
     void onNavigation(int row);

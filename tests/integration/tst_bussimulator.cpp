@@ -2,6 +2,7 @@
 // float writes, broadcasts, command words, RAM overrides, setpoint hold, the IPC/TYA
 // bus-error keepalive, and a port that goes away and comes back.
 #include "bus.h"
+#include "datalogger.h"
 #include "devicescanner.h"
 #include "rtuframe.h"
 #include "testpeers.h"
@@ -45,6 +46,7 @@ private slots:
     void holdRewritesRamSetpointButNeverEeprom();
     void busErrorKeepalive();
     void lostPortFailsWritesAndComesBack();
+    void dataLoggingRotatesFiles();
 
 private:
     struct Setup
@@ -274,6 +276,52 @@ void tst_BusSimulator::lostPortFailsWritesAndComesBack()
     QTest::qWait(500);
     QCOMPARE(s.sim.writeFrames(), writesBefore);
     QCOMPARE(finished.count(), 1);
+}
+
+void tst_BusSimulator::dataLoggingRotatesFiles()
+{
+    Setup s;
+    QVERIFY(prepare(s, {{"ipc300", 1}}));
+    const DeviceId id = s.bus.addDevice(families().family("ipc300"), 1);
+    s.bus.setPollEntries(id, {"load_current", "load_voltage"});
+    QSignalSpy updated(&s.bus, &Bus::entriesUpdated);
+    QVERIFY(updated.wait(10000));
+    QTemporaryDir dir;
+    DataLogger logger(&s.bus);
+    DataLogger::Settings settings;
+    settings.folder = dir.filePath("log");
+    settings.intervalMs = 100;
+    settings.maxFileBytes = 1024;
+    settings.entries = {{id, "load_current"}, {id, "load_voltage"}};
+    QString error;
+    QVERIFY2(logger.start(settings, &error), qPrintable(error));
+    QTRY_VERIFY_WITH_TIMEOUT(logger.files().size() >= 3, 20000);
+    logger.stop();
+    int rows = 0;
+    for (const QString &path : logger.files()) {
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = f.readAll().split('\n');
+        QCOMPARE(lines.first(), QByteArray("time,device,id,value,unit,status"));
+        for (qsizetype i = 1; i < lines.size(); ++i) {
+            if (lines[i].isEmpty())
+                continue;
+            const QList<QByteArray> fields = lines[i].split(',');
+            QCOMPARE(fields.size(), 6);
+            QCOMPARE(fields[1], QByteArray("ipc300@1"));
+            QCOMPARE(fields[5], QByteArray("ok"));
+            bool ok = false;
+            fields[3].toDouble(&ok);
+            QVERIFY(ok);
+            ++rows;
+        }
+        QVERIFY(f.size() <= 1024 + 200);   // rotated once past the limit
+    }
+    QCOMPARE(rows, logger.rowsWritten());
+    // Bad settings are refused with a reason.
+    settings.entries.clear();
+    QVERIFY(!logger.start(settings, &error));
+    QVERIFY(error.contains("at least one value"));
 }
 
 QTEST_GUILESS_MAIN(tst_BusSimulator)

@@ -1,0 +1,52 @@
+// Logs chosen live values of chosen devices to CSV files at a fixed interval, starting a
+// new file when one grows past a size or the day changes. Rows are the same as
+// "jumoctl monitor --csv": time,device,id,value,unit,status.
+#pragma once
+
+#include "bus.h"
+
+#include <QDate>
+#include <QFile>
+#include <QTimer>
+
+namespace jumo {
+
+class DataLogger : public QObject
+{
+    Q_OBJECT
+
+public:
+    struct Settings
+    {
+        QString folder;
+        int intervalMs = 1000;
+        qint64 maxFileBytes = 10 * 1024 * 1024;
+        QList<QPair<DeviceId, QString>> entries;   // device, entry id
+    };
+
+    DataLogger(Bus *bus, QObject *parent = nullptr);
+
+    bool start(const Settings &settings, QString *error);
+    void stop();
+    bool isRunning() const { return m_timer.isActive(); }
+    QString currentFile() const { return m_file.fileName(); }
+    QStringList files() const { return m_files; }
+    int rowsWritten() const { return m_rows; }
+
+signals:
+    void failed(const QString &reason);
+
+private:
+    void sample();
+    bool openNewFile(QString *error);
+
+    Bus *m_bus;
+    Settings m_settings;
+    QTimer m_timer;
+    QFile m_file;
+    QDate m_fileDate;
+    QStringList m_files;
+    int m_rows = 0;
+};
+
+} // namespace jumo

@@ -1,0 +1,39 @@
+// Starts and stops CSV data logging of chosen values of a device: which values, how
+// often, where, and how large a file may grow before the next one starts.
+#pragma once
+
+#include "datalogger.h"
+
+#include <QDialog>
+
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QPushButton;
+class QSpinBox;
+
+namespace jumo {
+
+class DataLoggingDialog : public QDialog
+{
+    Q_OBJECT
+
+public:
+    DataLoggingDialog(Bus *bus, DeviceId device, DataLogger *logger, QWidget *parent = nullptr);
+
+private:
+    void toggle();
+    void refresh();
+
+    Bus *m_bus;
+    DeviceId m_device;
+    DataLogger *m_logger;
+    QListWidget *m_entries;
+    QSpinBox *m_interval;
+    QSpinBox *m_maxSize;
+    QLineEdit *m_folder;
+    QPushButton *m_startStop;
+    QLabel *m_state;
+};
+
+} // namespace jumo
