@@ -1327,7 +1327,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::MainWindow</name>
     <message>
-        <location filename="../ui/mainwindow.cpp" line="+62"/>
+        <location filename="../ui/mainwindow.cpp" line="+63"/>
         <location line="+4"/>
         <source>Time</source>
         <translation>Zeit</translation>
@@ -1410,12 +1410,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+184"/>
+        <location line="+193"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-179"/>
+        <location line="-188"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -1486,6 +1486,16 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>&amp;Parameters: back up, compare, restore...</source>
+        <translation>&amp;Parameter: sichern, vergleichen, wiederherstellen...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>&amp;Data logging of the shown device...</source>
         <translation>&amp;Datenaufzeichnung des angezeigten Geräts...</translation>
     </message>
@@ -1506,7 +1516,8 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Bericht</translation>
     </message>
     <message>
-        <location line="-22"/>
+        <location line="-31"/>
+        <location line="+9"/>
         <location line="+14"/>
         <source>Open the page of a device first.</source>
         <translation>Zuerst die Seite eines Geräts öffnen.</translation>
@@ -2140,6 +2151,192 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+3"/>
         <source>&apos;%1&apos; in the file: %2</source>
         <translation>&apos;%1&apos; in der Datei: %2</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::ParameterTransfer</name>
+    <message>
+        <location filename="../lib/parametertransfer.cpp" line="+111"/>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::ParametersDialog</name>
+    <message>
+        <location filename="../ui/parametersdialog.cpp" line="+21"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Parameters of %1 at address %2</source>
+        <translation>Parameter von %1 an Adresse %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>File</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Result</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Parameter files (*.json)</source>
+        <translation>Parameterdateien (*.json)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Back up to file...</source>
+        <translation>In Datei sichern...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Compare with file...</source>
+        <translation>Mit Datei vergleichen...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Restore from file...</source>
+        <translation>Aus Datei wiederherstellen...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Back up parameters</source>
+        <translation>Parameter sichern</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Compare with</source>
+        <translation>Vergleichen mit</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Restore from</source>
+        <translation>Wiederherstellen aus</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Restore parameters</source>
+        <translation>Parameter wiederherstellen</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>Write %n parameter(s) that differ to the device? Each is verified by reading it back; EEPROM parameters wear with every write.</source>
+        <translation>
+            <numerusform>%n abweichenden Parameter auf das Gerät schreiben? Er wird durch Rücklesen geprüft; EEPROM-Parameter verschleißen mit jedem Schreiben.</numerusform>
+            <numerusform>%n abweichende Parameter auf das Gerät schreiben? Jeder wird durch Rücklesen geprüft; EEPROM-Parameter verschleißen mit jedem Schreiben.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>Cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <location line="+29"/>
+        <location line="+27"/>
+        <source>Reading all parameters...</source>
+        <translation>Alle Parameter werden gelesen...</translation>
+    </message>
+    <message>
+        <location line="-51"/>
+        <source>Not saved: these could not be read: %1</source>
+        <translation>Nicht gesichert: diese konnten nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n parameter(s) saved to %1</source>
+        <translation>
+            <numerusform>%n Parameter in %1 gesichert</numerusform>
+            <numerusform>%n Parameter in %1 gesichert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <location line="+27"/>
+        <location line="+16"/>
+        <source>Refused: %1</source>
+        <translation>Abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location line="-34"/>
+        <location line="+29"/>
+        <source>Could not read: %1</source>
+        <translation>Nicht lesbar: %1</translation>
+    </message>
+    <message>
+        <location line="-24"/>
+        <source>The device matches the file.</source>
+        <translation>Das Gerät stimmt mit der Datei überein.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n parameter(s) differ from the file.</source>
+        <translation>
+            <numerusform>%n Parameter weicht von der Datei ab.</numerusform>
+            <numerusform>%n Parameter weichen von der Datei ab.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>The device already matches the file: nothing to write.</source>
+        <translation>Das Gerät stimmt bereits mit der Datei überein: nichts zu schreiben.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Nothing written.</source>
+        <translation>Nichts geschrieben.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Writing...</source>
+        <translation>Schreiben...</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+14"/>
+        <source>Cancelled after %n verified write(s).</source>
+        <translation>
+            <numerusform>Abgebrochen nach %n geprüften Schreibvorgang.</numerusform>
+            <numerusform>Abgebrochen nach %n geprüften Schreibvorgängen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 written and verified, %2 failed: see the table.</source>
+        <translation>%1 geschrieben und geprüft, %2 fehlgeschlagen: siehe Tabelle.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n parameter(s) restored and verified.</source>
+        <translation>
+            <numerusform>%n Parameter wiederhergestellt und geprüft.</numerusform>
+            <numerusform>%n Parameter wiederhergestellt und geprüft.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -17,6 +17,7 @@
 #include "familyregistry.h"
 #include "livevaluesmodel.h"
 #include "overviewpage.h"
+#include "parametersdialog.h"
 #include "scandialog.h"
 #include "trafficview.h"
 
@@ -193,6 +194,15 @@ void MainWindow::buildMenus()
     QMenu *devices = menuBar()->addMenu(tr("&Devices"));
     devices->addAction(tr("&Scan the line..."), this, &MainWindow::openScanDialog);
     devices->addAction(tr("&Remove the shown device"), this, &MainWindow::removeCurrentDevice);
+    devices->addAction(tr("&Parameters: back up, compare, restore..."), this, [this] {
+        const int index = m_navigation->currentRow() - firstDeviceRow;
+        if (index < 0 || index >= m_devices.size()) {
+            QMessageBox::information(this, tr("Parameters"), tr("Open the page of a device first."));
+            return;
+        }
+        ParametersDialog dialog(&m_bus, m_devices[index].id, this);
+        dialog.exec();
+    });
     devices->addAction(tr("&Data logging of the shown device..."), this, [this] {
         const int index = m_navigation->currentRow() - firstDeviceRow;
         if (index < 0 || index >= m_devices.size()) {

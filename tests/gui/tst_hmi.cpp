@@ -12,6 +12,7 @@
 #include "ledindicator.h"
 #include "livevaluesview.h"
 #include "mainwindow.h"
+#include "parametersdialog.h"
 #include "scandialog.h"
 #include "testpeers.h"
 
@@ -36,6 +37,7 @@ private slots:
     void readOnlyDisablesControlsAndSendsNothing();
     void errorValueShowsAsOverrange();
     void journalAndAuditSurviveARestart();
+    void parametersBackupCompareRestore();
 
 private:
     // A window connected to the line with the IPC 300 at address 1 on its page.
@@ -219,6 +221,35 @@ void tst_Hmi::errorValueShowsAsOverrange()
     QVERIFY(!view->displayedValue("load_current").contains("inf", Qt::CaseInsensitive));
     m_sim.line().device(1)->forceStatus("load_current", ValueStatus::Ok);
     m_sim.line().device(1)->forceStatus("power", ValueStatus::Ok);
+}
+
+void tst_Hmi::parametersBackupCompareRestore()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    DevicePage *page = window->devicePage("ipc300", 1);
+    ParametersDialog dialog(window->bus(), page->device());
+    const QString file = m_dir.filePath("ipc-parameters.json");
+    SimulatedDevice *ipc = m_sim.line().device(1);
+    const double limit = ipc->number("max_alarm_limit");
+
+    dialog.backup(file);
+    QTRY_VERIFY_WITH_TIMEOUT(dialog.status().contains("saved to"), 20000);
+    ipc->setNumber("max_alarm_limit", limit + 17);   // someone changes it on the device
+    dialog.compare(file);
+    QTRY_VERIFY_WITH_TIMEOUT(dialog.status().contains("differ from the file"), 20000);
+    QCOMPARE(dialog.differenceCount(), 1);
+
+    int asked = 0;
+    dialog.restore(file, [&asked](int count) {
+        asked = count;
+        return true;
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(dialog.status().contains("restored and verified"), 20000);
+    QCOMPARE(asked, 1);
+    QCOMPARE(ipc->number("max_alarm_limit"), limit);
+    dialog.compare(file);
+    QTRY_VERIFY_WITH_TIMEOUT(dialog.status().contains("matches the file"), 20000);
 }
 
 QTEST_MAIN(tst_Hmi)
