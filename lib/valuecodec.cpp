@@ -313,7 +313,7 @@ EncodeResult ValueCodec::encode(const RegisterEntry &entry, const RegisterMap &m
                     v = it.key();
             }
         }
-        if (!v || !entry.enumValues.contains(int(*v))) {
+        if (!v || *v < 0 || *v > 0xFFFF || !entry.enumValues.contains(int(*v))) {
             QStringList allowed;
             for (auto it = entry.enumValues.cbegin(); it != entry.enumValues.cend(); ++it)
                 allowed << QStringLiteral("%1 = %2").arg(it.key()).arg(it.value());

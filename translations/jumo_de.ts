@@ -64,34 +64,34 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>%1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+27"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+20"/>
         <source>line lost: %1</source>
         <translation>Leitung verloren: %1</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location line="+159"/>
         <source>read-only mode: %1 was not written</source>
         <translation>Nur-Lese-Modus: %1 wurde nicht geschrieben</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+82"/>
+        <location line="+94"/>
         <source>unknown device</source>
         <translation>unbekanntes Gerät</translation>
     </message>
     <message>
-        <location line="-82"/>
-        <location line="+90"/>
+        <location line="-94"/>
+        <location line="+102"/>
         <source>&apos;%1&apos; is not an entry of %2</source>
         <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
     <message>
-        <location line="-80"/>
+        <location line="-92"/>
         <source>&apos;%1&apos; needs more words than one write may carry</source>
         <translation>&apos;%1&apos; benötigt mehr Wörter, als eine Schreibanfrage umfassen darf</translation>
     </message>
@@ -101,7 +101,12 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>die Leitung ist nicht verbunden</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+51"/>
+        <source>not broadcast: the line also has a %1 device at address %2, which would take the same words as something else</source>
+        <translation>kein Broadcast: an der Leitung hängt auch ein Gerät der Familie %1 an Adresse %2, das dieselben Wörter als etwas anderes übernehmen würde</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>no %1 device on this line to read a broadcast back from</source>
         <translation>kein Gerät der Familie %1 an dieser Leitung, von dem ein Broadcast zurückgelesen werden kann</translation>
     </message>
@@ -131,7 +136,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>Antwort mit %1 Wörtern, angefordert waren %2</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+98"/>
         <source>exception %1</source>
         <translation>Exception %1</translation>
     </message>
@@ -147,21 +152,21 @@ Handbuch %6: &quot;%7&quot;</translation>
     </message>
     <message>
         <location line="+5"/>
-        <source>not written: the line was lost</source>
-        <translation>nicht geschrieben: die Leitung ging verloren</translation>
+        <source>the line was closed or lost while the write was under way: its outcome is unknown, read the value back</source>
+        <translation>die Leitung wurde während des Schreibens geschlossen oder ging verloren: das Ergebnis ist unbekannt, den Wert zurücklesen</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+2"/>
         <source>no answer: %1</source>
         <translation>keine Antwort: %1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>written, but the read-back failed: %1</source>
         <translation>geschrieben, aber das Rücklesen ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+124"/>
         <source>broadcast sent; it cannot be read back</source>
         <translation>Broadcast gesendet; er kann nicht zurückgelesen werden</translation>
     </message>

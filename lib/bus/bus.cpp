@@ -99,6 +99,8 @@ bool Bus::open()
     }
     m_lastError.clear();
     m_reconnectTimer.stop();
+    m_writeQueue.clear();   // nothing asked for before this open is sent now
+    m_probeQueue.clear();
     for (DeviceState &d : m_devices) {
         d.blockIndex = -1;
         d.nextDueMs = now();
@@ -112,11 +114,13 @@ void Bus::close()
 {
     m_reconnectTimer.stop();
     m_dispatchTimer.stop();
-    failAllWrites(tr("the line was closed"));
+    // Disconnected first: whatever listeners ask for while the client aborts its reply
+    // is refused at once and cannot wait in a queue for the next open().
+    setState(LineState::Disconnected);
     if (m_client)
         m_client->disconnectDevice();
     m_inFlight = false;
-    setState(LineState::Disconnected);
+    failAllWrites(tr("the line was closed"));
 }
 
 void Bus::setState(LineState state)
@@ -211,12 +215,14 @@ void Bus::setPollEntries(DeviceId id, const QStringList &ids)
         return;
     m_devices[id].pollIds = ids;
     replan(m_devices[id]);
+    schedule();
 }
 
 void Bus::setPollInterval(DeviceId id, int ms)
 {
     if (m_devices.contains(id))
         m_devices[id].intervalMs = std::max(0, ms);
+    schedule();
 }
 
 void Bus::setPolling(bool on)
@@ -230,6 +236,11 @@ void Bus::requestCycle(DeviceId id)
     if (!m_devices.contains(id))
         return;
     DeviceState &d = m_devices[id];
+    if (d.plan.blocks.isEmpty()) {
+        // Nothing to read: the cycle is over before it began.
+        QMetaObject::invokeMethod(this, [this, id] { emit pollCycleFinished(id, 0); }, Qt::QueuedConnection);
+        return;
+    }
     d.cycleRequested = true;
     d.nextDueMs = std::min(d.nextDueMs, now());
     schedule();
@@ -352,6 +363,18 @@ int Bus::writeBroadcast(const QString &family, const QString &entryId, const QSt
         if (it->map->family == family) {
             map = it->map;
             targets << it.key();
+        }
+    }
+    for (auto it = m_devices.cbegin(); it != m_devices.cend(); ++it) {
+        if (!m_settings.readOnly && it->map->family != family) {
+            // Address 0 reaches every device: the same address means something else to
+            // another family (a command word, perhaps).
+            queueImmediateOutcome(ticket, WriteOutcome::Result::Invalid,
+                                  tr("not broadcast: the line also has a %1 device at address %2, which would take the "
+                                     "same words as something else")
+                                          .arg(it->map->family)
+                                          .arg(it->address));
+            return ticket;
         }
     }
     if (!m_settings.readOnly && (!map || !map->protocol.broadcast)) {
@@ -625,7 +648,9 @@ void Bus::onReplyFinished(QModbusReply *reply, Job job, qint64 sentMs)
     // reply, wait as long again as the timeout so a late answer cannot be taken for the
     // next request's (Qt clears its buffer right before each send).
     if (error == QModbusDevice::TimeoutError || error == QModbusDevice::UnknownError)
-        m_quietUntilMs = t + requestTimeoutMs(job.timing, 8, LineTiming::readReplyBytes(job.count));
+        m_quietUntilMs = t + std::max(requestTimeoutMs(job.timing, 8, LineTiming::readReplyBytes(job.count)),
+                                      LineTiming::timeoutMs(m_settings.format, 8, LineTiming::readReplyBytes(job.count),
+                                                            job.timing, m_settings.minimumResponseTimeMs));
     else
         m_quietUntilMs = t + qint64(std::max(0.0, job.timing.turnaroundMs - interFrameDelayMs()) + 0.5);
 
@@ -652,6 +677,13 @@ void Bus::onReplyFinished(QModbusReply *reply, Job job, qint64 sentMs)
     }
     if (device && job.kind == JobKind::Poll)
         device->blockAttempts = 0;
+
+    if (job.broadcast && job.kind == JobKind::Write && error == QModbusDevice::NoError) {
+        // Qt calls a broadcast done when its bytes reach the driver, not the wire; the
+        // devices then need their time before anyone may talk again.
+        const double wire = m_settings.format.wireTimeMs(int(writePdu(job.start, job.words).size()) + 3);
+        m_quietUntilMs = t + qint64(wire + std::max(100.0, job.timing.processingTimeMaxMs + m_settings.minimumResponseTimeMs));
+    }
 
     switch (job.kind) {
     case JobKind::Poll:
@@ -685,7 +717,10 @@ void Bus::onReplyFinished(QModbusReply *reply, Job job, qint64 sentMs)
             finishWrite(job, {WriteOutcome::Result::Refused, message, exceptionCode, {}});
         } else {
             finishWrite(job, {WriteOutcome::Result::Failed,
-                              lineDown ? tr("not written: the line was lost") : tr("no answer: %1").arg(problem), 0, {}});
+                              lineDown ? tr("the line was closed or lost while the write was under way: its outcome "
+                                            "is unknown, read the value back")
+                                       : tr("no answer: %1").arg(problem),
+                              0, {}});
         }
         break;
     case JobKind::ReadBack:
@@ -701,13 +736,18 @@ void Bus::onReplyFinished(QModbusReply *reply, Job job, qint64 sentMs)
 
 void Bus::completePoll(const Job &job, const QList<quint16> &words)
 {
+    if (words.size() != job.count) {   // e.g. address 0: "finished" without data
+        failPoll(job, ReadError::Mismatch, 0);
+        return;
+    }
     DeviceState &d = m_devices[job.device];
     const qint64 t = now();
     QStringList updated;
     for (const RegisterEntry &e : d.map->entries()) {
         if (e.address < job.start || e.lastAddress() > job.start + job.count - 1 || !e.isReadable())
             continue;
-        if (!e.alias.isEmpty() || (!d.pollIds.isEmpty() && !d.pollIds.contains(e.id)))
+        // Aliases only when asked for by name: they repeat words read anyway.
+        if (d.pollIds.isEmpty() ? !e.alias.isEmpty() : !d.pollIds.contains(e.id))
             continue;
         EntryState &s = d.values[e.id];
         const auto first = words.cbegin() + (e.address - job.start);
@@ -735,7 +775,7 @@ void Bus::failPoll(const Job &job, ReadError error, int exceptionCode)
     for (const RegisterEntry &e : d.map->entries()) {
         if (e.address < job.start || e.lastAddress() > job.start + job.count - 1 || !e.isReadable())
             continue;
-        if (!e.alias.isEmpty() || (!d.pollIds.isEmpty() && !d.pollIds.contains(e.id)))
+        if (d.pollIds.isEmpty() ? !e.alias.isEmpty() : !d.pollIds.contains(e.id))
             continue;
         EntryState &s = d.values[e.id];
         s.error = error;   // the last good value stays, marked as no longer current

@@ -101,7 +101,15 @@ void DeviceScanner::evaluate()
                 return;
             }
             if (it->timedOut) {
-                // Nothing answers at this address.
+                if (m_bus.state() != LineState::Connected) {
+                    // The line is gone: this is no answer about the address.
+                    m_running = false;
+                    emit finished(true);
+                    return;
+                }
+                // Nothing answers at this address, or it stopped answering part way.
+                if (std::any_of(m_cache.cbegin(), m_cache.cend(), [](const ProbeResult &r) { return !r.timedOut; }))
+                    emit unknownDevice(m_address);
                 nextAddress();
                 return;
             }

@@ -47,6 +47,8 @@ private slots:
     void busErrorKeepalive();
     void lostPortFailsWritesAndComesBack();
     void dataLoggingRotatesFiles();
+    void closeDuringAWriteSendsNothingLater();
+    void broadcastRefusedWithOtherFamiliesOnTheLine();
 
 private:
     struct Setup
@@ -322,6 +324,48 @@ void tst_BusSimulator::dataLoggingRotatesFiles()
     settings.entries.clear();
     QVERIFY(!logger.start(settings, &error));
     QVERIFY(error.contains("at least one value"));
+}
+
+void tst_BusSimulator::closeDuringAWriteSendsNothingLater()
+{
+    Setup s;
+    QVERIFY(prepare(s, {{"ipc300", 1}}));
+    s.bus.setPolling(false);
+    const DeviceId id = s.bus.addDevice(families().family("ipc300"), 1);
+    s.sim.setFault(1, "drop", -1, 0);   // the first write stays under way
+    QList<WriteOutcome> outcomes;
+    connect(&s.bus, &Bus::writeFinished, this, [&](int, const WriteOutcome &outcome) {
+        outcomes << outcome;
+        if (outcomes.size() == 1)
+            s.bus.write(id, "input_setpoint", "21");   // a listener that chains writes
+    });
+    s.bus.write(id, "input_setpoint", "20");
+    QTRY_COMPARE_WITH_TIMEOUT(s.sim.writeFrames(), 1, 10000);
+    s.bus.close();
+    QTRY_COMPARE_WITH_TIMEOUT(outcomes.size(), 2, 10000);
+    QCOMPARE(outcomes[0].result, WriteOutcome::Result::Failed);
+    QVERIFY2(outcomes[0].message.contains("outcome is unknown"), qPrintable(outcomes[0].message));
+    QCOMPARE(outcomes[1].result, WriteOutcome::Result::Failed);
+    s.sim.setFault(1, "none", -1, 0);
+    QVERIFY(s.bus.open());
+    QTest::qWait(1000);
+    QCOMPARE(s.sim.writeFrames(), 1);   // the chained write never went out
+}
+
+void tst_BusSimulator::broadcastRefusedWithOtherFamiliesOnTheLine()
+{
+    Setup s;
+    QVERIFY(prepare(s, {{"dtron300", 1}, {"quantrol", 3}}));
+    s.bus.setPolling(false);
+    s.bus.addDevice(families().family("dtron300"), 1);
+    s.bus.addDevice(families().family("quantrol"), 3);
+    QSignalSpy finished(&s.bus, &Bus::writeFinished);
+    s.bus.writeBroadcast("dtron300", "setpoint", "50");   // 0x0047: a command word on a Quantrol
+    QVERIFY(finished.wait(5000));
+    const WriteOutcome outcome = finished.at(0).at(1).value<WriteOutcome>();
+    QCOMPARE(outcome.result, WriteOutcome::Result::Invalid);
+    QVERIFY2(outcome.message.contains("quantrol device at address 3"), qPrintable(outcome.message));
+    QCOMPARE(s.frames.count(0, 0x10), 0);
 }
 
 QTEST_GUILESS_MAIN(tst_BusSimulator)

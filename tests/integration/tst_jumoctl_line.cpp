@@ -145,8 +145,8 @@ void tst_JumoctlLine::writeIsConfirmed()
     QVERIFY2(r.out.contains("setpoint: confirmed by read-back: 42.5"), qPrintable(r.out + r.err));
     QVERIFY2(r.out.contains("alpha_default: confirmed by read-back: 90"), qPrintable(r.out + r.err));
     QCOMPARE(m_sim.line().device(2)->number("setpoint"), 42.5);
-    const Run check = run(QStringList{"read"} + port() + QStringList{"tya200@2", "setpoint"});
-    QCOMPARE(check.code, 0);
+    const Run check = run(QStringList{"read"} + port() + QStringList{"tya200@2", "setpoint", "reserve_00ef"});
+    QCOMPARE(check.code, 0);   // an alias (TYA 5.8's reserve word inside a float) reads too
     QVERIFY2(check.out.contains("setpoint = 42.5 %  [ok]"), qPrintable(check.out));
     // Audited: device, entry, the value it replaced, the new one, the result.
     const QList<QJsonObject> audit = auditRecords();
