@@ -1,3 +1,4 @@
+#include "csv.h"
 #include "datalogger.h"
 
 #include <QDateTime>
@@ -79,9 +80,7 @@ void DataLogger::sample()
         const RegisterEntry *e = map->entry(id);
         const EntryState *s = m_bus->entryState(device, id);
         // Only a current good value is written; otherwise the status says why not.
-        QString value = s && s->isCurrent() && s->value.isOk() ? s->value.display : QString();
-        if (value.contains(QLatin1Char(',')) || value.contains(QLatin1Char('"')))
-            value = QLatin1Char('"') + value.replace(QLatin1String("\""), QLatin1String("\"\"")) + QLatin1Char('"');
+        const QString value = csvField(s && s->isCurrent() && s->value.isOk() ? s->value.display : QString());
         rows += QStringLiteral("%1,%2@%3,%4,%5,%6,%7\n")
                         .arg(time, map->family)
                         .arg(m_bus->deviceAddress(device))

@@ -1,3 +1,4 @@
+#include "csv.h"
 #include "eventlog.h"
 
 #include <QDir>
@@ -11,19 +12,6 @@
 Q_LOGGING_CATEGORY(lcLog, "jumo.log", QtWarningMsg)
 
 namespace jumo {
-
-namespace {
-
-QString csvField(QString text)
-{
-    if (text.contains(QLatin1Char(',')) || text.contains(QLatin1Char('"')) || text.contains(QLatin1Char('\n'))) {
-        text.replace(QLatin1String("\""), QLatin1String("\"\""));
-        return QLatin1Char('"') + text + QLatin1Char('"');
-    }
-    return text;
-}
-
-} // namespace
 
 EventLog::EventLog(const QString &path, QObject *parent, Open mode) : QObject(parent), m_path(path)
 {

@@ -166,7 +166,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>geschrieben, aber das Rücklesen ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+124"/>
+        <location line="+130"/>
         <source>broadcast sent; it cannot be read back</source>
         <translation>Broadcast gesendet; er kann nicht zurückgelesen werden</translation>
     </message>
@@ -586,7 +586,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DataLogger</name>
     <message>
-        <location filename="../lib/datalogger.cpp" line="+18"/>
+        <location filename="../lib/datalogger.cpp" line="+19"/>
         <source>choose at least one value, an interval of at least 100 ms and files of at least 1 KiB</source>
         <translation>mindestens einen Wert, ein Intervall von mindestens 100 ms und Dateien von mindestens 1 KiB wählen</translation>
     </message>
@@ -597,7 +597,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+30"/>
-        <location line="+39"/>
+        <location line="+37"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -754,7 +754,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::EventLog</name>
     <message>
-        <location filename="../lib/eventlog.cpp" line="+36"/>
+        <location filename="../lib/eventlog.cpp" line="+24"/>
         <source>cannot read %1: %2</source>
         <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
@@ -817,7 +817,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+78"/>
+        <location filename="../app/cli/linecommands.cpp" line="+81"/>
         <source>Serial port, e.g. /dev/ttyUSB0 (required).</source>
         <translation>Serielle Schnittstelle, z. B. /dev/ttyUSB0 (erforderlich).</translation>
     </message>
@@ -985,13 +985,13 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+334"/>
+        <location line="+317"/>
         <location line="+128"/>
         <source>FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="-460"/>
+        <location line="-443"/>
         <source>Entry ids.</source>
         <translation>Kennungen der Einträge.</translation>
     </message>
@@ -1122,7 +1122,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>&apos;%1&apos; ist kein lesbarer Eintrag von %2</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+87"/>
         <source>no differences</source>
         <translation>keine Unterschiede</translation>
     </message>
@@ -1651,7 +1651,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::MapCommands</name>
     <message>
-        <location filename="../app/cli/mapcommands.cpp" line="+132"/>
+        <location filename="../app/cli/mapcommands.cpp" line="+125"/>
         <source>unknown family &apos;%1&apos; (known: %2)</source>
         <translation>unbekannte Gerätefamilie &apos;%1&apos; (bekannt: %2)</translation>
     </message>
@@ -2259,12 +2259,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     <message>
         <location line="+27"/>
         <location line="+29"/>
-        <location line="+27"/>
         <source>Reading all parameters...</source>
         <translation>Alle Parameter werden gelesen...</translation>
     </message>
     <message>
-        <location line="-51"/>
+        <location line="-24"/>
         <source>Not saved: these could not be read: %1</source>
         <translation>Nicht gesichert: diese konnten nicht gelesen werden: %1</translation>
     </message>
@@ -2283,19 +2282,18 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+12"/>
-        <location line="+27"/>
-        <location line="+16"/>
+        <location line="+43"/>
         <source>Refused: %1</source>
         <translation>Abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="-34"/>
-        <location line="+29"/>
+        <location line="-26"/>
+        <location line="+21"/>
         <source>Could not read: %1</source>
         <translation>Nicht lesbar: %1</translation>
     </message>
     <message>
-        <location line="-24"/>
+        <location line="-16"/>
         <source>The device matches the file.</source>
         <translation>Das Gerät stimmt mit der Datei überein.</translation>
     </message>
@@ -2308,7 +2306,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+27"/>
         <source>The device already matches the file: nothing to write.</source>
         <translation>Das Gerät stimmt bereits mit der Datei überein: nichts zu schreiben.</translation>
     </message>

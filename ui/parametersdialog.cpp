@@ -147,19 +147,27 @@ void ParametersDialog::backup(const QString &path)
     m_transfer->read();
 }
 
-void ParametersDialog::compare(const QString &path)
+std::optional<ParameterSet> ParametersDialog::startReadFor(const QString &path)
 {
-    const std::optional<ParameterSet> file = load(path);
+    std::optional<ParameterSet> file = load(path);
     if (!file)
-        return;
+        return std::nullopt;
     const auto map = m_bus->deviceMap(m_device);
     if (file->family != map->family) {
         setStatus(tr("Refused: %1").arg(file->incompatibility(*map, QString())));
-        return;
+        return std::nullopt;
     }
     setBusy(true);
     setStatus(tr("Reading all parameters..."));
     disconnect(m_transfer, &ParameterTransfer::readFinished, this, nullptr);
+    return file;
+}
+
+void ParametersDialog::compare(const QString &path)
+{
+    const std::optional<ParameterSet> file = startReadFor(path);
+    if (!file)
+        return;
     connect(m_transfer, &ParameterTransfer::readFinished, this, [this, file](const ParameterSet &device, const QStringList &failed) {
         setBusy(false);
         if (!failed.isEmpty()) {
@@ -176,17 +184,9 @@ void ParametersDialog::compare(const QString &path)
 
 void ParametersDialog::restore(const QString &path, const std::function<bool(int)> &confirm)
 {
-    const std::optional<ParameterSet> file = load(path);
+    const std::optional<ParameterSet> file = startReadFor(path);
     if (!file)
         return;
-    const auto map = m_bus->deviceMap(m_device);
-    if (file->family != map->family) {
-        setStatus(tr("Refused: %1").arg(file->incompatibility(*map, QString())));
-        return;
-    }
-    setBusy(true);
-    setStatus(tr("Reading all parameters..."));
-    disconnect(m_transfer, &ParameterTransfer::readFinished, this, nullptr);
     connect(m_transfer, &ParameterTransfer::readFinished, this,
             [this, file, confirm](const ParameterSet &device, const QStringList &failed) {
                 const RegisterMap &map = *m_bus->deviceMap(m_device);

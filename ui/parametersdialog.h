@@ -35,6 +35,9 @@ public:
 
 private:
     std::optional<ParameterSet> load(const QString &path);
+    // Loads a file for compare or restore, refuses another family, and starts reading
+    // the device; the caller connects readFinished.
+    std::optional<ParameterSet> startReadFor(const QString &path);
     void showDifferences(const QList<ParameterDifference> &differences);
     void setBusy(bool busy);
     void setStatus(const QString &text);

@@ -1,4 +1,7 @@
+#include "csv.h"
 #include "linecommands.h"
+
+#include "parametertransfer.h"
 
 #include "commandparser.h"
 #include "commissioningreport.h"
@@ -506,9 +509,7 @@ std::optional<int> LineCommands::monitor(const QStringList &arguments)
             for (const QString &e : std::as_const(entryIds)) {
                 const EntryState *s = m_bus.entryState(id, e);
                 const RegisterEntry *entry = target->map->entry(e);
-                QString value = s && s->error == ReadError::None && s->value.isOk() ? s->value.display : QString();
-                if (value.contains(QLatin1Char(',')) || value.contains(QLatin1Char('"')))
-                    value = QLatin1Char('"') + value.replace(QLatin1String("\""), QLatin1String("\"\"")) + QLatin1Char('"');
+                const QString value = csvField(s && s->error == ReadError::None && s->value.isOk() ? s->value.display : QString());
                 m_out << time << ',' << device << ',' << e << ',' << value << ',' << entry->unit << ','
                       << (s ? s->statusName() : QStringLiteral("timeout")) << '\n';
                 m_failed |= isFailure(s);
@@ -533,32 +534,17 @@ void LineCommands::readParameters(const std::function<void(const ParameterSet &,
     m_bus.setPolling(false);
     target.id = m_bus.addDevice(target.map, target.address);
     m_bus.setPollEntries(target.id, ids);
-    connect(&m_bus, &Bus::pollCycleFinished, this, [this, done](DeviceId id, double) {
-        const Target &t = m_targets.first();
-        if (id != t.id)
-            return;
-        ParameterSet set;
-        set.family = t.map->family;
-        set.address = t.address;
-        set.time = QDateTime::currentDateTimeUtc();
-        QStringList failed;
-        for (const QString &id : ParameterSet::parameterIds(*t.map)) {
-            const EntryState *s = m_bus.entryState(t.id, id);
-            const QString text = s && s->isCurrent() ? ValueCodec::exactText(*t.map->entry(id), *t.map, s->words) : QString();
-            if (text.isNull())
-                failed << QStringLiteral("%1 (%2)").arg(id, s ? s->statusName() : QStringLiteral("timeout"));
-            else
-                set.values.insert(id, text);
-        }
-        for (const QString &id : t.map->identity) {
-            if (const EntryState *s = m_bus.entryState(t.id, id); s && s->isCurrent())
-                set.identity.insert(id, s->value.display.trimmed());
-        }
-        if (const EntryState *s = m_bus.entryState(t.id, QStringLiteral("software_version")); s && s->isCurrent())
-            set.softwareVersion = s->value.display.trimmed();
-        done(set, failed);
-    });
-    m_bus.requestCycle(target.id);
+    auto *transfer = new ParameterTransfer(&m_bus, target.id, this);
+    connect(transfer, &ParameterTransfer::readFinished, this,
+            [this, done](const ParameterSet &set, const QStringList &failed) {
+                QStringList reasons;
+                for (const QString &id : failed) {
+                    const EntryState *s = m_bus.entryState(m_targets.first().id, id);
+                    reasons << QStringLiteral("%1 (%2)").arg(id, s ? s->statusName() : QStringLiteral("timeout"));
+                }
+                done(set, reasons);
+            });
+    transfer->read();
 }
 
 void LineCommands::printDifferences(const QList<ParameterDifference> &differences, const QString &oldName,

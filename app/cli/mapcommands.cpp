@@ -1,3 +1,4 @@
+#include "csv.h"
 #include "mapcommands.h"
 
 #include "commandparser.h"
@@ -13,14 +14,6 @@ namespace jumo {
 
 namespace {
 
-QString csvField(QString text)
-{
-    if (text.contains(QLatin1Char(',')) || text.contains(QLatin1Char('"')) || text.contains(QLatin1Char('\n'))) {
-        text.replace(QLatin1String("\""), QLatin1String("\"\""));
-        return QLatin1Char('"') + text + QLatin1Char('"');
-    }
-    return text;
-}
 
 QString entryNotes(const RegisterEntry &e)
 {

@@ -734,6 +734,20 @@ void Bus::onReplyFinished(QModbusReply *reply, Job job, qint64 sentMs)
     schedule();
 }
 
+QList<const RegisterEntry *> Bus::blockEntries(const DeviceState &d, const Job &job) const
+{
+    QList<const RegisterEntry *> out;
+    for (const RegisterEntry &e : d.map->entries()) {
+        if (e.address < job.start || e.lastAddress() > job.start + job.count - 1 || !e.isReadable())
+            continue;
+        // Aliases only when asked for by name: they repeat words read anyway.
+        if (d.pollIds.isEmpty() ? !e.alias.isEmpty() : !d.pollIds.contains(e.id))
+            continue;
+        out << &e;
+    }
+    return out;
+}
+
 void Bus::completePoll(const Job &job, const QList<quint16> &words)
 {
     if (words.size() != job.count) {   // e.g. address 0: "finished" without data
@@ -743,12 +757,8 @@ void Bus::completePoll(const Job &job, const QList<quint16> &words)
     DeviceState &d = m_devices[job.device];
     const qint64 t = now();
     QStringList updated;
-    for (const RegisterEntry &e : d.map->entries()) {
-        if (e.address < job.start || e.lastAddress() > job.start + job.count - 1 || !e.isReadable())
-            continue;
-        // Aliases only when asked for by name: they repeat words read anyway.
-        if (d.pollIds.isEmpty() ? !e.alias.isEmpty() : !d.pollIds.contains(e.id))
-            continue;
+    for (const RegisterEntry *entry : blockEntries(d, job)) {
+        const RegisterEntry &e = *entry;
         EntryState &s = d.values[e.id];
         const auto first = words.cbegin() + (e.address - job.start);
         s.words = QList<quint16>(first, first + e.wordCount());
@@ -772,16 +782,12 @@ void Bus::failPoll(const Job &job, ReadError error, int exceptionCode)
     DeviceState &d = m_devices[job.device];
     const qint64 t = now();
     QStringList updated;
-    for (const RegisterEntry &e : d.map->entries()) {
-        if (e.address < job.start || e.lastAddress() > job.start + job.count - 1 || !e.isReadable())
-            continue;
-        if (d.pollIds.isEmpty() ? !e.alias.isEmpty() : !d.pollIds.contains(e.id))
-            continue;
-        EntryState &s = d.values[e.id];
+    for (const RegisterEntry *e : blockEntries(d, job)) {
+        EntryState &s = d.values[e->id];
         s.error = error;   // the last good value stays, marked as no longer current
         s.exceptionCode = exceptionCode;
         s.updatedMs = t;
-        updated << e.id;
+        updated << e->id;
     }
     emit entriesUpdated(job.device, updated);
     if (error == ReadError::Exception) {

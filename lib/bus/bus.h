@@ -177,6 +177,8 @@ private:
     bool pickPollJob(Job &job, qint64 now, qint64 &earliestDue);
     void send(Job job);
     void onReplyFinished(QModbusReply *reply, Job job, qint64 sentMs);
+    // The entries a block delivers: the polled ones whose words lie inside it.
+    QList<const RegisterEntry *> blockEntries(const DeviceState &d, const Job &job) const;
     void completePoll(const Job &job, const QList<quint16> &words);
     void failPoll(const Job &job, ReadError error, int exceptionCode);
     void finishCycle(DeviceId id, DeviceState &device, qint64 now);
