@@ -3,6 +3,7 @@
 #include "connectionbar.h"
 #include "devicepage.h"
 #include "mainwindow.h"
+#include "quitonsignal.h"
 #include "translations.h"
 
 #include <QApplication>
@@ -23,6 +24,7 @@ int main(int argc, char *argv[])
     QApplication::setOrganizationName(QStringLiteral("jumo"));
     const QString language = QSettings(QStringLiteral("jumo"), QStringLiteral("jumo-hmi")).value(QStringLiteral("language")).toString();
     jumo::installTranslations(app, language.isEmpty() ? QLocale() : QLocale(language));
+    jumo::quitOnTerminationSignals();   // SIGTERM closes the window properly, settings included
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QApplication::translate("main", "JUMO commissioning and monitoring HMI."));

@@ -2345,7 +2345,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::PtyPair</name>
     <message>
-        <location filename="../lib/sim/ptypair.cpp" line="+15"/>
+        <location filename="../lib/sim/ptypair.cpp" line="+20"/>
         <source>cannot start socat (is it installed?): %1</source>
         <translation>socat kann nicht gestartet werden (ist es installiert?): %1</translation>
     </message>
@@ -6084,7 +6084,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+28"/>
+        <location filename="../app/jumo-hmi.cpp" line="+30"/>
         <source>JUMO commissioning and monitoring HMI.</source>
         <translation>JUMO-HMI für Inbetriebnahme und Überwachung.</translation>
     </message>

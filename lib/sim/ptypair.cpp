@@ -3,10 +3,15 @@
 #include <QDir>
 #include <QFileInfo>
 
+#include <csignal>
+#include <sys/prctl.h>
+
 namespace jumo {
 
 PtyPair::PtyPair(QObject *parent) : QObject(parent)
 {
+    // socat goes when we go, however we go: even a killed HMI leaves no orphan behind.
+    m_socat.setChildProcessModifier([] { ::prctl(PR_SET_PDEATHSIG, SIGTERM); });
     m_poll.setInterval(10);
     connect(&m_poll, &QTimer::timeout, this, &PtyPair::poll);
     connect(&m_socat, &QProcess::errorOccurred, this, [this](QProcess::ProcessError error) {
