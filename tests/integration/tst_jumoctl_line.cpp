@@ -1,6 +1,6 @@
 // jumoctl on a real line: the commands run in-process (as the executable would) against
 // the simulator over a pty pair, and the script contracts are checked field by field.
-#include "commandlinetool.h"
+#include "clirun.h"
 #include "testpeers.h"
 
 #include <QFile>
@@ -13,34 +13,6 @@
 
 using namespace jumo;
 using namespace jumo::test;
-
-namespace {
-
-struct Run
-{
-    int code = -1;
-    QString out;
-    QString err;
-};
-
-Run run(const QStringList &args)
-{
-    Run r;
-    QTextStream out(&r.out);
-    QTextStream err(&r.err);
-    CommandLineTool tool(out, err);
-    QSignalSpy finished(&tool, &CommandLineTool::finished);
-    if (const std::optional<int> code = tool.run(args)) {
-        r.code = *code;
-    } else if (finished.wait(60000)) {
-        r.code = finished.first().first().toInt();
-    }
-    out.flush();
-    err.flush();
-    return r;
-}
-
-} // namespace
 
 class tst_JumoctlLine : public QObject
 {

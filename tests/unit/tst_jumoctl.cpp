@@ -1,6 +1,6 @@
 // jumoctl's map commands, run in-process and as the real executable: the CSV contract
 // scripts rely on, --help for every command, and non-zero exits with a reason on stderr.
-#include "commandlinetool.h"
+#include "clirun.h"
 #include "familyregistry.h"
 #include "mapcommands.h"
 
@@ -13,6 +13,7 @@
 #include <QTest>
 
 using namespace jumo;
+using namespace jumo::test;
 
 namespace {
 
@@ -37,25 +38,6 @@ QStringList splitCsv(const QString &line)
     return fields;
 }
 
-struct Run
-{
-    int code = -1;
-    QString out;
-    QString err;
-};
-
-Run run(const QStringList &args)
-{
-    Run r;
-    QTextStream out(&r.out);
-    QTextStream err(&r.err);
-    CommandLineTool tool(out, err);
-    const std::optional<int> code = tool.run(args);
-    out.flush();
-    err.flush();
-    r.code = code.value_or(-1);
-    return r;
-}
 
 } // namespace
 
