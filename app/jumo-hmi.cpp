@@ -1,10 +1,10 @@
 // jumo-hmi: the desktop HMI. Parses the command line and opens the main window.
-#include "familyregistry.h"
+#include "protocol/familyregistry.h"
 #include "connectionbar.h"
 #include "devicepage.h"
 #include "mainwindow.h"
 #include "quitonsignal.h"
-#include "translations.h"
+#include "protocol/translations.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

@@ -1,10 +1,10 @@
 // jumo-sim: simulated JUMO devices on a serial line (or on a pseudo-terminal pair it
 // makes itself), served from the same register maps as the HMI and jumoctl.
-#include "familyregistry.h"
-#include "ptypair.h"
+#include "protocol/familyregistry.h"
+#include "sim/ptypair.h"
 #include "quitonsignal.h"
-#include "simulatorline.h"
-#include "translations.h"
+#include "sim/simulatorline.h"
+#include "protocol/translations.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

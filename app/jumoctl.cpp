@@ -1,7 +1,7 @@
 // jumoctl: the command-line tool. Everything but wiring lives in the jumocli library.
 #include "commandlinetool.h"
 #include "quitonsignal.h"
-#include "translations.h"
+#include "protocol/translations.h"
 
 #include <QCoreApplication>
 #include <QGuiApplication>

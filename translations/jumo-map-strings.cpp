@@ -1,7 +1,7 @@
 // Writes the user-visible texts of the built-in register maps as QT_TRANSLATE_NOOP
 // lines, so lupdate finds them: labels, bit labels, enum values, section titles,
 // preconditions, exception meanings and error value wordings (context "jumo::maps").
-#include "familyregistry.h"
+#include "protocol/familyregistry.h"
 
 #include <QCoreApplication>
 #include <QSet>

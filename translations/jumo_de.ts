@@ -296,7 +296,7 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
 <context>
     <name>jumo::CommissioningReport</name>
     <message>
-        <location filename="../lib/commissioningreport.cpp" line="+30"/>
+        <location filename="../lib/commissioning/commissioningreport.cpp" line="+30"/>
         <source>not read</source>
         <translation>nicht gelesen</translation>
     </message>
@@ -586,7 +586,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DataLogger</name>
     <message>
-        <location filename="../lib/datalogger.cpp" line="+19"/>
+        <location filename="../lib/logs/datalogger.cpp" line="+19"/>
         <source>choose at least one value, an interval of at least 100 ms and files of at least 1 KiB</source>
         <translation>mindestens einen Wert, ein Intervall von mindestens 100 ms und Dateien von mindestens 1 KiB wählen</translation>
     </message>
@@ -754,7 +754,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::EventLog</name>
     <message>
-        <location filename="../lib/eventlog.cpp" line="+24"/>
+        <location filename="../lib/logs/eventlog.cpp" line="+24"/>
         <source>cannot read %1: %2</source>
         <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
@@ -1772,7 +1772,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::MapLoader</name>
     <message>
-        <location filename="../lib/maploader.cpp" line="+47"/>
+        <location filename="../lib/protocol/maploader.cpp" line="+47"/>
         <source>malformed JSON at byte %1: %2</source>
         <translation>fehlerhaftes JSON bei Byte %1: %2</translation>
     </message>
@@ -2113,7 +2113,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ParameterSet</name>
     <message>
-        <location filename="../lib/parameterset.cpp" line="+57"/>
+        <location filename="../lib/commissioning/parameterset.cpp" line="+57"/>
         <source>not a parameter file: %1 at byte %2</source>
         <translation>keine Parameterdatei: %1 bei Byte %2</translation>
     </message>
@@ -2161,7 +2161,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ParameterTransfer</name>
     <message>
-        <location filename="../lib/parametertransfer.cpp" line="+111"/>
+        <location filename="../lib/commissioning/parametertransfer.cpp" line="+111"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
@@ -2363,7 +2363,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ReadPlanner</name>
     <message>
-        <location filename="../lib/readplanner.cpp" line="+32"/>
+        <location filename="../lib/protocol/readplanner.cpp" line="+32"/>
         <source>&apos;%1&apos; is not an entry of %2</source>
         <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
@@ -2386,7 +2386,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RegisterMap</name>
     <message>
-        <location filename="../lib/registermap.cpp" line="+142"/>
+        <location filename="../lib/protocol/registermap.cpp" line="+142"/>
         <source>exception %1 (not documented for this family)</source>
         <translation>Exception-Code %1 (für diese Gerätefamilie nicht dokumentiert)</translation>
     </message>
@@ -2412,7 +2412,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RegisterMapModel</name>
     <message>
-        <location filename="../lib/registermapmodel.cpp" line="+36"/>
+        <location filename="../lib/models/registermapmodel.cpp" line="+36"/>
         <source>Correction of the manual: %1</source>
         <translation>Korrektur des Handbuchs: %1</translation>
     </message>
@@ -2640,7 +2640,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ValueCodec</name>
     <message>
-        <location filename="../lib/valuecodec.cpp" line="+88"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="+88"/>
         <source>Underrange</source>
         <translation>Unterlauf</translation>
     </message>

@@ -1,6 +1,6 @@
 #include "adddevicedialog.h"
 
-#include "familyregistry.h"
+#include "protocol/familyregistry.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

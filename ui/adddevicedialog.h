@@ -1,7 +1,7 @@
 // Asks for a device to add by hand: its family and its address on the line.
 #pragma once
 
-#include "registermap.h"
+#include "protocol/registermap.h"
 
 #include <QDialog>
 

@@ -2,7 +2,7 @@
 // format, connect/disconnect, and the line's state.
 #pragma once
 
-#include "bussettings.h"
+#include "bus/bussettings.h"
 
 #include <QWidget>
 

@@ -1,9 +1,9 @@
 #include "controlrow.h"
 
-#include "bus.h"
-#include "livevaluesmodel.h"
-#include "valuecodec.h"
-#include "writecommand.h"
+#include "bus/bus.h"
+#include "models/livevaluesmodel.h"
+#include "protocol/valuecodec.h"
+#include "models/writecommand.h"
 
 #include <QCheckBox>
 #include <QComboBox>

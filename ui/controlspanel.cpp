@@ -1,7 +1,7 @@
 #include "controlspanel.h"
 
 #include "controlrow.h"
-#include "registermap.h"
+#include "protocol/registermap.h"
 
 #include <QCoreApplication>
 #include <QFrame>

@@ -1,6 +1,6 @@
 #include "dataloggingdialog.h"
 
-#include "eventlog.h"
+#include "logs/eventlog.h"
 
 #include <QCoreApplication>
 #include <QDialogButtonBox>

@@ -2,7 +2,7 @@
 // often, where, and how large a file may grow before the next one starts.
 #pragma once
 
-#include "datalogger.h"
+#include "logs/datalogger.h"
 
 #include <QDialog>
 

@@ -1,11 +1,11 @@
 #include "devicepage.h"
 
-#include "alarmbitsmodel.h"
-#include "bus.h"
+#include "models/alarmbitsmodel.h"
+#include "bus/bus.h"
 #include "controlspanel.h"
 #include "identitypanel.h"
 #include "ledgrid.h"
-#include "livevaluesmodel.h"
+#include "models/livevaluesmodel.h"
 #include "livevaluesview.h"
 #include "trendview.h"
 

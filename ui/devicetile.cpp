@@ -1,8 +1,8 @@
 #include "devicetile.h"
 
-#include "alarmbitsmodel.h"
-#include "livevaluesmodel.h"
-#include "registermap.h"
+#include "models/alarmbitsmodel.h"
+#include "models/livevaluesmodel.h"
+#include "protocol/registermap.h"
 
 #include <QCoreApplication>
 #include <QLabel>

@@ -1,7 +1,7 @@
 #include "eventlogview.h"
 
-#include "eventlog.h"
-#include "eventlogmodel.h"
+#include "logs/eventlog.h"
+#include "models/eventlogmodel.h"
 
 #include <QFileDialog>
 #include <QHBoxLayout>

@@ -1,7 +1,7 @@
 #include "identitypanel.h"
 
-#include "livevaluesmodel.h"
-#include "registermap.h"
+#include "models/livevaluesmodel.h"
+#include "protocol/registermap.h"
 
 #include <QCoreApplication>
 #include <QLabel>

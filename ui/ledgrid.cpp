@@ -1,8 +1,8 @@
 #include "ledgrid.h"
 
-#include "alarmbitsmodel.h"
+#include "models/alarmbitsmodel.h"
 #include "ledindicator.h"
-#include "registermap.h"
+#include "protocol/registermap.h"
 
 #include <QGridLayout>
 #include <QGroupBox>

@@ -1,6 +1,6 @@
 #include "livevaluesview.h"
 
-#include "livevaluesmodel.h"
+#include "models/livevaluesmodel.h"
 
 #include <QBrush>
 #include <QHeaderView>

@@ -3,7 +3,7 @@
 // knows about devices lives in the pages and models it creates.
 #pragma once
 
-#include "bus.h"
+#include "bus/bus.h"
 
 #include <QDateTime>
 #include <QMainWindow>

@@ -3,7 +3,7 @@
 // confirmation before anything is written.
 #pragma once
 
-#include "parametertransfer.h"
+#include "commissioning/parametertransfer.h"
 
 #include <QDialog>
 

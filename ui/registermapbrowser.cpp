@@ -1,7 +1,7 @@
 #include "registermapbrowser.h"
 
-#include "familyregistry.h"
-#include "registermapmodel.h"
+#include "protocol/familyregistry.h"
+#include "models/registermapmodel.h"
 
 #include <QComboBox>
 #include <QHeaderView>

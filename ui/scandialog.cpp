@@ -1,7 +1,7 @@
 #include "scandialog.h"
 
-#include "devicescanner.h"
-#include "familyregistry.h"
+#include "bus/devicescanner.h"
+#include "protocol/familyregistry.h"
 
 #include <QDialogButtonBox>
 #include <QFormLayout>

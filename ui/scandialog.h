@@ -2,7 +2,7 @@
 // finds for adding.
 #pragma once
 
-#include "registermap.h"
+#include "protocol/registermap.h"
 
 #include <QDialog>
 

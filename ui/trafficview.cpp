@@ -1,6 +1,6 @@
 #include "trafficview.h"
 
-#include "rtuframe.h"
+#include "protocol/rtuframe.h"
 
 #include <QCheckBox>
 #include <QHeaderView>

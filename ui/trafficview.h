@@ -2,7 +2,7 @@
 // errors (the newest few hundred), and the statistics of each device.
 #pragma once
 
-#include "bus.h"
+#include "bus/bus.h"
 
 #include <QWidget>
 

@@ -1,6 +1,6 @@
 #include "trendview.h"
 
-#include "livevaluesmodel.h"
+#include "models/livevaluesmodel.h"
 
 #include <QChart>
 #include <QChartView>

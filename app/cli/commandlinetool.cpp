@@ -1,6 +1,6 @@
 #include "commandlinetool.h"
 
-#include "familyregistry.h"
+#include "protocol/familyregistry.h"
 #include "linecommands.h"
 #include "mapcommands.h"
 

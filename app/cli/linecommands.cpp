@@ -1,15 +1,15 @@
-#include "csv.h"
+#include "protocol/csv.h"
 #include "linecommands.h"
 
-#include "parametertransfer.h"
+#include "commissioning/parametertransfer.h"
 
 #include "commandparser.h"
-#include "commissioningreport.h"
-#include "devicescanner.h"
-#include "eventlog.h"
-#include "familyregistry.h"
+#include "commissioning/commissioningreport.h"
+#include "bus/devicescanner.h"
+#include "logs/eventlog.h"
+#include "protocol/familyregistry.h"
 #include "reportwriter.h"
-#include "writeaudit.h"
+#include "logs/writeaudit.h"
 
 #include <QDateTime>
 #include <QFile>

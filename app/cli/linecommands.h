@@ -2,8 +2,8 @@
 // and monitor. Each runs on the event loop and emits finished() with its exit code.
 #pragma once
 
-#include "bus.h"
-#include "parameterset.h"
+#include "bus/bus.h"
+#include "commissioning/parameterset.h"
 
 #include <QObject>
 #include <QStringList>

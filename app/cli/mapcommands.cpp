@@ -1,10 +1,10 @@
-#include "csv.h"
+#include "protocol/csv.h"
 #include "mapcommands.h"
 
 #include "commandparser.h"
-#include "familyregistry.h"
-#include "readplanner.h"
-#include "valuecodec.h"
+#include "protocol/familyregistry.h"
+#include "protocol/readplanner.h"
+#include "protocol/valuecodec.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -1,7 +1,7 @@
-#include "bus.h"
+#include "bus/bus.h"
 
-#include "linetiming.h"
-#include "rtuframe.h"
+#include "bus/linetiming.h"
+#include "protocol/rtuframe.h"
 
 #include <QCoreApplication>
 #include <QLoggingCategory>

@@ -4,12 +4,12 @@
 // offline with back-off, refuses writes in read-only mode and survives a lost port.
 #pragma once
 
-#include "bussettings.h"
-#include "devicestatistics.h"
-#include "entrystate.h"
-#include "readplanner.h"
-#include "registermap.h"
-#include "writeoutcome.h"
+#include "bus/bussettings.h"
+#include "bus/devicestatistics.h"
+#include "bus/entrystate.h"
+#include "protocol/readplanner.h"
+#include "protocol/registermap.h"
+#include "bus/writeoutcome.h"
 
 #include <QElapsedTimer>
 #include <QHash>

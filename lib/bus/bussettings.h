@@ -1,7 +1,7 @@
 // How to reach a serial line: port, baud and format, timing overrides, read-only mode.
 #pragma once
 
-#include "lineformat.h"
+#include "protocol/lineformat.h"
 
 #include <QString>
 

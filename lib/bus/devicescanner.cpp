@@ -1,6 +1,6 @@
-#include "devicescanner.h"
+#include "bus/devicescanner.h"
 
-#include "bus.h"
+#include "bus/bus.h"
 
 #include <algorithm>
 

@@ -3,7 +3,7 @@
 // request per distinct probe, and a silent address one timeout.
 #pragma once
 
-#include "registermap.h"
+#include "protocol/registermap.h"
 
 #include <QHash>
 #include <QObject>

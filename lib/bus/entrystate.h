@@ -2,7 +2,7 @@
 // none, and when it was last read.
 #pragma once
 
-#include "valuecodec.h"
+#include "protocol/valuecodec.h"
 
 #include <QString>
 

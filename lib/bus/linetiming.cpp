@@ -1,4 +1,4 @@
-#include "linetiming.h"
+#include "bus/linetiming.h"
 
 #include <algorithm>
 #include <cmath>

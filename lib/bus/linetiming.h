@@ -3,8 +3,8 @@
 // minimum response time. Used for timeouts and by the bus benchmark.
 #pragma once
 
-#include "lineformat.h"
-#include "registermap.h"
+#include "protocol/lineformat.h"
+#include "protocol/registermap.h"
 
 namespace jumo::LineTiming {
 

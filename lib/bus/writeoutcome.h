@@ -1,7 +1,7 @@
 // How a write ended: confirmed by read-back, accepted without one, or refused and why.
 #pragma once
 
-#include "valuecodec.h"
+#include "protocol/valuecodec.h"
 
 #include <QString>
 

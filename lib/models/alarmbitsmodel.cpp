@@ -1,4 +1,4 @@
-#include "alarmbitsmodel.h"
+#include "models/alarmbitsmodel.h"
 
 #include <QCoreApplication>
 

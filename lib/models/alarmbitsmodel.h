@@ -2,7 +2,7 @@
 // LED grid: label, kind, on/off, and a tooltip with register, bit and the manual's words.
 #pragma once
 
-#include "bus.h"
+#include "bus/bus.h"
 
 #include <QAbstractListModel>
 

@@ -1,6 +1,6 @@
-#include "eventlogmodel.h"
+#include "models/eventlogmodel.h"
 
-#include "eventlog.h"
+#include "logs/eventlog.h"
 
 #include <QDateTime>
 

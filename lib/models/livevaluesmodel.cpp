@@ -1,4 +1,4 @@
-#include "livevaluesmodel.h"
+#include "models/livevaluesmodel.h"
 
 #include <QCoreApplication>
 

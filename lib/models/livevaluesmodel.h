@@ -2,7 +2,7 @@
 // unit, status and age of every readable entry. One dataChanged per poll block.
 #pragma once
 
-#include "bus.h"
+#include "bus/bus.h"
 
 #include <QAbstractTableModel>
 #include <QTimer>

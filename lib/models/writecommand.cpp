@@ -1,4 +1,4 @@
-#include "writecommand.h"
+#include "models/writecommand.h"
 
 namespace jumo {
 

@@ -2,7 +2,7 @@
 // accepted without one, or refused with the reason. Controls show its state.
 #pragma once
 
-#include "bus.h"
+#include "bus/bus.h"
 
 #include <QObject>
 

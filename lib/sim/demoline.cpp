@@ -1,6 +1,6 @@
-#include "demoline.h"
+#include "sim/demoline.h"
 
-#include "familyregistry.h"
+#include "protocol/familyregistry.h"
 
 namespace jumo {
 

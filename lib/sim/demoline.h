@@ -2,8 +2,8 @@
 // device of each family, so the HMI has live values with no hardware.
 #pragma once
 
-#include "ptypair.h"
-#include "simulatorline.h"
+#include "sim/ptypair.h"
+#include "sim/simulatorline.h"
 
 #include <QObject>
 #include <QTemporaryDir>

@@ -1,4 +1,4 @@
-#include "ptypair.h"
+#include "sim/ptypair.h"
 
 #include <QDir>
 #include <QFileInfo>

@@ -1,4 +1,4 @@
-#include "simulateddevice.h"
+#include "sim/simulateddevice.h"
 
 #include <QLoggingCategory>
 #include <QtEndian>

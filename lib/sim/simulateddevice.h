@@ -2,8 +2,8 @@
 // with the map's access rules and the family's limits, and a small physical model.
 #pragma once
 
-#include "registermap.h"
-#include "valuecodec.h"
+#include "protocol/registermap.h"
+#include "protocol/valuecodec.h"
 
 #include <QByteArray>
 #include <QHash>

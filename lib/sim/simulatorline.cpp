@@ -1,6 +1,6 @@
-#include "simulatorline.h"
+#include "sim/simulatorline.h"
 
-#include "rtuframe.h"
+#include "protocol/rtuframe.h"
 
 #include <QLoggingCategory>
 

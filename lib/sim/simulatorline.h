@@ -4,8 +4,8 @@
 // and can inject faults.
 #pragma once
 
-#include "lineformat.h"
-#include "simulateddevice.h"
+#include "protocol/lineformat.h"
+#include "sim/simulateddevice.h"
 
 #include <QElapsedTimer>
 #include <QObject>

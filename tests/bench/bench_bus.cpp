@@ -2,11 +2,11 @@
 // devices at 9600 and 38400 baud with replies paced at the baud rate, against the
 // theoretical wire-time limit of the same requests, and the cost of one dead device
 // once the bus has backed off from it.
-#include "bus.h"
-#include "familyregistry.h"
-#include "linetiming.h"
-#include "ptypair.h"
-#include "simulatorline.h"
+#include "bus/bus.h"
+#include "protocol/familyregistry.h"
+#include "bus/linetiming.h"
+#include "sim/ptypair.h"
+#include "sim/simulatorline.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

@@ -3,7 +3,7 @@
 // an error value shown as what it is.
 #include "connectionbar.h"
 #include "controlrow.h"
-#include "eventlog.h"
+#include "logs/eventlog.h"
 #include "eventlogview.h"
 #include "controlspanel.h"
 #include "devicepage.h"

@@ -3,9 +3,9 @@
 // the independent libmodbus server (tests/peers, a separate process).
 #pragma once
 
-#include "familyregistry.h"
-#include "ptypair.h"
-#include "simulatorline.h"
+#include "protocol/familyregistry.h"
+#include "sim/ptypair.h"
+#include "sim/simulatorline.h"
 
 #include <QProcess>
 #include <QSignalSpy>

@@ -3,7 +3,7 @@
 // reply and a dead device among live ones. Two devices poll two blocks of the same
 // size with distinct constant values, so a reply taken for the wrong request would
 // show up as a wrong value: none may ever reach a model.
-#include "bus.h"
+#include "bus/bus.h"
 #include "testpeers.h"
 
 #include <QTest>

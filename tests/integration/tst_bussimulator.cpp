@@ -1,10 +1,10 @@
 // The bus against the device simulator over a pty line: scan, error values, atomic
 // float writes, broadcasts, command words, RAM overrides, setpoint hold, the IPC/TYA
 // bus-error keepalive, and a port that goes away and comes back.
-#include "bus.h"
-#include "datalogger.h"
-#include "devicescanner.h"
-#include "rtuframe.h"
+#include "bus/bus.h"
+#include "logs/datalogger.h"
+#include "bus/devicescanner.h"
+#include "protocol/rtuframe.h"
 #include "testpeers.h"
 
 #include <QTest>

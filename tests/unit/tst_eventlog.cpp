@@ -1,6 +1,6 @@
 // Event logs (alarm journal, audit log) keep their records across restarts, survive a
 // line cut by a crash, and export CSV.
-#include "eventlog.h"
+#include "logs/eventlog.h"
 
 #include <QFile>
 #include <QTemporaryDir>

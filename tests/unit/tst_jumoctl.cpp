@@ -1,7 +1,7 @@
 // jumoctl's map commands, run in-process and as the real executable: the CSV contract
 // scripts rely on, --help for every command, and non-zero exits with a reason on stderr.
 #include "clirun.h"
-#include "familyregistry.h"
+#include "protocol/familyregistry.h"
 #include "mapcommands.h"
 
 #include <QDir>

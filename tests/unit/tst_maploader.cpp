@@ -1,7 +1,7 @@
 // The map loader accepts good maps and refuses each kind of bad one with a message
 // that names the file, the entry and the problem.
-#include "familyregistry.h"
-#include "maploader.h"
+#include "protocol/familyregistry.h"
+#include "protocol/maploader.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

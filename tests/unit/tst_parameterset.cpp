@@ -1,6 +1,6 @@
 // Parameter files: what they hold, how they round-trip, and what is refused.
-#include "familyregistry.h"
-#include "parameterset.h"
+#include "protocol/familyregistry.h"
+#include "commissioning/parameterset.h"
 
 #include <QTest>
 

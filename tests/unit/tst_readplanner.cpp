@@ -1,8 +1,8 @@
 // The read planner makes as few requests as the family's limit allows, and never reads
 // a write-only register, an undefined address or across one.
-#include "familyregistry.h"
-#include "maploader.h"
-#include "readplanner.h"
+#include "protocol/familyregistry.h"
+#include "protocol/maploader.h"
+#include "protocol/readplanner.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

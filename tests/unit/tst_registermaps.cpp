@@ -1,8 +1,8 @@
 // The built-in register maps hold every register and bit row of the manuals' address
 // tables. The expected counts and rows in tests/data/*-rows.tsv were transcribed from
 // the manuals separately from the map files, so a slip in either shows up here.
-#include "familyregistry.h"
-#include "valuecodec.h"
+#include "protocol/familyregistry.h"
+#include "protocol/valuecodec.h"
 
 #include <QFile>
 #include <QTest>

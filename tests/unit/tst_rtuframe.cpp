@@ -2,9 +2,9 @@
 // (tests/data/*-frames.tsv). The manuals' errata are named here: frames with a wrong
 // CRC, a stated value that does not match the bytes, and register addresses that do
 // not match the address tables.
-#include "familyregistry.h"
-#include "rtuframe.h"
-#include "valuecodec.h"
+#include "protocol/familyregistry.h"
+#include "protocol/rtuframe.h"
+#include "protocol/valuecodec.h"
 
 #include <QFile>
 #include <QSet>

@@ -1,7 +1,7 @@
 // The simulated device follows the map's access rules and the family's limits with the
 // manuals' exception codes, and its models move the way the issue describes.
-#include "familyregistry.h"
-#include "simulateddevice.h"
+#include "protocol/familyregistry.h"
+#include "sim/simulateddevice.h"
 
 #include <QTest>
 

@@ -1,7 +1,7 @@
 // Value codecs reproduce the manuals' example values byte-exact, in both directions,
 // and classify the devices' float error values.
-#include "familyregistry.h"
-#include "valuecodec.h"
+#include "protocol/familyregistry.h"
+#include "protocol/valuecodec.h"
 
 #include <QTest>
 

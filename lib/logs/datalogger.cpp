@@ -1,5 +1,5 @@
-#include "csv.h"
-#include "datalogger.h"
+#include "protocol/csv.h"
+#include "logs/datalogger.h"
 
 #include <QDateTime>
 #include <QDir>

@@ -3,8 +3,8 @@
 // for the HMI's backup, compare and restore.
 #pragma once
 
-#include "bus.h"
-#include "parameterset.h"
+#include "bus/bus.h"
+#include "commissioning/parameterset.h"
 
 namespace jumo {
 

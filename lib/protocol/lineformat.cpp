@@ -1,4 +1,4 @@
-#include "lineformat.h"
+#include "protocol/lineformat.h"
 
 namespace jumo {
 

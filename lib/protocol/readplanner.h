@@ -2,7 +2,7 @@
 // the family's word limit allows, bridging gaps only through defined readable registers.
 #pragma once
 
-#include "registermap.h"
+#include "protocol/registermap.h"
 
 #include <QCoreApplication>
 #include <QList>

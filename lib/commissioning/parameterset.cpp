@@ -1,6 +1,6 @@
-#include "parameterset.h"
+#include "commissioning/parameterset.h"
 
-#include "valuecodec.h"
+#include "protocol/valuecodec.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>

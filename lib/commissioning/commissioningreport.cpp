@@ -1,6 +1,6 @@
-#include "commissioningreport.h"
+#include "commissioning/commissioningreport.h"
 
-#include "parameterset.h"
+#include "commissioning/parameterset.h"
 
 namespace jumo {
 

@@ -3,8 +3,8 @@
 // jumoctl print it as HTML or, through QTextDocument, as PDF.
 #pragma once
 
-#include "entrystate.h"
-#include "registermap.h"
+#include "bus/entrystate.h"
+#include "protocol/registermap.h"
 
 #include <QCoreApplication>
 #include <QDateTime>

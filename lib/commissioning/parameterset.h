@@ -3,7 +3,7 @@
 // The JSON format is documented in resources/maps/README.md ("Parameter files").
 #pragma once
 
-#include "registermap.h"
+#include "protocol/registermap.h"
 
 #include <QCoreApplication>
 #include <QDateTime>

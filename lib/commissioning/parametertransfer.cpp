@@ -1,4 +1,4 @@
-#include "parametertransfer.h"
+#include "commissioning/parametertransfer.h"
 
 #include <QSet>
 

@@ -1,4 +1,4 @@
-#include "translations.h"
+#include "protocol/translations.h"
 
 #include <QCoreApplication>
 #include <QLibraryInfo>

@@ -1,6 +1,6 @@
-#include "familyregistry.h"
+#include "protocol/familyregistry.h"
 
-#include "maploader.h"
+#include "protocol/maploader.h"
 
 #include <QDir>
 #include <QStandardPaths>

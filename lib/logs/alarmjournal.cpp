@@ -1,4 +1,4 @@
-#include "alarmjournal.h"
+#include "logs/alarmjournal.h"
 
 namespace jumo {
 

@@ -2,8 +2,8 @@
 // sets or clears, with time and device, in an EventLog that survives restarts.
 #pragma once
 
-#include "bus.h"
-#include "eventlog.h"
+#include "bus/bus.h"
+#include "logs/eventlog.h"
 
 #include <QHash>
 

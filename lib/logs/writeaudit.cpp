@@ -1,4 +1,4 @@
-#include "writeaudit.h"
+#include "logs/writeaudit.h"
 
 namespace jumo {
 

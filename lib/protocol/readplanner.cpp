@@ -1,4 +1,4 @@
-#include "readplanner.h"
+#include "protocol/readplanner.h"
 
 #include <QCoreApplication>
 #include <QHash>

@@ -2,8 +2,8 @@
 // value asked for and what became of it (read-only refusals included), in an EventLog.
 #pragma once
 
-#include "bus.h"
-#include "eventlog.h"
+#include "bus/bus.h"
+#include "logs/eventlog.h"
 
 #include <QHash>
 

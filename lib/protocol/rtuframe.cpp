@@ -1,4 +1,4 @@
-#include "rtuframe.h"
+#include "protocol/rtuframe.h"
 
 #include <QString>
 

@@ -1,5 +1,5 @@
-#include "csv.h"
-#include "eventlog.h"
+#include "protocol/csv.h"
+#include "logs/eventlog.h"
 
 #include <QDir>
 #include <QFileInfo>

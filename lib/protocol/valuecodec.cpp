@@ -1,4 +1,4 @@
-#include "valuecodec.h"
+#include "protocol/valuecodec.h"
 
 #include <QStringList>
 

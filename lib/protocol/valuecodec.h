@@ -2,7 +2,7 @@
 // map says: word orders, texts, enums, bit fields and the devices' NaN/Inf error values.
 #pragma once
 
-#include "registermap.h"
+#include "protocol/registermap.h"
 
 #include <QCoreApplication>
 #include <QList>

@@ -1,4 +1,4 @@
-#include "registermapmodel.h"
+#include "models/registermapmodel.h"
 
 #include <QCoreApplication>
 

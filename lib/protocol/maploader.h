@@ -2,7 +2,7 @@
 // a broken file is refused as a whole with messages naming file, entry and problem.
 #pragma once
 
-#include "registermap.h"
+#include "protocol/registermap.h"
 
 #include <QByteArray>
 #include <QStringList>

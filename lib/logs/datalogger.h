@@ -3,7 +3,7 @@
 // "jumoctl monitor --csv": time,device,id,value,unit,status.
 #pragma once
 
-#include "bus.h"
+#include "bus/bus.h"
 
 #include <QDate>
 #include <QFile>

@@ -1,4 +1,4 @@
-#include "registermap.h"
+#include "protocol/registermap.h"
 
 #include <QCoreApplication>
 

@@ -2,7 +2,7 @@
 // and the files found in the user's map folders, validated as they are loaded.
 #pragma once
 
-#include "registermap.h"
+#include "protocol/registermap.h"
 
 #include <QStringList>
 

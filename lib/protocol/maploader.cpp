@@ -1,4 +1,4 @@
-#include "maploader.h"
+#include "protocol/maploader.h"
 
 #include <QCoreApplication>
 #include <QFile>

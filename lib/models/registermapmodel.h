@@ -2,7 +2,7 @@
 // storage, unit, group; one row per register.
 #pragma once
 
-#include "registermap.h"
+#include "protocol/registermap.h"
 
 #include <QAbstractTableModel>
 
