@@ -22,7 +22,7 @@
 <context>
     <name>jumo::AlarmBitsModel</name>
     <message>
-        <location filename="../lib/models/alarmbitsmodel.cpp" line="+93"/>
+        <location filename="../lib/models/alarmbitsmodel.cpp" line="+108"/>
         <source>%1 (register %2)</source>
         <translation>%1 (Register %2)</translation>
     </message>
@@ -52,56 +52,97 @@ Handbuch %6: &quot;%7&quot;</translation>
     </message>
     <message>
         <location line="+7"/>
-        <source>Not current: the last read failed or none was made yet.</source>
-        <translation>Nicht aktuell: Das letzte Lesen ist fehlgeschlagen oder es wurde noch nicht gelesen.</translation>
+        <source>Unknown: the register could not be read (%1).</source>
+        <translation>Unbekannt: Das Register konnte nicht gelesen werden (%1).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Stale: not read within the device&apos;s cycle.</source>
+        <translation>Veraltet: nicht innerhalb des Gerätezyklus gelesen.</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::BitWrite</name>
+    <message>
+        <location filename="../lib/protocol/bitwrite.cpp" line="+42"/>
+        <source>&apos;%1&apos; is not a writable bit field</source>
+        <translation>&apos;%1&apos; ist kein beschreibbares Bitfeld</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1&apos; is a command word: its bits are actions, sent one at a time, not states to keep</source>
+        <translation>&apos;%1&apos; ist ein Befehlswort: Seine Bits sind Aktionen, die einzeln gesendet werden, keine Zustände, die erhalten bleiben</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no bit of &apos;%1&apos; given</source>
+        <translation>kein Bit von &apos;%1&apos; angegeben</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;%1&apos; is not a bit of &apos;%2&apos;</source>
+        <translation>&apos;%1&apos; ist kein Bit von &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1.%2&apos; is %3 bits wide; write the whole word</source>
+        <translation>&apos;%1.%2&apos; ist %3 Bit breit; schreiben Sie das ganze Wort</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1.%2&apos; is the activation bit, which every write sets</source>
+        <translation>&apos;%1.%2&apos; ist das Aktivierungsbit, das jeder Schreibvorgang setzt</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the device does not report the state of %1 of &apos;%2&apos;, which a write of the word sets too: give every bit, or write the whole word</source>
+        <translation>das Gerät meldet den Zustand von %1 von &apos;%2&apos; nicht, den ein Schreiben des Wortes ebenfalls setzt: Geben Sie jedes Bit an oder schreiben Sie das ganze Wort</translation>
     </message>
 </context>
 <context>
     <name>jumo::Bus</name>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+96"/>
-        <source>cannot open %1: %2</source>
-        <translation>%1 kann nicht geöffnet werden: %2</translation>
-    </message>
-    <message>
-        <location line="+27"/>
+        <location filename="../lib/bus/bus.cpp" line="+62"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
     <message>
-        <location line="+20"/>
-        <source>line lost: %1</source>
-        <translation>Leitung verloren: %1</translation>
-    </message>
-    <message>
-        <location line="+159"/>
+        <location line="+242"/>
+        <location line="+86"/>
         <source>read-only mode: %1 was not written</source>
         <translation>Nur-Lese-Modus: %1 wurde nicht geschrieben</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <location line="+94"/>
+        <location line="-82"/>
+        <location line="+127"/>
         <source>unknown device</source>
         <translation>unbekanntes Gerät</translation>
     </message>
     <message>
-        <location line="-94"/>
-        <location line="+102"/>
+        <location line="-123"/>
+        <location line="+130"/>
         <source>&apos;%1&apos; is not an entry of %2</source>
         <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-108"/>
         <source>&apos;%1&apos; needs more words than one write may carry</source>
         <translation>&apos;%1&apos; benötigt mehr Wörter, als eine Schreibanfrage umfassen darf</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>the line is not connected</source>
-        <translation>die Leitung ist nicht verbunden</translation>
+        <location line="-262"/>
+        <source>the line was reopened</source>
+        <translation>die Leitung wurde neu geöffnet</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+266"/>
+        <location line="+29"/>
+        <location line="+53"/>
+        <source>not written: the line is not connected</source>
+        <translation>nicht geschrieben: Die Leitung ist nicht verbunden</translation>
+    </message>
+    <message>
+        <location line="-21"/>
         <source>not broadcast: the line also has a %1 device at address %2, which would take the same words as something else</source>
         <translation>kein Broadcast: an der Leitung hängt auch ein Gerät der Familie %1 an Adresse %2, das dieselben Wörter als etwas anderes übernehmen würde</translation>
     </message>
@@ -111,7 +152,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>kein Gerät der Familie %1 an dieser Leitung, von dem ein Broadcast zurückgelesen werden kann</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+24"/>
         <source>read-only mode: nothing is written</source>
         <translation>Nur-Lese-Modus: Es wird nichts geschrieben</translation>
     </message>
@@ -126,79 +167,14 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>nur RAM-Werte können gehalten werden, &apos;%1&apos; gehört nicht dazu</translation>
     </message>
     <message>
-        <location line="+134"/>
+        <location line="+110"/>
         <source>read-only mode</source>
         <translation>Nur-Lese-Modus</translation>
     </message>
     <message>
-        <location line="+65"/>
-        <source>reply of %1 words where %2 were asked for</source>
-        <translation>Antwort mit %1 Wörtern, angefordert waren %2</translation>
-    </message>
-    <message>
-        <location line="+98"/>
+        <location line="+90"/>
         <source>exception %1</source>
         <translation>Exception %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>refused by the device: exception %1, %2</source>
-        <translation>vom Gerät abgelehnt: Exception %1, %2</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source> (precondition: %1)</source>
-        <translation> (Voraussetzung: %1)</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>the line was closed or lost while the write was under way: its outcome is unknown, read the value back</source>
-        <translation>die Leitung wurde während des Schreibens geschlossen oder ging verloren: das Ergebnis ist unbekannt, den Wert zurücklesen</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>no answer: %1</source>
-        <translation>keine Antwort: %1</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>written, but the read-back failed: %1</source>
-        <translation>geschrieben, aber das Rücklesen ist fehlgeschlagen: %1</translation>
-    </message>
-    <message>
-        <location line="+130"/>
-        <source>broadcast sent; it cannot be read back</source>
-        <translation>Broadcast gesendet; er kann nicht zurückgelesen werden</translation>
-    </message>
-    <message>
-        <location line="+11"/>
-        <source>written (not read back)</source>
-        <translation>geschrieben (nicht zurückgelesen)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>acknowledged by the device; it cannot be read back</source>
-        <translation>vom Gerät quittiert; der Wert kann nicht zurückgelesen werden</translation>
-    </message>
-    <message>
-        <location line="+18"/>
-        <source>confirmed by read-back: %1</source>
-        <translation>durch Rücklesen bestätigt: %1</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>written, but the device reads back %1</source>
-        <translation>geschrieben, aber das Gerät liefert beim Rücklesen %1</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>broadcast not taken by the device at address %1: it reads back %2</source>
-        <translation>Broadcast vom Gerät an Adresse %1 nicht übernommen: es liefert beim Rücklesen %2</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>broadcast confirmed by read-back from every device</source>
-        <translation>Broadcast durch Rücklesen von jedem Gerät bestätigt</translation>
     </message>
 </context>
 <context>
@@ -806,18 +782,23 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LedGrid</name>
     <message numerus="yes">
-        <location filename="../ui/ledgrid.cpp" line="+79"/>
+        <location filename="../ui/ledgrid.cpp" line="+83"/>
         <source>%n active alarm(s)</source>
         <translation>
             <numerusform>%n aktiver Alarm</numerusform>
             <numerusform>%n aktive Alarme</numerusform>
         </translation>
     </message>
+    <message>
+        <location line="+1"/>
+        <source>Alarms unknown: the device cannot be read</source>
+        <translation>Alarme unbekannt: Das Gerät kann nicht gelesen werden</translation>
+    </message>
 </context>
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+81"/>
+        <location filename="../app/cli/linecommands.cpp" line="+82"/>
         <source>Serial port, e.g. /dev/ttyUSB0 (required).</source>
         <translation>Serielle Schnittstelle, z. B. /dev/ttyUSB0 (erforderlich).</translation>
     </message>
@@ -854,12 +835,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <message>
         <location line="+0"/>
         <location line="+2"/>
-        <location line="+343"/>
+        <location line="+344"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-343"/>
+        <location line="-344"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
@@ -870,12 +851,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+343"/>
+        <location line="+344"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-341"/>
+        <location line="-342"/>
         <source>Never write to the line (control-room mode).</source>
         <translation>Nie auf die Leitung schreiben (Leitwarten-Modus).</translation>
     </message>
@@ -962,6 +943,11 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <location line="+36"/>
         <source>exception %1: %2</source>
         <translation>Exception %1: %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not available on this device (exception 2)</source>
+        <translation>auf diesem Gerät nicht vorhanden (Exception 2)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1257,44 +1243,32 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
 </context>
 <context>
+    <name>jumo::LineConnection</name>
+    <message>
+        <location filename="../lib/bus/lineconnection.cpp" line="+42"/>
+        <source>cannot open %1: %2</source>
+        <translation>%1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>line lost: %1</source>
+        <translation>Leitung verloren: %1</translation>
+    </message>
+</context>
+<context>
     <name>jumo::LiveValuesModel</name>
     <message>
-        <location filename="../lib/models/livevaluesmodel.cpp" line="+67"/>
-        <source>OK</source>
-        <translation>OK</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Exception %1: %2</source>
-        <translation>Exception %1: %2</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Reply did not fit the request</source>
-        <translation>Antwort passt nicht zur Anfrage</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Line disconnected</source>
-        <translation>Leitung getrennt</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>No answer</source>
-        <translation>Keine Antwort</translation>
-    </message>
-    <message>
-        <location line="+37"/>
+        <location filename="../lib/models/livevaluesmodel.cpp" line="+98"/>
         <source>%1, register %2, %3</source>
         <translation>%1, Register %2, %3</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <source>Not read yet</source>
-        <translation>Noch nicht gelesen</translation>
+        <location line="+3"/>
+        <source>Last known value: %1, %2 s ago</source>
+        <translation>Letzter bekannter Wert: %1, vor %2 s</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+25"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
@@ -1837,7 +1811,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;entries&apos; muss ein nicht leeres Array sein</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>&apos;%1&apos; is not a readable entry</source>
         <translation>&apos;%1&apos; ist kein lesbarer Eintrag</translation>
     </message>
@@ -1928,13 +1902,13 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+1"/>
-        <location line="+246"/>
+        <location line="+287"/>
         <location line="+21"/>
         <source>entry &apos;%1&apos; (%2)</source>
         <translation>Eintrag &apos;%1&apos; (%2)</translation>
     </message>
     <message>
-        <location line="-257"/>
+        <location line="-298"/>
         <source>id must be lower case letters, digits and &apos;_&apos;</source>
         <translation>die Kennung darf nur aus Kleinbuchstaben, Ziffern und &apos;_&apos; bestehen</translation>
     </message>
@@ -1989,7 +1963,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>ein Bedienelement benötigt einen schreibbaren Eintrag</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+10"/>
+        <source>&apos;action&apos; must be true or false</source>
+        <translation>&apos;action&apos; muss true oder false sein</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>an action needs a writable entry</source>
+        <translation>eine Aktion braucht einen beschreibbaren Eintrag</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>&apos;values&apos; is only for enums</source>
         <translation>&apos;values&apos; ist nur für Enums zulässig</translation>
     </message>
@@ -2014,7 +1998,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>ein Bitfeld benötigt &apos;bits&apos;</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>%1, bit %2</source>
         <translation>%1, Bit %2</translation>
     </message>
@@ -2064,7 +2048,22 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>verweist auf unbekanntes Bit &apos;%1&apos; von &apos;%2&apos;</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
+        <source>entry &apos;%1&apos;, bit %2</source>
+        <translation>Eintrag &apos;%1&apos;, Bit %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;stateFrom&apos; is only for write-only words (a readable word reports its own bits)</source>
+        <translation>&apos;stateFrom&apos; gibt es nur für Nur-Schreib-Wörter (ein lesbares Wort meldet seine Bits selbst)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&apos;stateFrom&apos; must name a single bit of a readable bit field</source>
+        <translation>&apos;stateFrom&apos; muss ein einzelnes Bit eines lesbaren Bitfelds nennen</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>unknown model &apos;%1&apos; (expected power_controller or process_controller)</source>
         <translation>unbekanntes Modell &apos;%1&apos; (erwartet: power_controller oder process_controller)</translation>
     </message>
@@ -2079,7 +2078,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>unbekannte Aktion &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+8"/>
+        <source>a link is a pair of references</source>
+        <translation>eine Verknüpfung ist ein Paar von Verweisen</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>duplicate id (also at %1)</source>
         <translation>doppelte Kennung (auch bei %1)</translation>
     </message>
@@ -2363,12 +2367,13 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ReadPlanner</name>
     <message>
+        <location filename="../lib/bus/scheduler.cpp" line="+57"/>
         <location filename="../lib/protocol/readplanner.cpp" line="+32"/>
         <source>&apos;%1&apos; is not an entry of %2</source>
         <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location filename="../lib/protocol/readplanner.cpp" line="+49"/>
         <source>&apos;%1&apos; (%2) is write-only</source>
         <translation>&apos;%1&apos; (%2) ist nur schreibbar</translation>
     </message>
@@ -2455,6 +2460,14 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+1"/>
         <source>Section</source>
         <translation>Abschnitt</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::RtuTransport</name>
+    <message>
+        <location filename="../lib/bus/rtutransport.cpp" line="+122"/>
+        <source>reply of %1 words where %2 were asked for</source>
+        <translation>Antwort mit %1 Wörtern, angefragt waren %2</translation>
     </message>
 </context>
 <context>
@@ -2746,11 +2759,198 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
 </context>
 <context>
+    <name>jumo::ValueText</name>
+    <message>
+        <location filename="../lib/models/valuetext.cpp" line="+27"/>
+        <source>Not read yet</source>
+        <translation>Noch nicht gelesen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No answer</source>
+        <translation>Keine Antwort</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Exception %1: %2</source>
+        <translation>Exception %1: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reply did not fit the request</source>
+        <translation>Antwort passte nicht zur Anfrage</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Device not answering</source>
+        <translation>Gerät antwortet nicht</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Line lost</source>
+        <translation>Leitung verloren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Line disconnected</source>
+        <translation>Leitung getrennt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not available on this device</source>
+        <translation>Auf diesem Gerät nicht vorhanden</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stale (%1 s old)</source>
+        <translation>Veraltet (%1 s alt)</translation>
+    </message>
+</context>
+<context>
     <name>jumo::WriteCommand</name>
     <message>
         <location filename="../lib/models/writecommand.cpp" line="+18"/>
         <source>Writing %1...</source>
         <translation>%1 wird geschrieben...</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::WriteTransaction</name>
+    <message>
+        <location filename="../lib/bus/writetransaction.cpp" line="+88"/>
+        <source>refused by the device: exception %1, %2</source>
+        <translation>vom Gerät abgelehnt: Exception %1, %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> (precondition: %1)</source>
+        <translation> (Voraussetzung: %1)</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>not written: the line went down before the write</source>
+        <translation>nicht geschrieben: Die Leitung fiel vor dem Schreiben aus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not written: the state of the other bits could not be read (%1)</source>
+        <translation>nicht geschrieben: Der Zustand der übrigen Bits konnte nicht gelesen werden (%1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+41"/>
+        <source>exception %1, %2</source>
+        <translation>Exception %1, %2</translation>
+    </message>
+    <message>
+        <location line="-24"/>
+        <source>the line was lost while the write was under way: its outcome is unknown, check the device</source>
+        <translation>die Leitung ging während des Schreibens verloren: Das Ergebnis ist unbekannt, prüfen Sie das Gerät</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>no answer: the command may or may not have been carried out; it is not sent again, check the device</source>
+        <translation>keine Antwort: Der Befehl wurde vielleicht ausgeführt, vielleicht nicht; er wird nicht erneut gesendet, prüfen Sie das Gerät</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>no answer after %n attempt(s): the device may or may not have taken the value, read it back</source>
+        <translation>
+            <numerusform>keine Antwort nach %n Versuch: Das Gerät hat den Wert vielleicht übernommen, vielleicht nicht, lesen Sie ihn zurück</numerusform>
+            <numerusform>keine Antwort nach %n Versuchen: Das Gerät hat den Wert vielleicht übernommen, vielleicht nicht, lesen Sie ihn zurück</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the line went down</source>
+        <translation>die Leitung fiel aus</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>broadcast sent, but the device at address %1 could not be read back: %2</source>
+        <translation>Broadcast gesendet, aber das Gerät an Adresse %1 konnte nicht zurückgelesen werden: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>written and acknowledged, but the read-back failed: %1</source>
+        <translation>geschrieben und quittiert, aber das Zurücklesen schlug fehl: %1</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>broadcast sent; it cannot be read back</source>
+        <translation>Broadcast gesendet; er kann nicht zurückgelesen werden</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>acknowledged by the device; it does not report these bits, so they cannot be read back</source>
+        <translation>vom Gerät quittiert; es meldet diese Bits nicht, daher können sie nicht zurückgelesen werden</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>written (not read back)</source>
+        <translation>geschrieben (nicht zurückgelesen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>acknowledged by the device; it cannot be read back</source>
+        <translation>vom Gerät quittiert; kann nicht zurückgelesen werden</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <location line="+10"/>
+        <source>confirmed by read-back: %1</source>
+        <translation>durch Zurücklesen bestätigt: %1</translation>
+    </message>
+    <message>
+        <location line="-7"/>
+        <source>written, but the device does not report %1</source>
+        <translation>geschrieben, aber das Gerät meldet nicht %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>written, but the device reads back %1</source>
+        <translation>geschrieben, aber das Gerät liest %1 zurück</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>broadcast not taken by the device at address %1: it reads back %2</source>
+        <translation>Broadcast vom Gerät an Adresse %1 nicht übernommen: Es liest %2 zurück</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>broadcast confirmed by read-back from every device</source>
+        <translation>Broadcast durch Zurücklesen von jedem Gerät bestätigt</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+5"/>
+        <source>not written: %1</source>
+        <translation>nicht geschrieben: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no answer, and then %1: the outcome is unknown, check the device</source>
+        <translation>keine Antwort, und dann %1: Das Ergebnis ist unbekannt, prüfen Sie das Gerät</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>written and acknowledged, but not read back: %1</source>
+        <translation>geschrieben und quittiert, aber nicht zurückgelesen: %1</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>broadcast confirmed by read-back from every remaining device</source>
+        <translation>Broadcast durch Zurücklesen von jedem verbleibenden Gerät bestätigt</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the device was removed from the line</source>
+        <translation>das Gerät wurde von der Leitung entfernt</translation>
     </message>
 </context>
 <context>

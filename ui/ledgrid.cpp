@@ -72,11 +72,16 @@ void LedGrid::refresh(int first, int last)
     }
     for (int row = first; row <= last && row < m_leds.size(); ++row) {
         const QModelIndex index = m_model->index(row);
-        m_leds[row]->setState(index.data(AlarmBitsModel::ActiveRole).toBool(),
-                              index.data(AlarmBitsModel::CurrentRole).toBool());
+        const auto state = AlarmBitsModel::BitState(index.data(AlarmBitsModel::BitStateRole).toInt());
+        m_leds[row]->setState(state == AlarmBitsModel::BitState::On    ? LedIndicator::State::On
+                              : state == AlarmBitsModel::BitState::Off ? LedIndicator::State::Off
+                                                                       : LedIndicator::State::Unknown,
+                              Validity(index.data(AlarmBitsModel::ValidityRole).toInt()) == Validity::Stale);
         m_leds[row]->setToolTip(index.data(Qt::ToolTipRole).toString());
     }
-    m_summary->setText(tr("%n active alarm(s)", nullptr, m_model->activeAlarms()));
+    m_summary->setText(m_model->alarmsKnown()
+                               ? tr("%n active alarm(s)", nullptr, m_model->activeAlarms())
+                               : tr("Alarms unknown: the device cannot be read"));
 }
 
 void LedGrid::showEvent(QShowEvent *event)

@@ -2,6 +2,8 @@
 
 #include <QPainter>
 
+#include <algorithm>
+
 namespace jumo {
 
 LedIndicator::LedIndicator(const QString &label, Kind kind, QWidget *parent)
@@ -10,12 +12,12 @@ LedIndicator::LedIndicator(const QString &label, Kind kind, QWidget *parent)
     setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
 }
 
-void LedIndicator::setState(bool on, bool current)
+void LedIndicator::setState(State state, bool stale)
 {
-    if (on == m_on && current == m_current)
+    if (state == m_state && stale == m_stale)
         return;
-    m_on = on;
-    m_current = current;
+    m_state = state;
+    m_stale = stale;
     update();
 }
 
@@ -31,16 +33,34 @@ void LedIndicator::paintEvent(QPaintEvent *)
     p.setRenderHint(QPainter::Antialiasing);
     const int d = fontMetrics().height() - 2;
     const QRect lamp(2, (height() - d) / 2, d, d);
-    QColor on = m_kind == Kind::Alarm ? QColor(220, 30, 30) : m_kind == Kind::Warning ? QColor(240, 170, 0) : QColor(40, 170, 60);
-    QColor fill = m_on ? on : palette().color(QPalette::Window).darker(115);
-    if (!m_current)
-        fill = fill.lighter(150);   // not current: pale, and the tooltip says why
-    p.setPen(QPen(palette().color(QPalette::Mid), 1));
-    p.setBrush(fill);
-    p.drawEllipse(lamp);
-    p.setPen(m_current ? palette().color(QPalette::WindowText) : palette().color(QPalette::Disabled, QPalette::WindowText));
+    const bool on = m_state == State::On;
+    if (m_state == State::Unknown) {
+        // Neither on nor off: a hollow, dashed lamp with a question mark.
+        p.setPen(QPen(palette().color(QPalette::Mid), 1, Qt::DashLine));
+        p.setBrush(Qt::NoBrush);
+        p.drawEllipse(lamp);
+        QFont mark = font();
+        mark.setPixelSize(std::max(6, d - 4));
+        mark.setBold(true);
+        p.setFont(mark);
+        p.setPen(palette().color(QPalette::Disabled, QPalette::WindowText));
+        p.drawText(lamp, Qt::AlignCenter, QStringLiteral("?"));
+    } else {
+        const QColor lit = m_kind == Kind::Alarm ? QColor(220, 30, 30)
+                : m_kind == Kind::Warning        ? QColor(240, 170, 0)
+                                                 : QColor(40, 170, 60);
+        QColor fill = on ? lit : palette().color(QPalette::Window).darker(115);
+        if (m_stale)
+            fill = fill.lighter(150);   // stale: pale, and the tooltip says why
+        p.setPen(QPen(palette().color(QPalette::Mid), 1));
+        p.setBrush(fill);
+        p.drawEllipse(lamp);
+    }
+    const bool current = m_state != State::Unknown && !m_stale;
+    p.setPen(current ? palette().color(QPalette::WindowText) : palette().color(QPalette::Disabled, QPalette::WindowText));
     QFont f = font();
-    f.setBold(m_on && m_kind != Kind::Status);
+    f.setBold(on && m_kind != Kind::Status);
+    f.setItalic(!current);
     p.setFont(f);
     p.drawText(QRect(lamp.right() + 6, 0, width() - lamp.right() - 6, height()), Qt::AlignVCenter | Qt::AlignLeft,
                m_label);

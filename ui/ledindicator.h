@@ -12,12 +12,16 @@ class LedIndicator : public QWidget
 
 public:
     enum class Kind { Alarm, Warning, Status };
+    // Unknown is neither on nor off: a hollow lamp with a question mark.
+    enum class State { Off, On, Unknown };
 
     LedIndicator(const QString &label, Kind kind, QWidget *parent = nullptr);
 
-    void setState(bool on, bool current);
-    bool isOn() const { return m_on; }
-    bool isCurrent() const { return m_current; }
+    // stale: the state is the last one read, longer ago than the device's cycle allows.
+    void setState(State state, bool stale);
+    State state() const { return m_state; }
+    bool isOn() const { return m_state == State::On; }
+    bool isStale() const { return m_stale; }
     QString label() const { return m_label; }
 
     QSize sizeHint() const override;
@@ -28,8 +32,8 @@ protected:
 private:
     QString m_label;
     Kind m_kind;
-    bool m_on = false;
-    bool m_current = false;
+    State m_state = State::Unknown;
+    bool m_stale = false;
 };
 
 } // namespace jumo

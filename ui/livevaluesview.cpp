@@ -3,6 +3,7 @@
 #include "models/livevaluesmodel.h"
 
 #include <QBrush>
+#include <QFont>
 #include <QHeaderView>
 #include <QIdentityProxyModel>
 
@@ -10,7 +11,8 @@ namespace jumo {
 
 namespace {
 
-// Turns the model's stale and error roles into colours.
+// Turns the model's validity and error roles into colour and type: stale values grey
+// and italic, unknown ones grey (they show no number, and the status says why).
 class LiveValuesStyle : public QIdentityProxyModel
 {
 public:
@@ -18,11 +20,17 @@ public:
 
     QVariant data(const QModelIndex &index, int role) const override
     {
+        const auto validity = Validity(QIdentityProxyModel::data(index, LiveValuesModel::ValidityRole).toInt());
         if (role == Qt::ForegroundRole) {
+            if (validity != Validity::Current)
+                return QBrush(Qt::gray);
             if (QIdentityProxyModel::data(index, LiveValuesModel::ErrorValueRole).toBool())
                 return QBrush(QColor(170, 0, 0));
-            if (QIdentityProxyModel::data(index, LiveValuesModel::StaleRole).toBool())
-                return QBrush(Qt::gray);
+        }
+        if (role == Qt::FontRole && validity == Validity::Stale) {
+            QFont font = QIdentityProxyModel::data(index, role).value<QFont>();
+            font.setItalic(true);
+            return font;
         }
         return QIdentityProxyModel::data(index, role);
     }

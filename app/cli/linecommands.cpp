@@ -24,7 +24,7 @@ namespace {
 
 QJsonValue jsonValue(const EntryState &state)
 {
-    if (state.error != ReadError::None || !state.value.isOk())
+    if (!state.isCurrent() || !state.value.isOk())
         return QJsonValue();
     return QJsonValue::fromVariant(state.value.value);
 }
@@ -34,9 +34,10 @@ QString deviceName(const RegisterMap &map, quint8 address)
     return QStringLiteral("%1@%2").arg(map.family).arg(address);
 }
 
+// A command reports only values read now: anything not current is a failure.
 bool isFailure(const EntryState *state)
 {
-    return !state || state->error != ReadError::None;
+    return !state || !state->isCurrent();
 }
 
 } // namespace
@@ -241,7 +242,8 @@ void LineCommands::printValues(const Target &target, const QStringList &ids)
             m_failed = true;
             shown = s && s->error == ReadError::Exception
                     ? tr("exception %1: %2").arg(s->exceptionCode).arg(target.map->exceptionMeaning(s->exceptionCode))
-                    : tr("no answer");
+                    : s && s->error == ReadError::NotAvailable ? tr("not available on this device (exception 2)")
+                                                                 : tr("no answer");
         } else {
             shown = s->value.display;
             if (s->value.isOk() && !e->unit.isEmpty())
@@ -509,7 +511,7 @@ std::optional<int> LineCommands::monitor(const QStringList &arguments)
             for (const QString &e : std::as_const(entryIds)) {
                 const EntryState *s = m_bus.entryState(id, e);
                 const RegisterEntry *entry = target->map->entry(e);
-                const QString value = csvField(s && s->error == ReadError::None && s->value.isOk() ? s->value.display : QString());
+                const QString value = csvField(s && s->isCurrent() && s->value.isOk() ? s->value.display : QString());
                 m_out << time << ',' << device << ',' << e << ',' << value << ',' << entry->unit << ','
                       << (s ? s->statusName() : QStringLiteral("timeout")) << '\n';
                 m_failed |= isFailure(s);

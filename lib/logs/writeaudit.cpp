@@ -16,24 +16,10 @@ WriteAudit::WriteAudit(Bus *bus, EventLog *log, QObject *parent) : QObject(paren
                                   {"entry", it->entry},
                                   {"old", it->previous},
                                   {"new", it->value},
-                                  {"result", resultName(outcome.result)},
+                                  {"result", outcome.resultName()},
                                   {"message", outcome.message}});
         m_pending.erase(it);
     });
-}
-
-QString WriteAudit::resultName(WriteOutcome::Result result)
-{
-    switch (result) {
-    case WriteOutcome::Result::Confirmed: return QStringLiteral("confirmed");
-    case WriteOutcome::Result::Accepted: return QStringLiteral("accepted");
-    case WriteOutcome::Result::Mismatch: return QStringLiteral("mismatch");
-    case WriteOutcome::Result::Refused: return QStringLiteral("refused");
-    case WriteOutcome::Result::Failed: return QStringLiteral("failed");
-    case WriteOutcome::Result::ReadOnlyMode: return QStringLiteral("read_only");
-    case WriteOutcome::Result::Invalid: return QStringLiteral("invalid");
-    }
-    return {};
 }
 
 QStringList WriteAudit::columns()

@@ -16,8 +16,6 @@ class WriteAudit : public QObject
 public:
     WriteAudit(Bus *bus, EventLog *log, QObject *parent = nullptr);
 
-    // "confirmed", "accepted", "mismatch", "refused", "failed", "read_only", "invalid".
-    static QString resultName(WriteOutcome::Result result);
     static QStringList columns();
 
 private:

@@ -1,5 +1,7 @@
 #include "models/alarmbitsmodel.h"
 
+#include "models/valuetext.h"
+
 #include <QCoreApplication>
 
 #include <algorithm>
@@ -21,6 +23,7 @@ AlarmBitsModel::AlarmBitsModel(Bus *bus, DeviceId device, QObject *parent)
         }
     }
     connect(m_bus, &Bus::entriesUpdated, this, &AlarmBitsModel::onEntriesUpdated);
+    recount();
 }
 
 int AlarmBitsModel::rowCount(const QModelIndex &parent) const
@@ -37,10 +40,12 @@ int AlarmBitsModel::rowOf(const QString &reference) const
     return -1;
 }
 
-bool AlarmBitsModel::isActive(const Row &row) const
+AlarmBitsModel::BitState AlarmBitsModel::bitState(const Row &row) const
 {
     const EntryState *s = m_bus->entryState(m_device, row.entry->id);
-    return s && s->hasValue() && (s->value.raw & row.bit->mask());
+    if (!s || s->validity == Validity::Unknown || !s->hasValue())
+        return BitState::Unknown;
+    return (s->value.raw & row.bit->mask()) ? BitState::On : BitState::Off;
 }
 
 void AlarmBitsModel::onEntriesUpdated(DeviceId device, const QStringList &ids)
@@ -63,12 +68,22 @@ void AlarmBitsModel::onEntriesUpdated(DeviceId device, const QStringList &ids)
 
 void AlarmBitsModel::recount()
 {
-    const int count = int(std::count_if(m_rows.cbegin(), m_rows.cend(), [this](const Row &r) {
-        return r.bit->kind == BitKind::Alarm && isActive(r);
-    }));
+    int count = 0;
+    bool known = true;
+    for (const Row &r : std::as_const(m_rows)) {
+        if (r.bit->kind != BitKind::Alarm)
+            continue;
+        const BitState state = bitState(r);
+        count += state == BitState::On;
+        known = known && state != BitState::Unknown;
+    }
     if (count != m_activeAlarms) {
         m_activeAlarms = count;
         emit activeAlarmsChanged(count);
+    }
+    if (known != m_alarmsKnown) {
+        m_alarmsKnown = known;
+        emit alarmsKnownChanged(known);
     }
 }
 
@@ -83,10 +98,10 @@ QVariant AlarmBitsModel::data(const QModelIndex &index, int role) const
         return QCoreApplication::translate("jumo::maps", row.bit->label.toUtf8().constData());
     case KindRole:
         return int(row.bit->kind);
-    case ActiveRole:
-        return isActive(row);
-    case CurrentRole:
-        return state && state->isCurrent();
+    case BitStateRole:
+        return int(bitState(row));
+    case ValidityRole:
+        return int(state ? state->validity : Validity::Unknown);
     case ReferenceRole:
         return row.entry->id + QLatin1Char('.') + row.bit->id;
     case GroupTitleRole:
@@ -103,8 +118,12 @@ QVariant AlarmBitsModel::data(const QModelIndex &index, int role) const
                                    QCoreApplication::translate("jumo::maps", row.entry->label.toUtf8().constData()))
                               .arg(row.bit->bit)
                               .arg(kind, row.entry->group, row.bit->label);
-        if (!state || !state->isCurrent())
-            tip += QLatin1Char('\n') + tr("Not current: the last read failed or none was made yet.");
+        if (!state || state->validity == Validity::Unknown)
+            tip += QLatin1Char('\n') + tr("Unknown: the register could not be read (%1).")
+                                              .arg(ValueText::reason(state ? state->error : ReadError::NotRead,
+                                                                     state ? state->exceptionCode : 0, *m_map));
+        else if (state->validity == Validity::Stale)
+            tip += QLatin1Char('\n') + tr("Stale: not read within the device's cycle.");
         return tip;
     }
     default:

@@ -13,18 +13,27 @@ class AlarmBitsModel : public QAbstractListModel
     Q_OBJECT
 
 public:
-    enum Role { KindRole = Qt::UserRole + 1, ActiveRole, CurrentRole, ReferenceRole, GroupTitleRole };
+    // A bit is on, off, or unknown (its word could not be read: neither on nor off).
+    enum class BitState { Off, On, Unknown };
+    enum Role { KindRole = Qt::UserRole + 1,
+                BitStateRole,     // int(BitState)
+                ValidityRole,     // int(Validity) of the word the bit is in
+                ReferenceRole, GroupTitleRole };
 
     AlarmBitsModel(Bus *bus, DeviceId device, QObject *parent = nullptr);
 
     int rowCount(const QModelIndex &parent = {}) const override;
     QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
 
+    // Alarm bits on, among the words that are known (current or stale).
     int activeAlarms() const { return m_activeAlarms; }
+    // False while any word with alarm bits is unknown: then nobody can say "no alarm".
+    bool alarmsKnown() const { return m_alarmsKnown; }
     int rowOf(const QString &reference) const;   // "entry.bit"
 
 signals:
     void activeAlarmsChanged(int count);
+    void alarmsKnownChanged(bool known);
 
 private:
     struct Row
@@ -34,7 +43,7 @@ private:
     };
 
     void onEntriesUpdated(DeviceId device, const QStringList &ids);
-    bool isActive(const Row &row) const;
+    BitState bitState(const Row &row) const;
     void recount();
 
     Bus *m_bus;
@@ -42,6 +51,7 @@ private:
     std::shared_ptr<const RegisterMap> m_map;
     QList<Row> m_rows;
     int m_activeAlarms = 0;
+    bool m_alarmsKnown = false;
 };
 
 } // namespace jumo

@@ -1,5 +1,7 @@
 #include "models/livevaluesmodel.h"
 
+#include "models/valuetext.h"
+
 #include <QCoreApplication>
 
 #include <algorithm>
@@ -18,12 +20,13 @@ LiveValuesModel::LiveValuesModel(Bus *bus, DeviceId device, QObject *parent)
         }
     }
     connect(m_bus, &Bus::entriesUpdated, this, &LiveValuesModel::onEntriesUpdated);
-    // Ages move on by themselves, and old values turn stale: one refresh a second.
+    // Ages move on by themselves: one refresh a second. Validity changes come from the
+    // bus, which turns values stale or unknown.
     m_ageTimer.setInterval(1000);
     connect(&m_ageTimer, &QTimer::timeout, this, [this] {
         if (!m_rows.isEmpty())
-            emit dataChanged(index(0, 0), index(int(m_rows.size()) - 1, ColumnCount - 1),
-                             {Qt::DisplayRole, StaleRole, AgeMsRole});
+            emit dataChanged(index(0, StatusColumn), index(int(m_rows.size()) - 1, AgeColumn),
+                             {Qt::DisplayRole, AgeMsRole});
     });
     m_ageTimer.start();
 }
@@ -60,23 +63,6 @@ QString LiveValuesModel::entryId(int row) const
     return row >= 0 && row < m_rows.size() ? m_rows.at(row)->id : QString();
 }
 
-QString LiveValuesModel::statusText(const EntryState &state) const
-{
-    switch (state.error) {
-    case ReadError::None:
-        return state.value.isOk() ? tr("OK") : ValueCodec::statusDescription(state.value.status, *m_map);
-    case ReadError::Exception:
-        return tr("Exception %1: %2").arg(state.exceptionCode).arg(m_map->exceptionMeaning(state.exceptionCode));
-    case ReadError::Mismatch:
-        return tr("Reply did not fit the request");
-    case ReadError::Disconnected:
-        return tr("Line disconnected");
-    case ReadError::Timeout:
-        return tr("No answer");
-    }
-    return {};
-}
-
 QVariant LiveValuesModel::data(const QModelIndex &index, int role) const
 {
     if (!index.isValid() || index.row() >= m_rows.size())
@@ -84,15 +70,15 @@ QVariant LiveValuesModel::data(const QModelIndex &index, int role) const
     const RegisterEntry &e = *m_rows.at(index.row());
     const EntryState *state = m_bus->entryState(m_device, e.id);
     const qint64 age = state && state->hasValue() ? m_bus->clockMs() - state->goodMs : -1;
-    const bool stale = !state || !state->isCurrent() || age > m_staleAfterMs;
+    const Validity validity = ValueText::validity(state);
 
     switch (role) {
     case EntryIdRole:
         return e.id;
     case StatusNameRole:
         return state ? state->statusName() : QString();
-    case StaleRole:
-        return stale;
+    case ValidityRole:
+        return int(validity);
     case AgeMsRole:
         return age;
     case NumericRole: {
@@ -110,6 +96,9 @@ QVariant LiveValuesModel::data(const QModelIndex &index, int role) const
                 : QVariant();
     case Qt::ToolTipRole: {
         QString tip = tr("%1, register %2, %3").arg(e.id, formatAddress(e.address), valueTypeName(e.type));
+        if (validity == Validity::Unknown && state && state->hasValue())
+            tip += QLatin1Char('\n')
+                    + tr("Last known value: %1, %2 s ago").arg(state->value.display).arg((m_bus->clockMs() - state->goodMs) / 1000);
         if (!e.notes.isEmpty())
             tip += QLatin1Char('\n') + e.notes;
         return tip;
@@ -126,12 +115,13 @@ QVariant LiveValuesModel::data(const QModelIndex &index, int role) const
     case LabelColumn:
         return QCoreApplication::translate("jumo::maps", e.label.toUtf8().constData());
     case ValueColumn:
-        // Error values show as what they are, never as a number.
-        return state && state->hasValue() ? state->value.display : QString();
+        // Error values show as what they are, never as a number; an unknown value shows
+        // no number at all.
+        return validity == Validity::Unknown || !state || !state->hasValue() ? ValueText::noValue() : state->value.display;
     case UnitColumn:
         return e.unit;
     case StatusColumn:
-        return state ? statusText(*state) : tr("Not read yet");
+        return ValueText::status(state, *m_map, m_bus->clockMs());
     case AgeColumn:
         return age < 0 ? QString() : tr("%1 s").arg(QString::number(age / 1000.0, 'f', 1));
     default:

@@ -15,14 +15,13 @@ class LiveValuesModel : public QAbstractTableModel
 
 public:
     enum Column { SectionColumn, LabelColumn, ValueColumn, UnitColumn, StatusColumn, AgeColumn, ColumnCount };
-    // Colours are the view's business: it reads StaleRole and ErrorValueRole.
-    enum Role { EntryIdRole = Qt::UserRole + 1, StatusNameRole, StaleRole, AgeMsRole, ErrorValueRole,
+    // Colours are the view's business: it reads ValidityRole and ErrorValueRole.
+    enum Role { EntryIdRole = Qt::UserRole + 1, StatusNameRole,
+                ValidityRole,    // int(Validity): current, stale or unknown
+                AgeMsRole, ErrorValueRole,
                 NumericRole };   // double, only for a current good number
 
     LiveValuesModel(Bus *bus, DeviceId device, QObject *parent = nullptr);
-
-    // A value older than this, or whose last read failed, is shown as stale.
-    void setStaleAfterMs(int ms) { m_staleAfterMs = ms; }
 
     int rowCount(const QModelIndex &parent = {}) const override;
     int columnCount(const QModelIndex &parent = {}) const override;
@@ -34,7 +33,6 @@ public:
 
 private:
     void onEntriesUpdated(DeviceId device, const QStringList &ids);
-    QString statusText(const EntryState &state) const;
 
     Bus *m_bus;
     DeviceId m_device;
@@ -42,7 +40,6 @@ private:
     QList<const RegisterEntry *> m_rows;
     QHash<QString, int> m_rowOf;
     QTimer m_ageTimer;
-    int m_staleAfterMs = 10000;
 };
 
 } // namespace jumo

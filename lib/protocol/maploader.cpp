@@ -192,6 +192,7 @@ private:
         }
         checkEntries(parsed);
         map.setEntries(std::move(parsed));
+        checkStateSources(map);
         if (root.contains("simulation"))
             parseSimulation(root.value("simulation"), map);
         for (const char *key : {"overview", "identity"}) {
@@ -351,7 +352,7 @@ private:
         const int errorsBefore = m_errors.size();
 
         checkKeys(o, {"address", "id", "label", "type", "bytes", "words", "access", "storage", "unit", "group",
-                      "min", "max", "values", "bits", "activation", "control", "restoreValue", "precondition",
+                      "min", "max", "values", "bits", "activation", "action", "control", "restoreValue", "precondition",
                       "reserved", "alias", "notes", "erratum"},
                   where);
         e.address = parseHex16(o.value("address"), "address", where).value_or(0);
@@ -405,7 +406,7 @@ private:
             fail(where, tr("'min' is greater than 'max'"));
         e.control = o.value("control").toString();
         static const QStringList controls{"setpoint", "analog_output", "digital_output", "external_input", "alpha",
-                                          "setpoint_select", "parameter_set_select", "binary_outputs", "command",
+                                          "setpoint_select", "parameter_set_select", "binary_outputs", "switches", "command",
                                           "override", "program", "parameter"};
         if (!e.control.isEmpty() && !controls.contains(e.control))
             fail(where, tr("unknown control '%1'").arg(e.control));
@@ -418,6 +419,13 @@ private:
         e.erratum = o.value("erratum").toString();
         if (o.contains("activation"))
             e.activationMask = parseHex16(o.value("activation"), "activation", where);
+        if (o.contains("action")) {
+            if (!o.value("action").isBool())
+                fail(where, tr("'action' must be true or false"));
+            e.action = o.value("action").toBool();
+            if (e.action && !e.isWritable())
+                fail(where, tr("an action needs a writable entry"));
+        }
 
         parseEnumValues(o, e, where);
         parseBits(o, e, where);
@@ -474,8 +482,9 @@ private:
             def.reserved = b.value("reserved").toBool(false);
             def.notes = b.value("notes").toString();
             def.erratum = b.value("erratum").toString();
+            def.stateFrom = b.value("stateFrom").toString();
             const QString bitWhere = tr("%1, bit %2").arg(where).arg(b.value("bit").toVariant().toString());
-            checkKeys(b, {"bit", "width", "id", "label", "kind", "reserved", "notes", "erratum"}, bitWhere);
+            checkKeys(b, {"bit", "width", "id", "label", "kind", "reserved", "stateFrom", "notes", "erratum"}, bitWhere);
             if (!b.value("bit").isDouble() || def.bit < 0 || def.bit > 15) {
                 fail(bitWhere, tr("bit number must be 0..15"));
                 continue;
@@ -520,11 +529,33 @@ private:
         return true;
     }
 
+    // A bit's state source must be a readable single bit of another entry.
+    void checkStateSources(const RegisterMap &map)
+    {
+        for (const RegisterEntry &e : map.entries()) {
+            for (const BitDefinition &b : e.bits) {
+                if (b.stateFrom.isEmpty())
+                    continue;
+                const QString where = tr("entry '%1', bit %2").arg(e.id).arg(b.bit);
+                if (e.isReadable()) {
+                    fail(where, tr("'stateFrom' is only for write-only words (a readable word reports its own bits)"));
+                    continue;
+                }
+                if (b.width != 1 || !b.stateFrom.contains(QLatin1Char('.')) || !checkReference(map, b.stateFrom, where))
+                    continue;
+                const RegisterEntry *source = map.entry(b.stateFrom.section(QLatin1Char('.'), 0, 0));
+                const BitDefinition *sourceBit = source->bitById(b.stateFrom.section(QLatin1Char('.'), 1));
+                if (!source->isReadable() || sourceBit->width != 1)
+                    fail(where, tr("'stateFrom' must name a single bit of a readable bit field"));
+            }
+        }
+    }
+
     void parseSimulation(const QJsonValue &value, RegisterMap &map)
     {
         const QString where = QStringLiteral("simulation");
         const QJsonObject o = value.toObject();
-        checkKeys(o, {"model", "bindings", "initial", "limits", "commands", "status"}, where);
+        checkKeys(o, {"model", "bindings", "initial", "limits", "commands", "status", "links"}, where);
         SimulationSpec spec;
         spec.model = o.value("model").toString();
         if (spec.model != QLatin1String("power_controller") && spec.model != QLatin1String("process_controller"))
@@ -578,6 +609,17 @@ private:
             if (!actions.contains(it.value().toString()))
                 fail(where + QStringLiteral(".commands"), tr("unknown action '%1'").arg(it.value().toString()));
             spec.commands.insert(it.key(), it.value().toString());
+        }
+        int linkIndex = 0;
+        for (const QJsonValue &v : o.value("links").toArray()) {
+            const QString linkWhere = QStringLiteral("%1.links[%2]").arg(where).arg(linkIndex++);
+            const QJsonArray pair = v.toArray();
+            if (pair.size() != 2 || !pair[0].isString() || !pair[1].isString()) {
+                fail(linkWhere, tr("a link is a pair of references"));
+                continue;
+            }
+            if (checkReference(map, pair[0].toString(), linkWhere) && checkReference(map, pair[1].toString(), linkWhere))
+                spec.links << qMakePair(pair[0].toString(), pair[1].toString());
         }
         const QJsonObject status = o.value("status").toObject();
         for (auto it = status.begin(); it != status.end(); ++it) {

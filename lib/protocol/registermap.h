@@ -43,6 +43,9 @@ struct BitDefinition
     QString label;
     BitKind kind = BitKind::Status;
     bool reserved = false;
+    // Write-only words: where the device reports this bit's state ("entry.bit"), so a
+    // write can keep it while other bits change.
+    QString stateFrom;
     QString notes;
     QString erratum;
 
@@ -66,6 +69,9 @@ struct RegisterEntry
     QMap<int, QString> enumValues;
     QList<BitDefinition> bits;
     std::optional<quint16> activationMask;
+    // A write makes the device do something (start, cancel, change a segment): it is
+    // sent once, never repeated, and cannot be verified by reading back.
+    bool action = false;
     QString control;
     std::optional<double> restoreValue;
     QString precondition;
@@ -79,6 +85,7 @@ struct RegisterEntry
     bool isReadable() const { return access != Access::Write; }
     bool isWritable() const { return access != Access::Read; }
     bool isCommand() const;
+    bool isAction() const { return action; }
     const BitDefinition *bitById(const QString &bitId) const;
 };
 
@@ -147,6 +154,9 @@ struct SimulationSpec
     QList<SimulationLimit> limits;
     QHash<QString, QString> commands;       // "entry.bit" -> action
     QHash<QString, QString> status;         // "manual"/"tuning" -> "entry.bit"
+    // Pairs of references that are one signal on the device (a bool register and the bit
+    // that reports it): the simulator keeps them equal whichever is written.
+    QList<QPair<QString, QString>> links;
 
     QString binding(const QString &role) const { return bindings.value(role).value(0); }
 };

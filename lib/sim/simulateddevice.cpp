@@ -1,6 +1,7 @@
 #include "sim/simulateddevice.h"
 
 #include <QLoggingCategory>
+#include <QSet>
 #include <QtEndian>
 
 #include <algorithm>
@@ -160,11 +161,22 @@ QByteArray SimulatedDevice::writeRegisters(quint8 function, quint16 start, const
 void SimulatedDevice::afterWrite(quint16 start, quint16 count)
 {
     const SimulationSpec *sim = m_map->simulation ? &*m_map->simulation : nullptr;
+    QSet<QString> touched;
     for (int a = start; a < start + count;) {
         const RegisterEntry *e = m_map->entryAt(quint16(a));
         a = e->lastAddress() + 1;
-        if (e->type == ValueType::Bitfield)
+        touched.insert(e->id);
+        if (e->type == ValueType::Bitfield) {
             applyCommands(*e, m_words.value(e->address));
+            // A write-only word sets the signals its bits stand for; the device reports
+            // them where the map says.
+            for (const BitDefinition &b : e->bits) {
+                if (!b.stateFrom.isEmpty() && (!e->activationMask || (m_words.value(e->address) & *e->activationMask))) {
+                    setFlag(b.stateFrom, m_words.value(e->address) & b.mask());
+                    touched.insert(b.stateFrom.section(QLatin1Char('.'), 0, 0));
+                }
+            }
+        }
         if (!sim)
             continue;
         if (e->id == sim->binding("setpointOverride") || e->id == sim->binding("processValueOverride")) {
@@ -174,6 +186,14 @@ void SimulatedDevice::afterWrite(quint16 start, quint16 count)
             else
                 m_overrides.insert(e->id, v);
         }
+    }
+    if (!sim)
+        return;
+    for (const auto &[first, second] : sim->links) {
+        if (touched.contains(first.section(QLatin1Char('.'), 0, 0)))
+            setFlag(second, flag(first));
+        else if (touched.contains(second.section(QLatin1Char('.'), 0, 0)))
+            setFlag(first, flag(second));
     }
 }
 

@@ -117,7 +117,7 @@ void tst_Hmi::alarmLedTurnsOn()
     QCOMPARE(led->objectName(), QString("led_malfunction_signal_1.fuse_failure"));
     QVERIFY(led->toolTip().contains("0x00ED"));
     QVERIFY(led->toolTip().contains("bit 7"));
-    QTRY_VERIFY_WITH_TIMEOUT(led->isCurrent(), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(led->state() != LedIndicator::State::Unknown && !led->isStale(), 20000);
     QVERIFY(!led->isOn());
     m_sim.line().device(1)->setFlag("malfunction_signal_1.fuse_failure", true);
     QTRY_VERIFY_WITH_TIMEOUT(led->isOn(), 20000);

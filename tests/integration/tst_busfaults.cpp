@@ -124,9 +124,12 @@ void tst_BusFaults::faultsNeverDeliverWrongValues_data()
         QTest::addRow("%s: CRC error", peer) << peer << "badcrc" << 0 << "" << "1:timeout";
         QTest::addRow("%s: dropped reply", peer) << peer << "drop" << 0 << "" << "1:timeout";
         QTest::addRow("%s: exception 6 busy is retried", peer) << peer << "exception" << 6 << "" << "1:exception:6";
-        for (int code : {1, 2, 3, 4, 8})
+        for (int code : {1, 3, 4, 8})
             QTest::addRow("%s: exception %d", peer, code) << peer << "exception" << code
                                                           << QStringLiteral("1:exception:%1").arg(code) << "";
+        // Exception 02 means "no such address": the block is split and the entry asked
+        // again before it is called unavailable, so a single one hides nothing.
+        QTest::addRow("%s: exception 2 once", peer) << peer << "exception" << 2 << "" << "1:unavailable";
     }
 }
 

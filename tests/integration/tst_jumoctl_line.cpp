@@ -188,11 +188,16 @@ void tst_JumoctlLine::absentDeviceIsATimeout()
     QVERIFY(r.err.contains("could not be read"));
 
     // A device that answers with an exception: the status says which.
-    m_sim.setFault(3, "exception", 1, 2);
+    m_sim.setFault(3, "exception", 1, 1);
     r = run(QStringList{"read"} + port() + QStringList{"quantrol@3", "controller_status", "--retries", "0"});
     QCOMPARE(r.code, 1);
-    QVERIFY2(r.out.contains("exception 2: Invalid parameter address") && r.out.contains("[exception:2]"),
-             qPrintable(r.out));
+    QVERIFY2(r.out.contains("exception 1: Invalid function") && r.out.contains("[exception:1]"), qPrintable(r.out));
+
+    // Exception 02 twice for the one entry: the device does not have it.
+    m_sim.setFault(3, "exception", 2, 2);
+    r = run(QStringList{"read"} + port() + QStringList{"quantrol@3", "controller_status", "--retries", "0"});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.out.contains("not available on this device") && r.out.contains("[unavailable]"), qPrintable(r.out));
 }
 
 void tst_JumoctlLine::badPortIsAClearError()

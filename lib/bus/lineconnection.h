@@ -1,0 +1,60 @@
+// The connection of a line: opens its transport, notices when the port goes away (an
+// unplugged adapter, a closed pty), and opens it again by itself while the user wants
+// the line, until it is closed.
+#pragma once
+
+#include "bus/bussettings.h"
+#include "bus/clock.h"
+#include "bus/transport.h"
+
+#include <QObject>
+
+#include <functional>
+#include <memory>
+
+namespace jumo {
+
+enum class LineState { Disconnected, Connected, Lost };
+
+class LineConnection : public QObject
+{
+    Q_OBJECT
+
+public:
+    using TransportFactory = std::function<std::unique_ptr<Transport>(const BusSettings &)>;
+
+    LineConnection(Clock *clock, TransportFactory factory, QObject *parent = nullptr);
+    ~LineConnection() override;
+
+    void setSettings(const BusSettings &settings) { m_settings = settings; }
+    // Opens the port; false with the reason in lastError() when it cannot.
+    bool open();
+    void close();
+    LineState state() const { return m_state; }
+    QString lastError() const { return m_lastError; }
+    Transport *transport() const { return m_transport.get(); }
+
+    // The serial transport for the settings' port and format.
+    static std::unique_ptr<Transport> serialTransport(const BusSettings &settings);
+
+signals:
+    void stateChanged(jumo::LineState state);
+    // The port went away; the line keeps trying to come back.
+    void lost(const QString &reason);
+    void resultReady(const jumo::ModbusResult &result);
+
+private:
+    void setState(LineState state);
+    void onLost(const QString &reason);
+    void tryReconnect(quint64 generation);
+
+    Clock *m_clock;
+    TransportFactory m_factory;
+    BusSettings m_settings;
+    std::unique_ptr<Transport> m_transport;
+    LineState m_state = LineState::Disconnected;
+    QString m_lastError;
+    quint64 m_generation = 0;   // reconnect calls of an earlier loss are void
+};
+
+} // namespace jumo

@@ -1,0 +1,175 @@
+#include "bus/rtutransport.h"
+
+#include "protocol/rtuframe.h"
+
+#include <QLoggingCategory>
+#include <QModbusReply>
+#include <QModbusRtuSerialClient>
+#include <QVariant>
+
+Q_DECLARE_LOGGING_CATEGORY(lcBus)
+
+namespace jumo {
+
+RtuTransport::RtuTransport(const QString &portName, const LineFormat &format, QObject *parent)
+    : Transport(parent), m_portName(portName), m_format(format)
+{
+}
+
+RtuTransport::~RtuTransport()
+{
+    if (m_client) {
+        // Replies still queued finish as aborted while the client closes; nobody may
+        // hear of it any more.
+        m_client->disconnect(this);
+        if (m_pending)
+            m_pending->disconnect(this);
+        m_client->disconnectDevice();
+    }
+}
+
+bool RtuTransport::open(QString *error)
+{
+    if (!m_client) {
+        m_client = new QModbusRtuSerialClient(this);
+        connect(m_client, &QModbusDevice::errorOccurred, this, &RtuTransport::onErrorOccurred);
+    }
+    if (m_client->state() != QModbusDevice::UnconnectedState)
+        m_client->disconnectDevice();
+    m_client->setConnectionParameter(QModbusDevice::SerialPortNameParameter, m_portName);
+    m_client->setConnectionParameter(QModbusDevice::SerialBaudRateParameter, m_format.baudRate);
+    m_client->setConnectionParameter(QModbusDevice::SerialDataBitsParameter, QSerialPort::Data8);
+    // Qt's default parity is Even: always set it.
+    m_client->setConnectionParameter(QModbusDevice::SerialParityParameter, m_format.parity);
+    m_client->setConnectionParameter(QModbusDevice::SerialStopBitsParameter, m_format.stopBits);
+    m_client->setNumberOfRetries(0);   // retries are the scheduler's, after a quiet gap
+    m_client->setInterFrameDelay(0);   // the minimum: 3.5 characters, at least 2 ms
+    if (!m_client->connectDevice() || m_client->state() != QModbusDevice::ConnectedState) {
+        if (error)
+            *error = m_client->errorString();
+        m_client->disconnectDevice();
+        m_open = false;
+        return false;
+    }
+    m_open = true;
+    return true;
+}
+
+void RtuTransport::close()
+{
+    m_open = false;
+    if (m_client)
+        m_client->disconnectDevice();   // a pending reply finishes as aborted: LineDown
+}
+
+bool RtuTransport::isOpen() const
+{
+    return m_open;
+}
+
+double RtuTransport::interFrameDelayMs() const
+{
+    // QModbusRtuSerialClient waits 3.5 characters before each request, at least 2 ms.
+    return std::max(2.0, m_format.frameGapMs());
+}
+
+void RtuTransport::send(const ModbusRequest &request)
+{
+    m_client->setTimeout(request.timeoutMs);
+    QModbusReply *reply = nullptr;
+    if (request.isWrite())
+        reply = m_client->sendWriteRequest(
+                QModbusDataUnit(QModbusDataUnit::HoldingRegisters, request.start, request.words), request.slave);
+    else
+        reply = m_client->sendReadRequest(
+                QModbusDataUnit(QModbusDataUnit::HoldingRegisters, request.start, request.count), request.slave);
+    if (!reply) {
+        ModbusResult result;
+        result.status = ModbusResult::Status::LineDown;
+        result.errorText = m_client->errorString();
+        QMetaObject::invokeMethod(this, [this, result] { deliver(result); }, Qt::QueuedConnection);
+        return;
+    }
+    m_pending = reply;
+    m_pendingRequest = request;
+    if (reply->isFinished()) {
+        // A broadcast is finished once its bytes are handed to the driver.
+        QMetaObject::invokeMethod(this, [this, reply, request] { onReplyFinished(reply, request); },
+                                  Qt::QueuedConnection);
+        return;
+    }
+    connect(reply, &QModbusReply::finished, this, [this, reply, request] { onReplyFinished(reply, request); });
+}
+
+void RtuTransport::onReplyFinished(QModbusReply *reply, const ModbusRequest &request)
+{
+    reply->deleteLater();
+    if (m_pending == reply)
+        m_pending.clear();
+    ModbusResult result;
+    const QList<QModbusDevice::IntermediateError> intermediate = reply->intermediateErrors();
+    result.crcErrors = int(intermediate.count(QModbusDevice::ResponseCrcError));
+    result.mismatches = int(intermediate.count(QModbusDevice::ResponseRequestMismatch));
+    const QModbusDevice::Error error = reply->error();
+    switch (error) {
+    case QModbusDevice::NoError:
+        result.status = ModbusResult::Status::Ok;
+        if (!request.isWrite() && !request.isBroadcast()) {
+            const QModbusDataUnit unit = reply->result();
+            // A reply of the wrong size is someone else's answer: never decode it.
+            if (unit.valueCount() != request.count || unit.startAddress() != request.start) {
+                result.status = ModbusResult::Status::BadReply;
+                result.errorText = tr("reply of %1 words where %2 were asked for").arg(unit.valueCount()).arg(request.count);
+            } else {
+                result.words = unit.values();
+            }
+        }
+        break;
+    case QModbusDevice::ProtocolError:
+        result.status = ModbusResult::Status::Exception;
+        result.exceptionCode = int(reply->rawResult().exceptionCode());
+        break;
+    case QModbusDevice::TimeoutError:
+        result.status = ModbusResult::Status::Timeout;
+        break;
+    case QModbusDevice::ReplyAbortedError:
+    case QModbusDevice::ConnectionError:
+        result.status = ModbusResult::Status::LineDown;
+        break;
+    default:
+        result.status = ModbusResult::Status::BadReply;
+        break;
+    }
+    if (result.status != ModbusResult::Status::Ok && result.errorText.isEmpty())
+        result.errorText = reply->errorString();
+    const QModbusResponse raw = reply->rawResult();
+    if (raw.isValid() || raw.isException()) {
+        QByteArray pdu(1, char(raw.functionCode() | (raw.isException() ? 0x80 : 0)));
+        pdu += raw.data();
+        result.replyFrame = RtuFrame::build(request.slave, pdu);
+    }
+    deliver(result);
+}
+
+void RtuTransport::deliver(const ModbusResult &result)
+{
+    emit finished(result);
+}
+
+void RtuTransport::onErrorOccurred(QModbusDevice::Error error)
+{
+    if (!m_open)
+        return;
+    if (error != QModbusDevice::ConnectionError && error != QModbusDevice::ReadError
+        && error != QModbusDevice::WriteError)
+        return;
+    // An unplugged adapter keeps the client "connected" and can flood errors: close on
+    // the first one and let the line come back when the port does.
+    const QString reason = m_client->errorString();
+    qCWarning(lcBus).noquote() << "port" << m_portName << "lost:" << reason;
+    m_open = false;
+    m_client->disconnectDevice();
+    emit lost(reason);
+}
+
+} // namespace jumo

@@ -1,0 +1,169 @@
+// Decides what goes on the line next, and when. The rules, in order:
+//  1. a transaction that holds the line (the write after its read-modify-write read)
+//     goes at once;
+//  2. a device with a bus-error timeout (IPC 300, TYA 200) that has not been addressed for
+//     half its keepalive interval gets a request before anything else, so it never falls
+//     silent for longer than the keepalive interval whatever else runs;
+//  3. operator work goes next;
+//  4. RAM setpoint holds, when due;
+//  5. job work (scan, backup, restore, report) and polls alternate while both wait;
+//     either runs alone when the other has nothing to do;
+// and nothing goes before the quiet time the bus sets after a lost answer, a turnaround
+// or a broadcast. Polls run each device's read plan round-robin, one block per turn;
+// failed blocks are repeated by the device's next turn; a device that keeps failing goes
+// offline and is probed with back-off; a block answered with exception 02 is split until
+// the one address the device does not have is isolated, and that entry leaves the plan
+// for the session. Pure logic: no timers, no transport, the time is given.
+#pragma once
+
+#include "bus/entrystate.h"
+#include "bus/modbusrequest.h"
+#include "bus/transaction.h"
+#include "protocol/readplanner.h"
+
+#include <QHash>
+#include <QMap>
+#include <QSet>
+
+#include <deque>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace jumo {
+
+class Scheduler
+{
+public:
+    struct Turn
+    {
+        enum class Kind { Idle, Poll, Keepalive, Transaction, Hold };
+        Kind kind = Kind::Idle;
+        DeviceId device = -1;
+        int block = -1;                           // Poll: index into the device's plan
+        jumo::Transaction *transaction = nullptr;  // Transaction: owned by the scheduler
+        QString holdEntry;                        // Hold
+        ModbusRequest request;                    // the timeout is the bus's to set
+        ProtocolInfo timing;
+        qint64 wakeAtMs = -1;                     // Idle: when to ask again, -1 = when told
+    };
+
+    // What became of a poll turn, for the bus to carry out.
+    struct PollOutcome
+    {
+        QList<const RegisterEntry *> entries;     // the entries of the block
+        bool store = false;                       // the words are good: store the entries
+        bool retry = false;                       // the block is repeated; nothing to report yet
+        std::optional<ReadError> failure;         // the entries failed for this reason
+        int exceptionCode = 0;
+        QList<const RegisterEntry *> unavailable; // isolated by exception 02: not on this device
+        std::optional<bool> online;               // the device went on- or offline
+        std::optional<double> cycleMs;            // a cycle of the device finished
+    };
+
+    struct DeviceInfo
+    {
+        std::shared_ptr<const RegisterMap> map;
+        quint8 address = 0;
+        ReadPlan plan;
+        int intervalMs = 0;
+        bool online = true;
+        int backoffMs = 0;
+        double lastCycleMs = 0;
+        qint64 lastAddressedMs = -1;
+    };
+
+    static constexpr int failuresBeforeOffline = 2;   // blocks failed after all their retries
+    static constexpr int firstBackoffMs = 1000;
+    static constexpr int maximumBackoffMs = 30000;
+
+    void addDevice(DeviceId id, std::shared_ptr<const RegisterMap> map, quint8 address, qint64 now);
+    void removeDevice(DeviceId id);
+    bool contains(DeviceId id) const { return m_devices.contains(id); }
+    const DeviceInfo *device(DeviceId id) const;
+    QList<DeviceId> devices() const { return m_devices.keys(); }
+
+    // Which entries a poll cycle reads (empty: every readable entry).
+    void setPollEntries(DeviceId id, const QStringList &ids);
+    QStringList pollEntries(DeviceId id) const;
+    // How often a cycle starts (0: as fast as the line allows).
+    void setPollInterval(DeviceId id, int ms);
+    void setPolling(bool on) { m_polling = on; }
+    bool isPolling() const { return m_polling; }
+    // One cycle of the device soon, polling on or off; false when there is nothing to read.
+    bool requestCycle(DeviceId id, qint64 now);
+    // The entries of a block of the device's plan.
+    QList<const RegisterEntry *> blockEntries(DeviceId id, int block) const;
+
+    void setHold(DeviceId id, const QString &entryId, const QList<quint16> &words, int intervalMs);
+    void clearHold(DeviceId id, const QString &entryId);
+
+    void enqueue(std::unique_ptr<Transaction> transaction);
+    // Every transaction not under way, out of the queues (the line went down or closed).
+    std::vector<std::unique_ptr<Transaction>> takeQueued(const Transaction *inFlight);
+    // Transactions waiting, both lanes.
+    int queuedTransactions() const { return int(m_operator.size() + m_jobs.size()); }
+    void forgetDevice(DeviceId id, const Transaction *inFlight);
+
+    // The next turn at this time.
+    Turn next(qint64 now);
+    void setQuietUntil(qint64 ms) { m_quietUntilMs = std::max(m_quietUntilMs, ms); }
+    qint64 quietUntil() const { return m_quietUntilMs; }
+    // A request went out (every request to an address counts as its keepalive).
+    void sent(const ModbusRequest &request, qint64 now);
+    // Whatever a cycle was doing is void: the line was (re)opened.
+    void restart(qint64 now);
+
+    PollOutcome pollFinished(const Turn &turn, const ModbusResult &result, int maxRetries, qint64 now);
+    // A transaction's turn is over; finished ones leave the queues.
+    void transactionFinished(Transaction *transaction);
+
+    // The keepalive a device needs (0: none): half its bus-error timeout.
+    static int keepaliveMs(const RegisterMap &map);
+
+private:
+    struct Hold
+    {
+        QList<quint16> words;
+        int intervalMs = 2000;
+        qint64 lastSentMs = -1;
+    };
+
+    struct Device : DeviceInfo
+    {
+        QStringList pollIds;
+        QSet<QString> unavailable;   // entries this model does not have
+        int blockIndex = -1;         // -1: no cycle running
+        int blockAttempts = 0;
+        qint64 cycleStartMs = -1;
+        qint64 nextDueMs = 0;
+        bool cycleRequested = false;
+        int consecutiveFailures = 0;
+        QMap<QString, Hold> holds;
+    };
+
+    void replan(Device &device);
+    bool pollReady(const Device &device, qint64 now) const;
+    qint64 pollDueMs(const Device &device) const;
+    std::optional<Turn> pollTurn(qint64 now);
+    std::optional<Turn> keepaliveTurn(qint64 now);
+    std::optional<Turn> holdTurn(qint64 now);
+    std::optional<Turn> transactionTurn(std::deque<std::unique_ptr<Transaction>> &lane);
+    Turn devicePollTurn(DeviceId id, Device &device, qint64 now);
+    void finishCycle(Device &device, qint64 now, PollOutcome &outcome);
+    void markFailure(Device &device, PollOutcome &outcome);
+    void markSuccess(Device &device, PollOutcome &outcome);
+    void prune(std::deque<std::unique_ptr<Transaction>> &lane);
+
+    QMap<DeviceId, Device> m_devices;
+    std::deque<std::unique_ptr<Transaction>> m_operator;
+    std::deque<std::unique_ptr<Transaction>> m_jobs;
+    Transaction *m_holding = nullptr;          // must go next
+    bool m_polling = true;
+    bool m_lastWasJob = false;
+    DeviceId m_roundRobin = 0;                 // the device after which the next poll search starts
+    qint64 m_quietUntilMs = 0;
+    QHash<quint8, qint64> m_lastAddressedMs;   // slave -> last request
+};
+
+} // namespace jumo

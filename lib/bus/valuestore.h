@@ -1,0 +1,61 @@
+// The values of every device on a line with their validity, and the device's request
+// statistics. Values turn current when a block is read, stale when the device's cycle
+// allowance passes without a new reading, and unknown when the read, the device or the
+// line fails; the last value is kept as "last known", never shown as current.
+#pragma once
+
+#include "bus/devicestatistics.h"
+#include "bus/entrystate.h"
+#include "protocol/registermap.h"
+
+#include <QHash>
+#include <QStringList>
+
+#include <memory>
+
+namespace jumo {
+
+using DeviceId = int;
+
+class ValueStore
+{
+public:
+    void addDevice(DeviceId id, std::shared_ptr<const RegisterMap> map);
+    void removeDevice(DeviceId id);
+    bool contains(DeviceId id) const { return m_devices.contains(id); }
+
+    const EntryState *state(DeviceId id, const QString &entryId) const;
+    const DeviceStatistics *statistics(DeviceId id) const;
+    DeviceStatistics *statistics(DeviceId id);
+
+    // How long a value stays current after it was read (the device's cycle, generously).
+    void setAllowance(DeviceId id, qint64 ms);
+    qint64 allowance(DeviceId id) const;
+
+    // A block arrived: the entries inside it are decoded and current. Returns their ids.
+    QStringList store(DeviceId id, const QList<const RegisterEntry *> &entries, quint16 start,
+                      const QList<quint16> &words, qint64 now);
+    // The entries could not be read: unknown from now on, for this reason.
+    QStringList fail(DeviceId id, const QList<const RegisterEntry *> &entries, ReadError error, int exceptionCode,
+                     qint64 now);
+    // Every entry of the device that is not unknown already turns unknown (the device went
+    // offline, the line was lost or closed). Returns the ids that changed.
+    QStringList invalidate(DeviceId id, ReadError reason, qint64 now);
+    // Current values older than the allowance turn stale. Returns the ids that changed.
+    QStringList sweep(DeviceId id, qint64 now);
+    // The earliest time a current value of the device turns stale, or -1.
+    qint64 nextStaleMs(DeviceId id) const;
+
+private:
+    struct Device
+    {
+        std::shared_ptr<const RegisterMap> map;
+        QHash<QString, EntryState> values;
+        DeviceStatistics stats;
+        qint64 allowanceMs = 10000;
+    };
+
+    QHash<DeviceId, Device> m_devices;
+};
+
+} // namespace jumo
