@@ -167,7 +167,12 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>nur RAM-Werte können gehalten werden, &apos;%1&apos; gehört nicht dazu</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+87"/>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+31"/>
         <source>read-only mode</source>
         <translation>Nur-Lese-Modus</translation>
     </message>
@@ -2115,6 +2120,24 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
 </context>
 <context>
+    <name>jumo::ParameterReadJob</name>
+    <message>
+        <location filename="../lib/commissioning/parameterreadjob.cpp" line="+18"/>
+        <source>unknown device</source>
+        <translation>unbekanntes Gerät</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>the device was removed</source>
+        <translation>das Gerät wurde entfernt</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>could not be read: %1</source>
+        <translation>konnte nicht gelesen werden: %1</translation>
+    </message>
+</context>
+<context>
     <name>jumo::ParameterSet</name>
     <message>
         <location filename="../lib/commissioning/parameterset.cpp" line="+57"/>
@@ -2165,9 +2188,25 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ParameterTransfer</name>
     <message>
-        <location filename="../lib/commissioning/parametertransfer.cpp" line="+111"/>
+        <location filename="../lib/commissioning/parametertransfer.cpp" line="+14"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::ParameterWriteJob</name>
+    <message>
+        <location filename="../lib/commissioning/parameterwritejob.cpp" line="+34"/>
+        <source>cancelled after %1 of %2 writes</source>
+        <translation>abgebrochen nach %1 von %2 Schreibvorgängen</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n write(s) failed</source>
+        <translation>
+            <numerusform>%n Schreibvorgang fehlgeschlagen</numerusform>
+            <numerusform>%n Schreibvorgänge fehlgeschlagen</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2503,12 +2542,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Unbekanntes Gerät an Adresse %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
+    <message>
+        <location line="+3"/>
+        <source>stopped: %1</source>
+        <translation>angehalten: %1</translation>
+    </message>
     <message numerus="yes">
-        <location line="+0"/>
+        <location line="+3"/>
         <source>%n device(s) found</source>
         <translation>
             <numerusform>%n Gerät gefunden</numerusform>
@@ -2516,7 +2560,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>From address</source>
         <translation>Von Adresse</translation>
     </message>

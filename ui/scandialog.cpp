@@ -49,11 +49,21 @@ ScanDialog::ScanDialog(Bus *bus, const FamilyRegistry &registry, QWidget *parent
         auto *item = new QListWidgetItem(tr("Unknown device at address %1").arg(address), m_found);
         item->setFlags(Qt::ItemIsEnabled);
     });
-    connect(m_scanner, &DeviceScanner::finished, this, [this](bool cancelled) {
+    connect(m_scanner, &Job::finished, this, [this] {
         m_startButton->setEnabled(true);
         m_cancelButton->setEnabled(false);
         m_progress->setValue(m_progress->maximum());
-        m_progress->setFormat(cancelled ? tr("cancelled") : tr("%n device(s) found", nullptr, int(m_results.size())));
+        switch (m_scanner->result()) {
+        case Job::Result::Cancelled:
+            m_progress->setFormat(tr("cancelled"));
+            break;
+        case Job::Result::Failed:
+            m_progress->setFormat(tr("stopped: %1").arg(m_scanner->errorText()));
+            break;
+        default:
+            m_progress->setFormat(tr("%n device(s) found", nullptr, int(m_results.size())));
+            break;
+        }
     });
 
     auto *range = new QHBoxLayout;

@@ -204,7 +204,7 @@ std::optional<int> LineCommands::scan(const QStringList &arguments)
     connect(m_scanner.get(), &DeviceScanner::unknownDevice, this, [this](int address) {
         m_err << '\r' << tr("address %1 answers, but matches no known family").arg(address) << Qt::endl;
     });
-    connect(m_scanner.get(), &DeviceScanner::finished, this, [this](bool) {
+    connect(m_scanner.get(), &Job::finished, this, [this] {
         m_err << '\r' << tr("%n device(s) found", nullptr, int(m_targets.size())) << QString(20, QLatin1Char(' '))
               << Qt::endl;
         finish(m_targets.isEmpty() ? 1 : 0);

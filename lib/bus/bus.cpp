@@ -526,6 +526,14 @@ int Bus::readEntries(DeviceId id, const QStringList &entryIds)
     return ticket;
 }
 
+void Bus::cancel(int ticket)
+{
+    const Transaction *inFlight = m_inFlight ? m_inFlight->turn.transaction : nullptr;
+    const std::vector<std::unique_ptr<Transaction>> dropped = m_scheduler.takeTicket(ticket, inFlight);
+    for (const auto &t : dropped)
+        t->abort(tr("cancelled"));
+}
+
 void Bus::schedule(qint64 atMs)
 {
     if (state() != LineState::Connected)

@@ -121,6 +121,10 @@ public:
     // values go to the store as polls do; entriesRead follows with those that failed.
     int readEntries(DeviceId id, const QStringList &entryIds);
 
+    // Drops what of this ticket has not gone out yet (a job cancelled): its reads end as
+    // failed, its writes as not sent; the request under way finishes.
+    void cancel(int ticket);
+
     int requestTimeoutMs(const ProtocolInfo &protocol, int requestBytes, int replyBytes) const;
     double interFrameDelayMs() const;
     // The monotonic clock of EntryState times and TrafficRecord times.

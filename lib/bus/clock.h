@@ -48,6 +48,8 @@ public:
     void advanceTo(qint64 atMs);
     void advance(qint64 ms) { advanceTo(m_now + ms); }
     bool hasPending() const { return !m_calls.empty(); }
+    // The time of the earliest pending call, or -1.
+    qint64 nextCallMs() const { return m_calls.empty() ? -1 : m_calls.begin()->first; }
 
 private:
     struct Call

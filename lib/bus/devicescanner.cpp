@@ -21,7 +21,7 @@ QString normalised(QString text)
 } // namespace
 
 DeviceScanner::DeviceScanner(Bus &bus, QList<std::shared_ptr<const RegisterMap>> families, QObject *parent)
-    : QObject(parent), m_bus(bus), m_families(std::move(families))
+    : Job(parent), m_bus(bus), m_families(std::move(families))
 {
     std::stable_sort(m_families.begin(), m_families.end(),
                      [](const auto &a, const auto &b) { return a->scanPriority < b->scanPriority; });
@@ -39,20 +39,15 @@ void DeviceScanner::start(int firstAddress, int lastAddress)
     m_last = std::clamp(lastAddress, m_first, 255);
     m_address = m_first - 1;
     m_running = true;
-    m_cancelled = false;
+    begin();
     nextAddress();
-}
-
-void DeviceScanner::cancel()
-{
-    m_cancelled = true;
 }
 
 void DeviceScanner::nextAddress()
 {
-    if (m_cancelled || m_address >= m_last) {
+    if (isCancelled() || m_address >= m_last) {
         m_running = false;
-        emit finished(m_cancelled);
+        finish(isCancelled() ? Result::Cancelled : Result::Succeeded);
         return;
     }
     ++m_address;
@@ -87,7 +82,7 @@ bool DeviceScanner::passes(const IdentifyProbe &probe, const ProbeResult &result
 // that is not known yet, or decides the address.
 void DeviceScanner::evaluate()
 {
-    if (m_cancelled) {
+    if (isCancelled()) {
         nextAddress();
         return;
     }
@@ -104,7 +99,7 @@ void DeviceScanner::evaluate()
                 if (m_bus.state() != LineState::Connected) {
                     // The line is gone: this is no answer about the address.
                     m_running = false;
-                    emit finished(true);
+                    finish(Result::Failed, m_bus.lastError());
                     return;
                 }
                 // Nothing answers at this address, or it stopped answering part way.

@@ -3,10 +3,10 @@
 // request per distinct probe, and a silent address one timeout.
 #pragma once
 
+#include "bus/job.h"
 #include "protocol/registermap.h"
 
 #include <QHash>
-#include <QObject>
 
 #include <memory>
 
@@ -14,23 +14,23 @@ namespace jumo {
 
 class Bus;
 
-class DeviceScanner : public QObject
+class DeviceScanner : public Job
 {
     Q_OBJECT
 
 public:
     DeviceScanner(Bus &bus, QList<std::shared_ptr<const RegisterMap>> families, QObject *parent = nullptr);
 
+    // Probes the addresses in the job lane of the bus: devices being monitored keep their
+    // polls and keepalives meanwhile. Ends Succeeded, Cancelled, or Failed when the line
+    // went away.
     void start(int firstAddress, int lastAddress);
-    void cancel();
-    bool isRunning() const { return m_running; }
 
 signals:
     void progress(int address, int done, int total);
     void found(int address, std::shared_ptr<const jumo::RegisterMap> family);
     // An address answered but matched no family.
     void unknownDevice(int address);
-    void finished(bool cancelled);
 
 private:
     struct ProbeResult
@@ -55,7 +55,6 @@ private:
     int m_pendingTicket = -1;
     quint64 m_pendingKey = 0;
     bool m_running = false;
-    bool m_cancelled = false;
 };
 
 } // namespace jumo

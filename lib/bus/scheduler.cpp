@@ -132,6 +132,24 @@ std::vector<std::unique_ptr<Transaction>> Scheduler::takeQueued(const Transactio
     return out;
 }
 
+std::vector<std::unique_ptr<Transaction>> Scheduler::takeTicket(int ticket, const Transaction *inFlight)
+{
+    std::vector<std::unique_ptr<Transaction>> out;
+    for (auto *lane : {&m_operator, &m_jobs}) {
+        for (auto it = lane->begin(); it != lane->end();) {
+            if (it->get() == inFlight || (*it)->ticket() != ticket) {
+                ++it;
+                continue;
+            }
+            if (m_holding == it->get())
+                m_holding = nullptr;
+            out.push_back(std::move(*it));
+            it = lane->erase(it);
+        }
+    }
+    return out;
+}
+
 void Scheduler::forgetDevice(DeviceId id, const Transaction *inFlight)
 {
     for (auto *lane : {&m_operator, &m_jobs}) {
@@ -245,7 +263,8 @@ std::optional<Scheduler::Turn> Scheduler::pollTurn(qint64 now)
 
 std::optional<Scheduler::Turn> Scheduler::keepaliveTurn(qint64 now)
 {
-    // The device waiting longest goes first.
+    // A device becomes urgent a second before its keepalive interval is over: time for
+    // the request under way and a quiet gap. The one waiting longest goes first.
     DeviceId chosen = -1;
     qint64 oldest = 0;
     for (auto it = m_devices.begin(); it != m_devices.end(); ++it) {
@@ -253,7 +272,7 @@ std::optional<Scheduler::Turn> Scheduler::keepaliveTurn(qint64 now)
         if (keepalive <= 0 || !it->online)
             continue;
         const qint64 last = m_lastAddressedMs.value(it->address, -1);
-        if (last >= 0 && now - last < keepalive / 2)
+        if (last >= 0 && now - last < keepalive - keepaliveMarginMs)
             continue;
         if (chosen < 0 || last < oldest) {
             chosen = it.key();
@@ -263,9 +282,10 @@ std::optional<Scheduler::Turn> Scheduler::keepaliveTurn(qint64 now)
     if (chosen < 0)
         return std::nullopt;
     Device &d = m_devices[chosen];
-    if (!d.plan.blocks.isEmpty())
+    // Its next poll block when one is due: no extra request. Otherwise (a long poll
+    // interval, polling off) the smallest read of anything readable keeps it talking.
+    if (pollReady(d, now))
         return devicePollTurn(chosen, d, now);
-    // Nothing polled: the smallest read of anything readable keeps it talking.
     for (const RegisterEntry &e : d.map->entries()) {
         if (e.isReadable() && e.alias.isEmpty() && !d.unavailable.contains(e.id)) {
             Turn turn;
@@ -371,7 +391,7 @@ Scheduler::Turn Scheduler::next(qint64 now)
             consider(h.lastSentMs + h.intervalMs);
         const int keepalive = keepaliveMs(*d.map);
         if (keepalive > 0 && d.online)
-            consider(m_lastAddressedMs.value(d.address, now) + keepalive / 2);
+            consider(m_lastAddressedMs.value(d.address, now) + keepalive - keepaliveMarginMs);
     }
     idle.wakeAtMs = wake < 0 ? -1 : std::max(wake, now + 1);
     return idle;

@@ -2,8 +2,8 @@
 //  1. a transaction that holds the line (the write after its read-modify-write read)
 //     goes at once;
 //  2. a device with a bus-error timeout (IPC 300, TYA 200) that has not been addressed for
-//     half its keepalive interval gets a request before anything else, so it never falls
-//     silent for longer than the keepalive interval whatever else runs;
+//     almost its keepalive interval (half the bus-error timeout) gets a request before
+//     anything else, so it never falls silent for longer than that whatever else runs;
 //  3. operator work goes next;
 //  4. RAM setpoint holds, when due;
 //  5. job work (scan, backup, restore, report) and polls alternate while both wait;
@@ -76,6 +76,8 @@ public:
     static constexpr int failuresBeforeOffline = 2;   // blocks failed after all their retries
     static constexpr int firstBackoffMs = 1000;
     static constexpr int maximumBackoffMs = 30000;
+    // How long before its keepalive interval ends a device's request becomes urgent.
+    static constexpr int keepaliveMarginMs = 1000;
 
     void addDevice(DeviceId id, std::shared_ptr<const RegisterMap> map, quint8 address, qint64 now);
     void removeDevice(DeviceId id);
@@ -101,6 +103,8 @@ public:
     void enqueue(std::unique_ptr<Transaction> transaction);
     // Every transaction not under way, out of the queues (the line went down or closed).
     std::vector<std::unique_ptr<Transaction>> takeQueued(const Transaction *inFlight);
+    // The transactions of this ticket not under way, out of the queues (a cancel).
+    std::vector<std::unique_ptr<Transaction>> takeTicket(int ticket, const Transaction *inFlight);
     // Transactions waiting, both lanes.
     int queuedTransactions() const { return int(m_operator.size() + m_jobs.size()); }
     void forgetDevice(DeviceId id, const Transaction *inFlight);

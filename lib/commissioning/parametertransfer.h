@@ -1,10 +1,10 @@
-// Reads all parameters of a device on a bus into a ParameterSet, and writes a list of
-// differences back one by one, each verified by read-back: with progress and cancel,
-// for the HMI's backup, compare and restore.
+// Backup, compare and restore of a device's parameters for the HMI and jumoctl: a read
+// job, then (for a restore) a write job, with the signals their callers use. Every signal
+// comes from the event loop, never from inside a bus callback.
 #pragma once
 
-#include "bus/bus.h"
-#include "commissioning/parameterset.h"
+#include "commissioning/parameterreadjob.h"
+#include "commissioning/parameterwritejob.h"
 
 namespace jumo {
 
@@ -15,12 +15,12 @@ class ParameterTransfer : public QObject
 public:
     ParameterTransfer(Bus *bus, DeviceId device, QObject *parent = nullptr);
 
-    // Waits until every parameter has been read afresh (polling keeps going).
+    // Reads every parameter afresh (polling keeps going).
     void read();
-    // Writes the new values of the differences, in order.
+    // Writes the new values of the differences, in order, each verified by read-back.
     void write(const QList<ParameterDifference> &differences);
     void cancel();
-    bool isBusy() const { return m_reading || !m_pending.isEmpty() || m_ticket >= 0; }
+    bool isBusy() const { return m_read->isRunning() || m_write->isRunning(); }
 
 signals:
     void progress(int done, int total);
@@ -29,22 +29,8 @@ signals:
     void writeFinished(int succeeded, int failed, bool cancelled);
 
 private:
-    void onEntriesUpdated(DeviceId device, const QStringList &ids);
-    void finishRead();
-    void writeNext();
-
-    Bus *m_bus;
-    DeviceId m_device;
-    QStringList m_ids;
-    QSet<QString> m_fresh;
-    qint64 m_startMs = 0;
-    bool m_reading = false;
-    QList<ParameterDifference> m_pending;
-    int m_total = 0;
-    int m_ticket = -1;
-    int m_succeeded = 0;
-    int m_failed = 0;
-    bool m_cancelled = false;
+    ParameterReadJob *m_read;
+    ParameterWriteJob *m_write;
 };
 
 } // namespace jumo

@@ -1,0 +1,146 @@
+// A transport for unit tests of the bus: requests are answered by simulated devices (or
+// by nobody) after the time the line would take, on a manual clock, so minutes of line
+// time run in milliseconds. Faults are injected per request. The pty integration tests
+// against the simulator and the libmodbus peer remain the proof that the bus works.
+#pragma once
+
+#include "bus/clock.h"
+#include "bus/linetiming.h"
+#include "bus/transport.h"
+#include "sim/simulateddevice.h"
+
+#include <QHash>
+
+#include <functional>
+
+namespace jumo::test {
+
+class FakeTransport final : public Transport
+{
+public:
+    struct Sent
+    {
+        qint64 atMs = 0;
+        ModbusRequest request;
+    };
+
+    FakeTransport(ManualClock *clock, QHash<quint8, SimulatedDevice *> devices, LineFormat format)
+        : m_clock(clock), m_devices(std::move(devices)), m_format(format)
+    {
+    }
+
+    // Requests for which this returns true get no answer (a lost reply).
+    std::function<bool(const ModbusRequest &)> drop;
+    QList<Sent> sent;
+
+    bool open(QString *) override
+    {
+        m_open = true;
+        return true;
+    }
+
+    void close() override
+    {
+        m_open = false;
+        abortPending();
+    }
+
+    bool isOpen() const override { return m_open; }
+    double interFrameDelayMs() const override { return std::max(2.0, m_format.frameGapMs()); }
+
+    void send(const ModbusRequest &request) override
+    {
+        sent << Sent{m_clock->nowMs(), request};
+        ModbusResult result = answer(request);
+        double duration = 0;
+        if (request.isBroadcast())
+            duration = m_format.wireTimeMs(request.requestBytes());
+        else if (result.status == ModbusResult::Status::Timeout)
+            duration = request.timeoutMs;
+        else
+            duration = LineTiming::transactionMs(m_format, request.requestBytes(),
+                                                 result.status == ModbusResult::Status::Exception
+                                                         ? LineTiming::exceptionReplyBytes
+                                                         : request.replyBytes(),
+                                                 3.0);
+        const quint64 id = ++m_sequence;
+        m_pending = id;
+        m_clock->callAt(m_clock->nowMs() + qint64(std::ceil(duration)), this, [this, id, result] {
+            if (m_pending != id)
+                return;
+            m_pending = 0;
+            emit finished(result);
+        });
+    }
+
+    // The adapter is pulled: what was under way is lost, then the port is gone.
+    void pull()
+    {
+        m_open = false;
+        abortPending();
+        emit lost(QStringLiteral("the adapter was unplugged"));
+    }
+
+    // Requests sent to a slave, optionally only of one function code and start address.
+    int count(quint8 slave, int function = -1, int start = -1) const
+    {
+        int n = 0;
+        for (const Sent &s : sent) {
+            if (s.request.slave == slave && (function < 0 || int(s.request.function) == function)
+                && (start < 0 || s.request.start == start))
+                ++n;
+        }
+        return n;
+    }
+
+private:
+    void abortPending()
+    {
+        if (!m_pending)
+            return;
+        m_pending = 0;
+        ModbusResult result;
+        result.status = ModbusResult::Status::LineDown;
+        result.errorText = QStringLiteral("aborted");
+        emit finished(result);
+    }
+
+    ModbusResult answer(const ModbusRequest &request)
+    {
+        ModbusResult result;
+        if (request.isBroadcast()) {
+            for (SimulatedDevice *d : std::as_const(m_devices))
+                d->process(request.pdu(), true);
+            result.status = ModbusResult::Status::Ok;
+            return result;
+        }
+        SimulatedDevice *device = m_devices.value(request.slave);
+        if (!device)
+            return result;   // nobody there: a timeout
+        const QByteArray reply = device->process(request.pdu(), false);
+        if (drop && drop(request))
+            return result;   // executed, but the answer is lost on the way back
+        if (reply.isEmpty())
+            return result;
+        if (quint8(reply[0]) & 0x80) {
+            result.status = ModbusResult::Status::Exception;
+            result.exceptionCode = quint8(reply[1]);
+            return result;
+        }
+        result.status = ModbusResult::Status::Ok;
+        if (!request.isWrite()) {
+            for (int i = 2; i + 1 < reply.size(); i += 2)
+                result.words << quint16(quint8(reply[i]) << 8 | quint8(reply[i + 1]));
+        }
+        return result;
+    }
+
+    ManualClock *m_clock;
+    QHash<quint8, SimulatedDevice *> m_devices;
+    LineFormat m_format;
+    bool m_open = false;
+    quint64 m_sequence = 0;
+    quint64 m_pending = 0;
+};
+
+} // namespace jumo::test

@@ -1,0 +1,509 @@
+// The bus's rules, checked in simulated time: the scheduler with its value store and write
+// transactions on a fake transport and a manual clock, the devices answered by the
+// simulator's device model. Fairness, keepalive deadlines, quiet time after a timeout,
+// no repeat of actions, read-modify-write, invalidation on loss, exception 02 isolation.
+#include "bus/bus.h"
+#include "bus/devicescanner.h"
+#include "commissioning/parameterwritejob.h"
+#include "faketransport.h"
+#include "protocol/familyregistry.h"
+#include "sim/simulateddevice.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+#include <memory>
+
+using namespace jumo;
+using namespace jumo::test;
+
+namespace {
+
+const FamilyRegistry &families()
+{
+    static const FamilyRegistry registry = FamilyRegistry::load({}, true);
+    return registry;
+}
+
+// A line of simulated devices behind a fake transport, on a manual clock.
+struct Line
+{
+    explicit Line(const QList<QPair<QString, int>> &devices, int baud = 19200)
+    {
+        for (const auto &[family, address] : devices)
+            add(families().family(family), quint8(address));
+        bus = std::make_unique<Bus>(&clock, [this](const BusSettings &s) {
+            auto t = std::make_unique<FakeTransport>(&clock, simulated(), s.format);
+            transport = t.get();
+            return t;
+        });
+        BusSettings settings;
+        settings.portName = QStringLiteral("fake");
+        settings.format = *LineFormat::parse(baud, QStringLiteral("8N1"));
+        bus->setSettings(settings);
+    }
+
+    void add(std::shared_ptr<const RegisterMap> map, quint8 address)
+    {
+        sims.push_back(std::make_unique<SimulatedDevice>(std::move(map), address));
+    }
+
+    QHash<quint8, SimulatedDevice *> simulated() const
+    {
+        QHash<quint8, SimulatedDevice *> out;
+        for (const auto &d : sims)
+            out.insert(d->address(), d.get());
+        return out;
+    }
+
+    SimulatedDevice *sim(quint8 address) const { return simulated().value(address); }
+
+    // Runs the line until done() holds or maxMs of line time have passed; Qt's own events
+    // (job results) are processed on the way.
+    bool runUntil(const std::function<bool()> &done, qint64 maxMs)
+    {
+        const qint64 end = clock.nowMs() + maxMs;
+        while (!done()) {
+            QCoreApplication::processEvents();
+            if (done())
+                return true;
+            const qint64 next = clock.nextCallMs();
+            if (next < 0 || next > end)
+                return false;
+            clock.runNext();
+        }
+        return true;
+    }
+    void run(qint64 ms)
+    {
+        runUntil([] { return false; }, ms);
+        clock.advanceTo(clock.nowMs());
+    }
+
+    ManualClock clock;
+    std::vector<std::unique_ptr<SimulatedDevice>> sims;
+    FakeTransport *transport = nullptr;
+    std::unique_ptr<Bus> bus;
+};
+
+// The longest silence towards a slave between its first and last request.
+qint64 longestGap(const FakeTransport &t, quint8 slave, qint64 fromMs, qint64 toMs)
+{
+    qint64 last = fromMs;
+    qint64 longest = 0;
+    for (const FakeTransport::Sent &s : t.sent) {
+        if (s.atMs < fromMs || s.atMs > toMs)
+            continue;
+        if (s.request.slave == slave || s.request.isBroadcast()) {
+            longest = std::max(longest, s.atMs - last);
+            last = s.atMs;
+        }
+    }
+    return std::max(longest, toMs - last);
+}
+
+} // namespace
+
+class tst_Scheduler : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void keepaliveAndPollsHoldDuringScanAndRestore();
+    void actionIsSentOnceAndEndsUnknown();
+    void valueIsRepeatedAfterALostAnswer();
+    void quietTimeAfterATimeout();
+    void operatorWriteGoesNext();
+    void jobsAndPollsTakeTurns();
+    void lineLossMakesEverythingUnknownAtOnce();
+    void valuesTurnStaleWhenNotRead();
+    void offlineDeviceIsUnknownAndComesBack();
+    void bitChangeKeepsTheOtherBits_data();
+    void bitChangeKeepsTheOtherBits();
+    void bitChangeRefusedWhereStateIsUnreported();
+    void exception02IsolatesTheMissingEntry();
+    void broadcastNeverReadsBackFromAddressZero();
+};
+
+void tst_Scheduler::keepaliveAndPollsHoldDuringScanAndRestore()
+{
+    Line line({{"ipc300", 1}, {"tya200", 2}, {"dtron300", 4}});
+    QVERIFY(line.bus->open());
+    const DeviceId ipc = line.bus->addDevice(families().family("ipc300"), 1);
+    const DeviceId tya = line.bus->addDevice(families().family("tya200"), 2);
+    const DeviceId dtron = line.bus->addDevice(families().family("dtron300"), 4);
+    line.bus->setPollEntries(dtron, {"filtered_process_value"});
+    // The IPC 300 is polled only every 20 s: its keepalive must come from the scheduler.
+    line.bus->setPollInterval(ipc, 20000);
+    QHash<DeviceId, QList<qint64>> cycles;
+    QObject::connect(line.bus.get(), &Bus::pollCycleFinished, line.bus.get(),
+                     [&](DeviceId id, double) { cycles[id] << line.clock.nowMs(); });
+    line.run(3000);
+
+    // 76 parameters of the dTRON restored (each written and read back) and the whole
+    // address range scanned, both at once, while the IPC 300 and the TYA 200 are monitored.
+    const auto map = families().family("dtron300");
+    QList<ParameterDifference> differences;
+    for (const QString &id : ParameterSet::parameterIds(*map)) {
+        const RegisterEntry *e = map->entry(id);
+        QList<quint16> words;
+        for (int i = 0; i < e->wordCount(); ++i)
+            words << line.sim(4)->word(quint16(e->address + i));
+        differences << ParameterDifference{id, e->label, e->unit, {}, ValueCodec::exactText(*e, *map, words), {}, {}};
+    }
+    QCOMPARE(differences.size(), 76);
+    ParameterWriteJob restore(line.bus.get(), dtron);
+    DeviceScanner scan(*line.bus, families().families());
+    QList<int> found;
+    connect(&scan, &DeviceScanner::found, this, [&](int address) { found << address; });
+    const qint64 start = line.clock.nowMs();
+    restore.start(differences);
+    scan.start(1, 247);
+    QVERIFY(line.runUntil([&] { return !restore.isRunning() && !scan.isRunning(); }, 3600 * 1000));
+    const qint64 end = line.clock.nowMs();
+    QCOMPARE(restore.result(), Job::Result::Succeeded);
+    QCOMPARE(restore.succeeded(), 76);
+    QCOMPARE(scan.result(), Job::Result::Succeeded);
+    QCOMPARE(found, QList<int>({1, 2, 4}));
+    QVERIFY2(end - start > 60 * 1000, "the jobs ran for minutes of line time");
+    qInfo("scan and restore: %lld s of line time, %lld requests", (end - start) / 1000, qint64(line.transport->sent.size()));
+
+    // Neither power unit was left without a telegram for 5 s, and their polls went on.
+    for (quint8 slave : {quint8(1), quint8(2)}) {
+        const qint64 gap = longestGap(*line.transport, slave, start, end);
+        QVERIFY2(gap < 5000, qPrintable(QStringLiteral("slave %1 silent for %2 ms").arg(slave).arg(gap)));
+    }
+    for (DeviceId id : {ipc, tya}) {
+        qint64 last = start;
+        for (qint64 t : cycles.value(id)) {
+            if (t < start)
+                continue;
+            QVERIFY2(t - last < 25000, qPrintable(QStringLiteral("no poll cycle of device %1 for %2 ms").arg(id).arg(t - last)));
+            last = t;
+        }
+        QVERIFY(end - last < 25000);
+    }
+}
+
+void tst_Scheduler::actionIsSentOnceAndEndsUnknown()
+{
+    Line line({{"dtron300", 4}});
+    QVERIFY(line.bus->open());
+    line.bus->setPolling(false);
+    const DeviceId id = line.bus->addDevice(families().family("dtron300"), 4);
+    line.transport->drop = [](const ModbusRequest &r) { return r.isWrite(); };
+    QSignalSpy finished(line.bus.get(), &Bus::writeFinished);
+    line.bus->write(id, "program_controller_functions", "segment_change");
+    QVERIFY(line.runUntil([&] { return finished.count() == 1; }, 60000));
+    line.run(5000);
+    // The device may well have changed the segment: never a second frame.
+    QCOMPARE(line.transport->count(4, 0x06, 0x006F), 1);
+    const auto outcome = finished.at(0).at(1).value<WriteOutcome>();
+    QCOMPARE(outcome.result, WriteOutcome::Result::Unknown);
+    QVERIFY2(outcome.message.contains("not sent again"), qPrintable(outcome.message));
+}
+
+void tst_Scheduler::valueIsRepeatedAfterALostAnswer()
+{
+    Line line({{"dtron300", 4}});
+    QVERIFY(line.bus->open());
+    line.bus->setPolling(false);
+    const DeviceId id = line.bus->addDevice(families().family("dtron300"), 4);
+    int dropped = 0;
+    line.transport->drop = [&dropped](const ModbusRequest &r) { return r.isWrite() && dropped++ == 0; };
+    QSignalSpy finished(line.bus.get(), &Bus::writeFinished);
+    line.bus->write(id, "setpoint", "42.5");
+    QVERIFY(line.runUntil([&] { return finished.count() == 1; }, 60000));
+    QCOMPARE(finished.at(0).at(1).value<WriteOutcome>().result, WriteOutcome::Result::Confirmed);
+    QCOMPARE(line.transport->count(4, 0x10, 0x0047), 2);
+
+    // Every answer lost: repeated up to the retries, then unknown, never "failed".
+    line.transport->drop = [](const ModbusRequest &r) { return r.isWrite(); };
+    line.bus->write(id, "setpoint", "43");
+    QVERIFY(line.runUntil([&] { return finished.count() == 2; }, 60000));
+    QCOMPARE(finished.at(1).at(1).value<WriteOutcome>().result, WriteOutcome::Result::Unknown);
+    QCOMPARE(line.transport->count(4, 0x10, 0x0047), 2 + 1 + line.bus->settings().retries);
+}
+
+void tst_Scheduler::quietTimeAfterATimeout()
+{
+    Line line({{"ipc300", 1}});
+    QVERIFY(line.bus->open());
+    const DeviceId id = line.bus->addDevice(families().family("ipc300"), 1);
+    line.bus->setPollEntries(id, {"load_current"});
+    int reads = 0;
+    line.transport->drop = [&reads](const ModbusRequest &r) { return !r.isWrite() && ++reads == 3; };
+    line.run(5000);
+    const QList<FakeTransport::Sent> &sent = line.transport->sent;
+    QVERIFY(sent.size() > 5);
+    // The third read got no answer: nothing goes out for its timeout, then as long again,
+    // so a late answer cannot be taken for the next request's.
+    const qint64 timeout = sent[2].request.timeoutMs;
+    QVERIFY(sent[3].atMs - sent[2].atMs >= 2 * timeout);
+    QVERIFY(sent[1].atMs - sent[0].atMs < timeout);
+    QCOMPARE(line.bus->entryState(id, "load_current")->validity, Validity::Current);
+}
+
+void tst_Scheduler::operatorWriteGoesNext()
+{
+    Line line({{"ipc300", 1}});
+    QVERIFY(line.bus->open());
+    const DeviceId id = line.bus->addDevice(families().family("ipc300"), 1);
+    line.run(2000);
+    for (int i = 0; i < 20; ++i)
+        line.bus->probe(quint8(20 + i), 0x0000, 1, families().family("ipc300")->protocol);
+    line.run(1000);
+    const qsizetype before = line.transport->sent.size();
+    line.bus->write(id, "input_setpoint", "12");
+    line.run(2000);
+    // At most the request under way goes before it.
+    bool nextOrSecond = false;
+    for (qsizetype i = before; i < std::min(before + 2, line.transport->sent.size()); ++i)
+        nextOrSecond = nextOrSecond || line.transport->sent[i].request.isWrite();
+    QVERIFY(nextOrSecond);
+}
+
+void tst_Scheduler::jobsAndPollsTakeTurns()
+{
+    Line line({{"ipc300", 1}});
+    QVERIFY(line.bus->open());
+    line.bus->addDevice(families().family("ipc300"), 1);
+    line.run(2000);
+    for (int i = 0; i < 30; ++i)
+        line.bus->probe(quint8(100 + i), 0x0000, 1, families().family("ipc300")->protocol);
+    const qsizetype first = line.transport->sent.size();
+    line.run(20000);
+    // Between two job requests there is always a poll while the device is monitored.
+    int jobsInARow = 0;
+    int jobs = 0;
+    for (qsizetype i = first; i < line.transport->sent.size(); ++i) {
+        const bool job = line.transport->sent[i].request.slave >= 100;
+        if (job && ++jobsInARow > 2)   // a probe and its repeat after a lost answer
+            QFAIL("the job lane took more than its turns");
+        if (!job)
+            jobsInARow = 0;
+        jobs += job;
+    }
+    QVERIFY(jobs >= 10);
+}
+
+void tst_Scheduler::lineLossMakesEverythingUnknownAtOnce()
+{
+    Line line({{"ipc300", 1}, {"dtron300", 4}});
+    QVERIFY(line.bus->open());
+    const DeviceId ipc = line.bus->addDevice(families().family("ipc300"), 1);
+    const DeviceId dtron = line.bus->addDevice(families().family("dtron300"), 4);
+    line.run(5000);
+    QCOMPARE(line.bus->entryState(ipc, "load_voltage")->validity, Validity::Current);
+    QCOMPARE(line.bus->entryState(dtron, "setpoint")->validity, Validity::Current);
+    QSignalSpy finished(line.bus.get(), &Bus::writeFinished);
+    QSignalSpy conditions(line.bus.get(), &Bus::conditionChanged);
+    line.transport->drop = [](const ModbusRequest &r) { return r.isWrite(); };
+    line.bus->write(ipc, "input_setpoint", "30");
+    line.bus->write(dtron, "setpoint", "30");
+    line.runUntil([&] { return line.transport->count(1, 0x10) >= 1; }, 5000);
+
+    line.transport->pull();
+    // At the same moment: every value unknown, both devices "line lost".
+    for (DeviceId id : {ipc, dtron}) {
+        const auto map = line.bus->deviceMap(id);
+        for (const RegisterEntry &e : map->entries()) {
+            if (const EntryState *s = line.bus->entryState(id, e.id)) {
+                QVERIFY2(s->validity == Validity::Unknown, qPrintable(e.id));
+                QVERIFY(s->error == ReadError::LineLost || s->error == ReadError::NotAvailable);
+            }
+        }
+        QCOMPARE(line.bus->condition(id).state, DeviceCondition::State::LineLost);
+    }
+    QVERIFY(conditions.count() >= 2);
+    line.run(100);
+    QCOMPARE(finished.count(), 2);
+    // The write under way may have been taken; the queued one never went out.
+    QCOMPARE(finished.at(0).at(1).value<WriteOutcome>().result, WriteOutcome::Result::Unknown);
+    QCOMPARE(finished.at(1).at(1).value<WriteOutcome>().result, WriteOutcome::Result::NotSent);
+
+    // The port comes back: values turn current again, nothing asked before is replayed.
+    line.transport->drop = nullptr;
+    const int writes = line.transport->count(4, 0x10);
+    line.run(3000);
+    QCOMPARE(line.bus->state(), LineState::Connected);
+    QTRY_COMPARE_WITH_TIMEOUT(line.bus->entryState(ipc, "load_voltage")->validity, Validity::Current, 1);
+    QCOMPARE(line.transport->count(4, 0x10), writes);
+}
+
+void tst_Scheduler::valuesTurnStaleWhenNotRead()
+{
+    Line line({{"quantrol", 3}});
+    QVERIFY(line.bus->open());
+    const DeviceId id = line.bus->addDevice(families().family("quantrol"), 3);
+    line.run(3000);
+    QCOMPARE(line.bus->entryState(id, "controller_setpoint")->validity, Validity::Current);
+    line.bus->setPolling(false);
+    line.run(1000);
+    QCOMPARE(line.bus->entryState(id, "controller_setpoint")->validity, Validity::Current);
+    line.run(10000);
+    QCOMPARE(line.bus->entryState(id, "controller_setpoint")->validity, Validity::Stale);
+    QCOMPARE(line.bus->entryState(id, "controller_setpoint")->statusName(), QString("stale"));
+}
+
+void tst_Scheduler::offlineDeviceIsUnknownAndComesBack()
+{
+    Line line({{"ipc300", 1}, {"quantrol", 3}});
+    QVERIFY(line.bus->open());
+    const DeviceId ipc = line.bus->addDevice(families().family("ipc300"), 1);
+    const DeviceId quantrol = line.bus->addDevice(families().family("quantrol"), 3);
+    line.run(3000);
+    bool dead = true;
+    line.transport->drop = [&dead](const ModbusRequest &r) { return dead && r.slave == 3; };
+    line.runUntil([&] { return !line.bus->isOnline(quantrol); }, 30000);
+    QCOMPARE(line.bus->condition(quantrol).state, DeviceCondition::State::Offline);
+    QCOMPARE(line.bus->entryState(quantrol, "controller_setpoint")->validity, Validity::Unknown);
+    QCOMPARE(line.bus->entryState(quantrol, "controller_setpoint")->error, ReadError::DeviceOffline);
+    QCOMPARE(line.bus->entryState(ipc, "load_voltage")->validity, Validity::Current);
+    dead = false;
+    QVERIFY(line.runUntil([&] { return line.bus->isOnline(quantrol); }, 60000));
+    line.run(3000);
+    QCOMPARE(line.bus->entryState(quantrol, "controller_setpoint")->validity, Validity::Current);
+}
+
+void tst_Scheduler::bitChangeKeepsTheOtherBits_data()
+{
+    QTest::addColumn<QString>("family");
+    QTest::addColumn<int>("address");
+    QTest::addColumn<QString>("entry");
+    QTest::addColumn<QString>("before");   // "entry.bit" or bool entry set on the device first
+    QTest::addColumn<QString>("bit");
+    QTest::addColumn<QString>("mustStayOn");
+    // IPC 300 0x00F1 is write-only: its bits are reported in 0x00EF.
+    QTest::newRow("ipc300 0x00F1 from 0x00EF") << "ipc300" << 1 << "binary_signal_write" << "external_inhibit_input"
+                                              << "digital_output" << "binary_signal_1.external_inhibit_input";
+    // dTRON 0x0027 is read, changed and written back.
+    QTest::newRow("dtron300 0x0027 itself") << "dtron300" << 4 << "binary_output_control"
+                                            << "binary_output_control.output_2" << "output_1"
+                                            << "binary_output_control.output_2";
+    QTest::newRow("quantrol 0x0025 itself") << "quantrol" << 3 << "binary_output_control"
+                                            << "binary_output_control.output_k2" << "output_k1"
+                                            << "binary_output_control.output_k2";
+}
+
+void tst_Scheduler::bitChangeKeepsTheOtherBits()
+{
+    QFETCH(QString, family);
+    QFETCH(int, address);
+    QFETCH(QString, entry);
+    QFETCH(QString, before);
+    QFETCH(QString, bit);
+    QFETCH(QString, mustStayOn);
+    Line line({{family, address}});
+    QVERIFY(line.bus->open());
+    const DeviceId id = line.bus->addDevice(families().family(family), quint8(address));
+    line.run(2000);
+    SimulatedDevice *device = line.sim(quint8(address));
+    QVERIFY(device->setFlag(before, true));
+    if (const RegisterEntry *e = device->map().entry(entry); e->activationMask)
+        QVERIFY(device->setWords(e->address, {quint16(device->word(e->address) | *e->activationMask)}));
+    // A link is kept by the device itself.
+    if (family == "ipc300")
+        QVERIFY(device->setFlag("binary_signal_1.external_inhibit_input", true));
+
+    QSignalSpy finished(line.bus.get(), &Bus::writeFinished);
+    const qsizetype first = line.transport->sent.size();
+    line.bus->writeBits(id, entry, {{bit, true}});
+    QVERIFY(line.runUntil([&] { return finished.count() == 1; }, 30000));
+    const auto outcome = finished.at(0).at(1).value<WriteOutcome>();
+    QVERIFY2(outcome.result == WriteOutcome::Result::Confirmed, qPrintable(outcome.message));
+    QVERIFY(device->flag(mustStayOn));
+    QVERIFY(device->flag(entry + QLatin1Char('.') + bit));
+
+    // The word was read right before the write: nothing in between.
+    const RegisterEntry *target = device->map().entry(entry);
+    qsizetype write = -1;
+    for (qsizetype i = first; i < line.transport->sent.size(); ++i) {
+        if (line.transport->sent[i].request.isWrite() && line.transport->sent[i].request.start == target->address)
+            write = i;
+    }
+    QVERIFY(write > first);
+    const ModbusRequest &preRead = line.transport->sent[write - 1].request;
+    QVERIFY(!preRead.isWrite());
+    QCOMPARE(preRead.slave, quint8(address));
+
+    // And off again: only that bit.
+    line.bus->writeBits(id, entry, {{bit, false}});
+    QVERIFY(line.runUntil([&] { return finished.count() == 2; }, 30000));
+    QCOMPARE(finished.at(1).at(1).value<WriteOutcome>().result, WriteOutcome::Result::Confirmed);
+    QVERIFY(device->flag(mustStayOn));
+    QVERIFY(!device->flag(entry + QLatin1Char('.') + bit));
+}
+
+void tst_Scheduler::bitChangeRefusedWhereStateIsUnreported()
+{
+    Line line({{"quantrol", 3}});
+    QVERIFY(line.bus->open());
+    const DeviceId id = line.bus->addDevice(families().family("quantrol"), 3);
+    QSignalSpy finished(line.bus.get(), &Bus::writeFinished);
+    // 0x0048 is write-only and nothing reports its bits: one bit alone would set the others.
+    line.bus->writeBits(id, "operation_functions", {{"keyboard_inhibit", true}});
+    // An action word has no states to keep.
+    line.bus->writeBits(id, "controller_functions", {{"manual_mode", true}});
+    // Every bit given: the word is fully known and goes out.
+    line.bus->writeBits(id, "operation_functions", {{"keyboard_inhibit", true}, {"level_inhibit", false}, {"display_off", false}});
+    QVERIFY(line.runUntil([&] { return finished.count() == 3; }, 30000));
+    QCOMPARE(finished.at(0).at(1).value<WriteOutcome>().result, WriteOutcome::Result::Invalid);
+    QVERIFY(finished.at(0).at(1).value<WriteOutcome>().message.contains("does not report"));
+    QCOMPARE(finished.at(1).at(1).value<WriteOutcome>().result, WriteOutcome::Result::Invalid);
+    QCOMPARE(finished.at(2).at(1).value<WriteOutcome>().result, WriteOutcome::Result::Accepted);
+    QCOMPARE(line.sim(3)->word(0x0048), quint16(0x0001));
+    QCOMPARE(line.transport->count(3, 0x06, 0x0048), 1);
+}
+
+void tst_Scheduler::exception02IsolatesTheMissingEntry()
+{
+    // A smaller model: the device lacks one address the family's map lists.
+    const auto full = families().family("dtron300");
+    auto smaller = std::make_shared<RegisterMap>(*full);
+    QList<RegisterEntry> entries = full->entries();
+    const QString missing = QStringLiteral("analog_input_2_mv");
+    QVERIFY(full->entry(missing));
+    entries.removeIf([&missing](const RegisterEntry &e) { return e.id == missing; });
+    smaller->setEntries(entries);
+    Line line({});
+    line.add(smaller, 4);
+    QVERIFY(line.bus->open());
+    const DeviceId id = line.bus->addDevice(full, 4);
+    QSignalSpy cycles(line.bus.get(), &Bus::pollCycleFinished);
+    QVERIFY(line.runUntil([&] { return cycles.count() >= 2; }, 60000));
+    QCOMPARE(line.bus->entryState(id, missing)->error, ReadError::NotAvailable);
+    QCOMPARE(line.bus->entryState(id, missing)->statusName(), QString("unavailable"));
+    int current = 0;
+    for (const RegisterEntry &e : full->entries()) {
+        const EntryState *s = line.bus->entryState(id, e.id);
+        current += s && s->validity == Validity::Current;
+    }
+    QVERIFY2(current > 100, qPrintable(QString::number(current)));
+    // Remembered for the session: later cycles ask no more questions.
+    const int exceptions = line.bus->statistics(id)->exceptions.value(2);
+    QVERIFY(exceptions > 0 && exceptions < 20);
+    line.run(10000);
+    QCOMPARE(line.bus->statistics(id)->exceptions.value(2), exceptions);
+}
+
+void tst_Scheduler::broadcastNeverReadsBackFromAddressZero()
+{
+    Line line({{"ipc300", 1}, {"ipc300", 2}});
+    QVERIFY(line.bus->open());
+    line.bus->setPolling(false);
+    line.bus->addDevice(families().family("ipc300"), 1);
+    const DeviceId second = line.bus->addDevice(families().family("ipc300"), 2);
+    QSignalSpy finished(line.bus.get(), &Bus::writeFinished);
+    line.bus->writeBroadcast("ipc300", "input_setpoint", "25");
+    line.bus->removeDevice(second);   // before its read-back
+    QVERIFY(line.runUntil([&] { return finished.count() == 1; }, 30000));
+    QCOMPARE(finished.at(0).at(1).value<WriteOutcome>().result, WriteOutcome::Result::Confirmed);
+    QCOMPARE(line.transport->count(0, 0x10), 1);
+    QCOMPARE(line.transport->count(0, 0x03), 0);
+    QCOMPARE(line.transport->count(1, 0x03, 0x00D5), 1);
+    QCOMPARE(line.transport->count(2, 0x03, 0x00D5), 0);
+}
+
+QTEST_GUILESS_MAIN(tst_Scheduler)
+#include "tst_scheduler.moc"
