@@ -197,7 +197,8 @@ Commands on the register maps:
   decode FAMILY ID WORD... decode raw register words as an entry
 
 Commands on a serial line (all take --port PATH --baud N --format 8N1|8E1|8O1|8N2
---timeout MS --read-only); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1:
+--timeout MS --read-only); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1, and its
+identity registers must confirm FAMILY (exit code 3 if not; --no-identify skips it):
   scan [--from A --to B]   find devices and name their family
   read DEVICE ID...        read entries once
   write DEVICE ID=VALUE... write entries, verified by reading them back
@@ -223,7 +224,8 @@ Befehle auf den Registertabellen:
   decode FAMILY ID WORD... Registerwörter als Eintrag dekodieren
 
 Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8E1|8O1|8N2
---timeout MS --read-only); DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1:
+--timeout MS --read-only); DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1, und seine
+Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 3; --no-identify überspringt das):
   scan [--from A --to B]   Geräte suchen und ihre Familie nennen
   read DEVICE ID...        Einträge einmal lesen
   write DEVICE ID=VALUE... Einträge schreiben, durch Rücklesen geprüft
@@ -240,7 +242,7 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
 </translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>warning: refused map file: %1</source>
         <translation>Warnung: Map-Datei abgelehnt: %1</translation>
     </message>
@@ -777,6 +779,47 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
 </context>
 <context>
+    <name>jumo::IdentityCheck</name>
+    <message>
+        <location filename="../lib/bus/identitycheck.cpp" line="+62"/>
+        <source>%1: confirmed</source>
+        <translation>%1: bestätigt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 refused: the device at address %2 is a %3 (%4), not a %5</source>
+        <translation>%1 abgelehnt: das Gerät an Adresse %2 ist ein %3 (%4), kein %5</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 refused: the device at address %2 answers, but its identity registers match no known family, so it is no %3</source>
+        <translation>%1 abgelehnt: das Gerät an Adresse %2 antwortet, aber seine Identitätsregister passen zu keiner bekannten Familie, es ist also kein %3</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: no answer at address %2, so its family cannot be confirmed</source>
+        <translation>%1: keine Antwort an Adresse %2, die Familie kann nicht bestätigt werden</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::IdentityGate</name>
+    <message>
+        <location filename="../app/cli/identitygate.cpp" line="+22"/>
+        <source>Trust the named family without checking the device&apos;s identity registers (for devices whose identity cannot be read; the audit log records it).</source>
+        <translation>Der genannten Familie vertrauen, ohne die Identitätsregister des Geräts zu prüfen (für Geräte, deren Identität nicht lesbar ist; das Audit-Protokoll vermerkt es).</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>the family was not checked against the device (--no-identify)</source>
+        <translation>die Familie wurde nicht am Gerät geprüft (--no-identify)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>nothing was read or written; --no-identify skips the check for a device whose identity registers cannot be read</source>
+        <translation>nichts wurde gelesen oder geschrieben; --no-identify überspringt die Prüfung bei einem Gerät, dessen Identitätsregister nicht lesbar sind</translation>
+    </message>
+</context>
+<context>
     <name>jumo::IdentityPanel</name>
     <message>
         <location filename="../ui/identitypanel.cpp" line="+44"/>
@@ -803,7 +846,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+82"/>
+        <location filename="../app/cli/linecommands.cpp" line="+87"/>
         <source>Serial port, e.g. /dev/ttyUSB0 (required).</source>
         <translation>Serielle Schnittstelle, z. B. /dev/ttyUSB0 (erforderlich).</translation>
     </message>
@@ -840,12 +883,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <message>
         <location line="+0"/>
         <location line="+2"/>
-        <location line="+344"/>
+        <location line="+367"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-344"/>
+        <location line="-367"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
@@ -856,12 +899,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+344"/>
+        <location line="+367"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-342"/>
+        <location line="-365"/>
         <source>Never write to the line (control-room mode).</source>
         <translation>Nie auf die Leitung schreiben (Leitwarten-Modus).</translation>
     </message>
@@ -891,7 +934,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>--retries muss 0..10 sein</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>&apos;%1&apos; is not a device: use FAMILY@ADDRESS, e.g. ipc300@1 (families: %2)</source>
         <translation>&apos;%1&apos; ist kein Gerät: FAMILY@ADDRESS verwenden, z. B. ipc300@1 (Gerätefamilien: %2)</translation>
     </message>
@@ -976,34 +1019,35 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+317"/>
-        <location line="+128"/>
+        <location line="+349"/>
+        <location line="+130"/>
         <source>FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="-443"/>
+        <location line="-477"/>
         <source>Entry ids.</source>
         <translation>Kennungen der Einträge.</translation>
     </message>
     <message>
         <location line="+17"/>
-        <location line="+77"/>
+        <location line="+89"/>
         <source>&apos;%1&apos; is not an entry of %2</source>
         <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
     <message>
-        <location line="-73"/>
+        <location line="-85"/>
         <source>&apos;%1&apos; is write-only</source>
         <translation>&apos;%1&apos; ist nur schreibbar</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+15"/>
+        <location line="+17"/>
         <source>some entries could not be read</source>
         <translation>einige Einträge konnten nicht gelesen werden</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>Writes entries of a device; each write is verified by reading it back.</source>
         <translation>Schreibt Einträge eines Geräts; jeder Schreibvorgang wird durch Rücklesen überprüft.</translation>
     </message>
@@ -1048,12 +1092,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>&apos;%1&apos; hat nicht die Form ID=VALUE</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+43"/>
         <source>(was %1)</source>
         <translation>(vorher %1)</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+36"/>
         <source>Polls devices continuously and prints every poll cycle.</source>
         <translation>Fragt Geräte fortlaufend ab und gibt jeden Abfragezyklus aus.</translation>
     </message>
@@ -1113,7 +1157,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>&apos;%1&apos; ist kein lesbarer Eintrag von %2</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+97"/>
         <source>no differences</source>
         <translation>keine Unterschiede</translation>
     </message>
@@ -1173,17 +1217,17 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+17"/>
-        <location line="+34"/>
+        <location line="+36"/>
         <source>refused: %1</source>
         <translation>abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="-29"/>
+        <location line="-31"/>
         <source>read-only mode: nothing would be restored</source>
         <translation>Nur-Lese-Modus: es würde nichts wiederhergestellt</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>these parameters could not be read, nothing was done: %1</source>
         <translation>diese Parameter konnten nicht gelesen werden, es wurde nichts getan: %1</translation>
     </message>
@@ -1229,7 +1273,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Berichtsdatei (.pdf oder .html).</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+25"/>
         <source>%1 did not answer: no report written</source>
         <translation>%1 hat nicht geantwortet: kein Bericht geschrieben</translation>
     </message>
@@ -1239,7 +1283,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Bericht von %1 in %2 geschrieben</translation>
     </message>
     <message numerus="yes">
-        <location line="+10"/>
+        <location line="+17"/>
         <source>%n parameter(s) restored and verified</source>
         <translation>
             <numerusform>%n Parameter wiederhergestellt und geprüft</numerusform>

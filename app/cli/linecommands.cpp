@@ -4,6 +4,8 @@
 #include "commissioning/parametertransfer.h"
 
 #include "commandparser.h"
+#include "exitcodes.h"
+#include "identitygate.h"
 #include "commissioning/commissioningreport.h"
 #include "bus/devicescanner.h"
 #include "logs/eventlog.h"
@@ -46,9 +48,10 @@ LineCommands::LineCommands(const FamilyRegistry &registry, QTextStream &out, QTe
     : QObject(parent), m_registry(registry), m_out(out), m_err(err)
 {
     // Writes from the command line are audited like the HMI's, in the same log.
-    auto *log = new EventLog(EventLog::defaultFolder() + QStringLiteral("/write-audit.jsonl"), this,
-                             EventLog::Open::AppendOnly);
-    new WriteAudit(&m_bus, log, this);
+    m_audit = new EventLog(EventLog::defaultFolder() + QStringLiteral("/write-audit.jsonl"), this,
+                           EventLog::Open::AppendOnly);
+    new WriteAudit(&m_bus, m_audit, this);
+    m_identity = new IdentityGate(m_bus, m_registry, m_err, this);
 }
 
 LineCommands::~LineCommands() = default;
@@ -77,8 +80,10 @@ std::optional<int> LineCommands::run(const QString &command, const QStringList &
     return parameters(command, arguments);
 }
 
-void LineCommands::addLineOptions(CommandParser &parser)
+void LineCommands::addLineOptions(CommandParser &parser, bool namesDevices)
 {
+    if (namesDevices)
+        IdentityGate::addOption(parser);
     parser.addOption({QStringLiteral("port"), tr("Serial port, e.g. /dev/ttyUSB0 (required)."), tr("path")});
     parser.addOption({QStringLiteral("baud"), tr("Baud rate: 4800, 9600, 19200 or 38400 (default 9600)."), tr("rate"),
                       QStringLiteral("9600")});
@@ -130,6 +135,7 @@ std::optional<int> LineCommands::openLine(CommandParser &parser)
         return 2;
     }
     settings.readOnly = parser.isSet(QStringLiteral("read-only"));
+    m_identity->configure(parser);
     m_bus.setSettings(settings);
     if (!m_bus.open()) {
         m_err << m_bus.lastError() << Qt::endl;
@@ -177,7 +183,7 @@ void LineCommands::finish(int code)
 std::optional<int> LineCommands::scan(const QStringList &arguments)
 {
     CommandParser parser(QStringLiteral("scan"), tr("Finds devices on the line and names their family."));
-    addLineOptions(parser);
+    addLineOptions(parser, false);
     parser.addOption({QStringLiteral("from"), tr("First address (default 1)."), tr("address"), QStringLiteral("1")});
     parser.addOption({QStringLiteral("to"), tr("Last address (default 247)."), tr("address"), QStringLiteral("247")});
     if (const auto stop = parser.parseArguments(arguments, m_out, m_err, 0, 0))
@@ -294,11 +300,24 @@ std::optional<int> LineCommands::read(const QStringList &arguments, bool dump)
     m_json = parser.isSet(QStringLiteral("json"));
     if (const auto stop = openLine(parser))
         return stop;
-    m_bus.setPolling(false);
-    target.id = m_bus.addDevice(target.map, target.address);
-    m_bus.setPollEntries(target.id, dump ? QStringList() : ids);
     m_targets = {target};
     m_ids = ids;
+    m_identity->pass(claims(), [this, dump] { readOnce(dump); }, [this](int code) { finish(code); },
+                     [this] {
+                         // Nothing answers: report the entries as unread, read nothing.
+                         printValues(m_targets.first(), m_ids);
+                         m_err << tr("some entries could not be read") << Qt::endl;
+                         finish(exitcode::Failed);
+                     });
+    return std::nullopt;
+}
+
+void LineCommands::readOnce(bool dump)
+{
+    Target &target = m_targets.first();
+    m_bus.setPolling(false);
+    target.id = m_bus.addDevice(target.map, target.address);
+    m_bus.setPollEntries(target.id, dump ? QStringList() : m_ids);
     connect(&m_bus, &Bus::pollCycleFinished, this, [this](DeviceId id, double) {
         if (id != m_targets.first().id)
             return;
@@ -308,7 +327,6 @@ std::optional<int> LineCommands::read(const QStringList &arguments, bool dump)
         finish(m_failed ? 1 : 0);
     });
     m_bus.requestCycle(target.id);
-    return std::nullopt;
 }
 
 std::optional<int> LineCommands::write(const QStringList &arguments)
@@ -373,6 +391,17 @@ std::optional<int> LineCommands::write(const QStringList &arguments)
     }
     if (const auto stop = openLine(parser))
         return stop;
+    m_identity->recordSkipsIn(m_audit);
+    QList<IdentityCheck::Claim> checked;
+    for (quint8 address : broadcast ? verifyAddresses : QList<quint8>{target.address})
+        checked << IdentityCheck::Claim{address, target.map};
+    m_identity->pass(checked, [this, target, broadcast, verifyAddresses] { startWrites(target, broadcast, verifyAddresses); },
+                     [this](int code) { finish(code); });
+    return std::nullopt;
+}
+
+void LineCommands::startWrites(Target target, bool broadcast, const QList<quint8> &verifyAddresses)
+{
     m_bus.setPolling(false);
     if (broadcast) {
         // The bus reads a broadcast back from every device of the family it knows.
@@ -405,13 +434,12 @@ std::optional<int> LineCommands::write(const QStringList &arguments)
     }
     if (readable.isEmpty()) {
         writeNext();
-        return std::nullopt;
+        return;
     }
     m_bus.setPollEntries(target.id, readable);
     connect(&m_bus, &Bus::pollCycleFinished, this, [this](DeviceId, double) { writeNext(); },
             Qt::SingleShotConnection);
     m_bus.requestCycle(target.id);
-    return std::nullopt;
 }
 
 void LineCommands::writeNext()
@@ -474,6 +502,12 @@ std::optional<int> LineCommands::monitor(const QStringList &arguments)
     }
     if (const auto stop = openLine(parser))
         return stop;
+    m_identity->pass(claims(), [this, ids, interval] { startMonitor(ids, interval); }, [this](int code) { finish(code); });
+    return std::nullopt;
+}
+
+void LineCommands::startMonitor(const QStringList &ids, int interval)
+{
     if (m_csv)
         m_out << "time,device,id,value,unit,status" << Qt::endl;
     for (Target &target : m_targets) {
@@ -523,10 +557,14 @@ std::optional<int> LineCommands::monitor(const QStringList &arguments)
             && std::all_of(m_targets.cbegin(), m_targets.cend(), [this](const Target &t) { return t.cycles >= m_cyclesWanted; }))
             finish(m_failed ? 1 : 0);
     });
-    return std::nullopt;
 }
 
 void LineCommands::readParameters(const std::function<void(const ParameterSet &, const QStringList &)> &done)
+{
+    m_identity->pass(claims(), [this, done] { readParametersNow(done); }, [this](int code) { finish(code); });
+}
+
+void LineCommands::readParametersNow(const std::function<void(const ParameterSet &, const QStringList &)> &done)
 {
     Target &target = m_targets.first();
     QStringList ids = ParameterSet::parameterIds(*target.map) + target.map->identity;
@@ -634,6 +672,8 @@ std::optional<int> LineCommands::parameters(const QString &command, const QStrin
     if (const auto stop = openLine(parser))
         return stop;
     m_targets = {target};
+    if (restore)
+        m_identity->recordSkipsIn(m_audit);
     const bool yes = restore && parser.isSet(QStringLiteral("yes"));
     readParameters([this, backup, restore, path, file, yes, first](const ParameterSet &device, const QStringList &failed) {
         if (!failed.isEmpty()) {
@@ -717,9 +757,16 @@ std::optional<int> LineCommands::report(const QStringList &arguments)
     if (const auto stop = openLine(parser))
         return stop;
     const QString path = parser.positionalArguments().at(1);
+    m_targets = {target};
+    m_identity->pass(claims(), [this, path] { startReport(path); }, [this](int code) { finish(code); });
+    return std::nullopt;
+}
+
+void LineCommands::startReport(const QString &path)
+{
+    Target &target = m_targets.first();
     m_bus.setPolling(false);
     target.id = m_bus.addDevice(target.map, target.address);
-    m_targets = {target};
     connect(&m_bus, &Bus::pollCycleFinished, this, [this, path](DeviceId id, double) {
         const Target &t = m_targets.first();
         if (id != t.id)
@@ -752,7 +799,14 @@ std::optional<int> LineCommands::report(const QStringList &arguments)
         finish(0);
     });
     m_bus.requestCycle(target.id);
-    return std::nullopt;
+}
+
+QList<IdentityCheck::Claim> LineCommands::claims() const
+{
+    QList<IdentityCheck::Claim> out;
+    for (const Target &t : m_targets)
+        out << IdentityCheck::Claim{t.address, t.map};
+    return out;
 }
 
 void LineCommands::restoreNext()

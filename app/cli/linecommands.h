@@ -3,6 +3,7 @@
 #pragma once
 
 #include "bus/bus.h"
+#include "bus/identitycheck.h"
 #include "commissioning/parameterset.h"
 
 #include <QObject>
@@ -17,7 +18,9 @@ namespace jumo {
 
 class CommandParser;
 class DeviceScanner;
+class EventLog;
 class FamilyRegistry;
+class IdentityGate;
 
 class LineCommands : public QObject
 {
@@ -43,17 +46,24 @@ private:
         int cycles = 0;
     };
 
-    void addLineOptions(CommandParser &parser);
+    void addLineOptions(CommandParser &parser, bool namesDevices = true);
     std::optional<int> openLine(CommandParser &parser);
     bool parseDevice(const QString &text, Target &target);
     std::optional<int> scan(const QStringList &arguments);
     std::optional<int> read(const QStringList &arguments, bool dump);
+    void readOnce(bool dump);
     std::optional<int> write(const QStringList &arguments);
+    void startWrites(Target target, bool broadcast, const QList<quint8> &verifyAddresses);
     std::optional<int> monitor(const QStringList &arguments);
+    void startMonitor(const QStringList &ids, int interval);
     std::optional<int> report(const QStringList &arguments);
+    void startReport(const QString &path);
+    // The targets as claims for the identity check.
+    QList<IdentityCheck::Claim> claims() const;
     std::optional<int> parameters(const QString &command, const QStringList &arguments);
     // Reads the parameters and identity of the target once; then calls done.
     void readParameters(const std::function<void(const ParameterSet &, const QStringList &failed)> &done);
+    void readParametersNow(const std::function<void(const ParameterSet &, const QStringList &failed)> &done);
     void printDifferences(const QList<ParameterDifference> &differences, const QString &oldName, const QString &newName);
     void restoreNext();
     void printValues(const Target &target, const QStringList &ids);
@@ -65,6 +75,8 @@ private:
     QTextStream &m_err;
     Bus m_bus;
     std::unique_ptr<DeviceScanner> m_scanner;
+    EventLog *m_audit = nullptr;
+    IdentityGate *m_identity = nullptr;
     QList<Target> m_targets;
     QStringList m_ids;
     QList<QPair<QString, QString>> m_pendingWrites;

@@ -31,6 +31,9 @@ private slots:
     void backupChangeDiffRestore();
     void restoreRefusesOtherFamilyAndVersion();
     void reportAsHtmlAndPdf();
+    void wrongFamilyIsRefused_data();
+    void wrongFamilyIsRefused();
+    void noIdentifyIsAudited();
 
 private:
     QTemporaryDir m_logs;
@@ -187,15 +190,16 @@ void tst_JumoctlLine::absentDeviceIsATimeout()
     QVERIFY(rows[0].toObject()["value"].isNull());
     QVERIFY(r.err.contains("could not be read"));
 
-    // A device that answers with an exception: the status says which.
+    // A device that answers with an exception: the status says which. (The faults are
+    // meant for the read itself, not for the identity probes before it.)
     m_sim.setFault(3, "exception", 1, 1);
-    r = run(QStringList{"read"} + port() + QStringList{"quantrol@3", "controller_status", "--retries", "0"});
+    r = run(QStringList{"read", "--no-identify"} + port() + QStringList{"quantrol@3", "controller_status", "--retries", "0"});
     QCOMPARE(r.code, 1);
     QVERIFY2(r.out.contains("exception 1: Invalid function") && r.out.contains("[exception:1]"), qPrintable(r.out));
 
     // Exception 02 twice for the one entry: the device does not have it.
     m_sim.setFault(3, "exception", 2, 2);
-    r = run(QStringList{"read"} + port() + QStringList{"quantrol@3", "controller_status", "--retries", "0"});
+    r = run(QStringList{"read", "--no-identify"} + port() + QStringList{"quantrol@3", "controller_status", "--retries", "0"});
     QCOMPARE(r.code, 1);
     QVERIFY2(r.out.contains("not available on this device") && r.out.contains("[unavailable]"), qPrintable(r.out));
 }
@@ -299,6 +303,53 @@ void tst_JumoctlLine::reportAsHtmlAndPdf()
     QVERIFY(pdf.open(QIODevice::ReadOnly));
     QVERIFY(pdf.read(5) == "%PDF-");
     QVERIFY(pdf.size() > 10000);
+}
+
+void tst_JumoctlLine::wrongFamilyIsRefused_data()
+{
+    QTest::addColumn<QStringList>("arguments");   // FILE: a quantrol parameter file
+    QTest::newRow("read") << QStringList{"read", "quantrol@4", "controller_setpoint"};
+    QTest::newRow("dump") << QStringList{"dump", "quantrol@4", "--json"};
+    QTest::newRow("write") << QStringList{"write", "quantrol@4", "controller_setpoint=50"};
+    QTest::newRow("broadcast read-back") << QStringList{"write", "quantrol@0", "controller_setpoint=50", "--verify", "3,4"};
+    QTest::newRow("monitor") << QStringList{"monitor", "quantrol@3", "quantrol@4", "--cycles", "1", "--jsonl"};
+    QTest::newRow("backup") << QStringList{"backup", "quantrol@4", "NEW"};
+    QTest::newRow("diff") << QStringList{"diff", "quantrol@4", "FILE"};
+    QTest::newRow("restore") << QStringList{"restore", "--yes", "quantrol@4", "FILE"};
+    QTest::newRow("report") << QStringList{"report", "quantrol@4", "NEW"};
+}
+
+void tst_JumoctlLine::wrongFamilyIsRefused()
+{
+    QFETCH(QStringList, arguments);
+    // A dTRON answers at 4; the command names a Quantrol there.
+    QTemporaryDir dir;
+    const QString file = dir.filePath("quantrol.json");
+    QCOMPARE(run(QStringList{"backup"} + port() + QStringList{"quantrol@3", file}).code, 0);
+    m_sim.line().device(3)->setNumber("controller_setpoint", 77);   // so a restore would write
+    arguments.replaceInStrings(QRegularExpression("^FILE$"), file);
+    arguments.replaceInStrings(QRegularExpression("^NEW$"), dir.filePath("new.out"));
+    const int writesBefore = m_sim.writeFrames();
+    const int auditBefore = int(auditRecords().size());
+    const Run r = run(arguments + port());
+    QCOMPARE(r.code, 3);
+    QVERIFY2(r.err.contains("quantrol@4 refused: the device at address 4 is a dtron300"), qPrintable(r.err));
+    QVERIFY2(r.out.isEmpty(), qPrintable(r.out));   // no value, no difference, no "saved"
+    QCOMPARE(m_sim.writeFrames(), writesBefore);
+    QCOMPARE(auditRecords().size(), auditBefore);
+    QVERIFY(!QFile::exists(dir.filePath("new.out")));
+}
+
+void tst_JumoctlLine::noIdentifyIsAudited()
+{
+    const Run r = run(QStringList{"write", "--no-identify"} + port() + QStringList{"dtron300@4", "setpoint_w3=61"});
+    QCOMPARE(r.code, 0);
+    const QList<QJsonObject> audit = auditRecords();
+    QVERIFY(audit.size() >= 2);
+    QCOMPARE(audit.at(audit.size() - 2).value("device").toString(), QString("dtron300@4"));
+    QCOMPARE(audit.at(audit.size() - 2).value("result").toString(), QString("identity_not_checked"));
+    QCOMPARE(audit.last().value("entry").toString(), QString("setpoint_w3"));
+    QCOMPARE(audit.last().value("result").toString(), QString("confirmed"));
 }
 
 QTEST_GUILESS_MAIN(tst_JumoctlLine)

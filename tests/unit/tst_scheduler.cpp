@@ -5,7 +5,7 @@
 #include "bus/bus.h"
 #include "bus/devicescanner.h"
 #include "commissioning/parameterwritejob.h"
-#include "faketransport.h"
+#include "fakeline.h"
 #include "protocol/familyregistry.h"
 #include "sim/simulateddevice.h"
 
@@ -18,73 +18,6 @@ using namespace jumo;
 using namespace jumo::test;
 
 namespace {
-
-const FamilyRegistry &families()
-{
-    static const FamilyRegistry registry = FamilyRegistry::load({}, true);
-    return registry;
-}
-
-// A line of simulated devices behind a fake transport, on a manual clock.
-struct Line
-{
-    explicit Line(const QList<QPair<QString, int>> &devices, int baud = 19200)
-    {
-        for (const auto &[family, address] : devices)
-            add(families().family(family), quint8(address));
-        bus = std::make_unique<Bus>(&clock, [this](const BusSettings &s) {
-            auto t = std::make_unique<FakeTransport>(&clock, simulated(), s.format);
-            transport = t.get();
-            return t;
-        });
-        BusSettings settings;
-        settings.portName = QStringLiteral("fake");
-        settings.format = *LineFormat::parse(baud, QStringLiteral("8N1"));
-        bus->setSettings(settings);
-    }
-
-    void add(std::shared_ptr<const RegisterMap> map, quint8 address)
-    {
-        sims.push_back(std::make_unique<SimulatedDevice>(std::move(map), address));
-    }
-
-    QHash<quint8, SimulatedDevice *> simulated() const
-    {
-        QHash<quint8, SimulatedDevice *> out;
-        for (const auto &d : sims)
-            out.insert(d->address(), d.get());
-        return out;
-    }
-
-    SimulatedDevice *sim(quint8 address) const { return simulated().value(address); }
-
-    // Runs the line until done() holds or maxMs of line time have passed; Qt's own events
-    // (job results) are processed on the way.
-    bool runUntil(const std::function<bool()> &done, qint64 maxMs)
-    {
-        const qint64 end = clock.nowMs() + maxMs;
-        while (!done()) {
-            QCoreApplication::processEvents();
-            if (done())
-                return true;
-            const qint64 next = clock.nextCallMs();
-            if (next < 0 || next > end)
-                return false;
-            clock.runNext();
-        }
-        return true;
-    }
-    void run(qint64 ms)
-    {
-        runUntil([] { return false; }, ms);
-        clock.advanceTo(clock.nowMs());
-    }
-
-    ManualClock clock;
-    std::vector<std::unique_ptr<SimulatedDevice>> sims;
-    FakeTransport *transport = nullptr;
-    std::unique_ptr<Bus> bus;
-};
 
 // The longest silence towards a slave between its first and last request.
 qint64 longestGap(const FakeTransport &t, quint8 slave, qint64 fromMs, qint64 toMs)

@@ -1,0 +1,13 @@
+// The exit codes of jumoctl, as the README documents them for scripts.
+#pragma once
+
+namespace jumo::exitcode {
+
+constexpr int Ok = 0;
+constexpr int Failed = 1;        // timeouts, exceptions, refused writes, files not written
+constexpr int Usage = 2;         // wrong arguments or input files
+constexpr int WrongDevice = 3;   // the device at the address is not of the named family
+constexpr int Interrupted = 130; // SIGINT (128 + 2)
+constexpr int Terminated = 143;  // SIGTERM (128 + 15)
+
+} // namespace jumo::exitcode
