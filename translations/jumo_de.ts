@@ -100,6 +100,72 @@ Handbuch %6: &quot;%7&quot;</translation>
     </message>
 </context>
 <context>
+    <name>jumo::BroadcastClearance</name>
+    <message>
+        <location filename="../lib/bus/broadcastclearance.cpp" line="+17"/>
+        <source>not broadcast: address %1 answers as %2, and the words of %3 mean something else to it</source>
+        <translation>nicht rundgesendet: an Adresse %1 antwortet ein %2, und die Wörter von %3 bedeuten für ihn etwas anderes</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>not broadcast: a device of no known family answers at address %1</source>
+        <translation>nicht rundgesendet: an Adresse %1 antwortet ein Gerät keiner bekannten Familie</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::BroadcastGate</name>
+    <message>
+        <location filename="../app/cli/broadcastgate.cpp" line="+24"/>
+        <source>For a broadcast: scan addresses %1..%2 first and send only if every device found is of the family; it is read back from them unless --verify names some.</source>
+        <translation>Für einen Broadcast: zuerst die Adressen %1..%2 absuchen und nur senden, wenn jedes gefundene Gerät zur Familie gehört; zurückgelesen wird von ihnen, sofern --verify keine nennt.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>For a broadcast: state that every device on the line is of this family (recorded in the audit log).</source>
+        <translation>Für einen Broadcast: erklären, dass jedes Gerät an der Leitung zu dieser Familie gehört (im Audit-Protokoll vermerkt).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>family</source>
+        <translation>Familie</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>--line-has-only names %1, the broadcast is for %2</source>
+        <translation>--line-has-only nennt %1, der Broadcast gilt %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>a broadcast reaches every device on the line, and the words of %1 mean something else to other families: give --scan-first to scan the line for other devices first, or --line-has-only %1 if you know there are none</source>
+        <translation>ein Broadcast erreicht jedes Gerät an der Leitung, und die Wörter von %1 bedeuten für andere Familien etwas anderes: --scan-first sucht die Leitung zuerst nach anderen Geräten ab, --line-has-only %1 erklärt, dass es keine gibt</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>a broadcast is not answered: name the devices to read it back from with --verify</source>
+        <translation>ein Broadcast wird nicht beantwortet: nennen Sie mit --verify die Geräte, von denen er zurückgelesen wird</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>the user stated that every device on the line is a %1 (--line-has-only %1)</source>
+        <translation>der Benutzer hat erklärt, dass jedes Gerät an der Leitung ein %1 ist (--line-has-only %1)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>scanning address %1 of %2 before the broadcast</source>
+        <translation>durchsuche Adresse %1 von %2 vor dem Broadcast</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>not broadcast: the scan found no %1 at address %2 to read it back from</source>
+        <translation>nicht rundgesendet: die Suche fand an Adresse %2 kein %1 zum Zurücklesen</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>not broadcast: the scan found no %1 on the line</source>
+        <translation>nicht rundgesendet: die Suche fand kein %1 an der Leitung</translation>
+    </message>
+</context>
+<context>
     <name>jumo::Bus</name>
     <message>
         <location filename="../lib/bus/bus.cpp" line="+62"/>
@@ -846,7 +912,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+87"/>
+        <location filename="../app/cli/linecommands.cpp" line="+89"/>
         <source>Serial port, e.g. /dev/ttyUSB0 (required).</source>
         <translation>Serielle Schnittstelle, z. B. /dev/ttyUSB0 (erforderlich).</translation>
     </message>
@@ -1031,12 +1097,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+17"/>
-        <location line="+89"/>
+        <location line="+88"/>
         <source>&apos;%1&apos; is not an entry of %2</source>
         <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
     <message>
-        <location line="-85"/>
+        <location line="-84"/>
         <source>&apos;%1&apos; is write-only</source>
         <translation>&apos;%1&apos; ist nur schreibbar</translation>
     </message>
@@ -1062,7 +1128,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Adressen</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>FAMILY@ADDRESS, or FAMILY@0 for a broadcast.</source>
         <translation>FAMILY@ADDRESS oder FAMILY@0 für einen Broadcast.</translation>
     </message>
@@ -1082,17 +1148,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>--verify erwartet Adressen 1..255, nicht &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>a broadcast is not answered: name the devices to read it back from with --verify</source>
-        <translation>ein Broadcast wird nicht beantwortet: die Geräte, von denen zurückgelesen werden soll, mit --verify angeben</translation>
-    </message>
-    <message>
-        <location line="+10"/>
+        <location line="+14"/>
         <source>&apos;%1&apos; is not ID=VALUE</source>
         <translation>&apos;%1&apos; hat nicht die Form ID=VALUE</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>(was %1)</source>
         <translation>(vorher %1)</translation>
     </message>

@@ -25,7 +25,8 @@ void IdentityGate::addOption(QCommandLineParser &parser)
 
 void IdentityGate::configure(const QCommandLineParser &parser)
 {
-    m_skipped = parser.isSet(QStringLiteral("no-identify"));
+    // optionNames(): what was given; a command without the option (scan) has none of it.
+    m_skipped = parser.optionNames().contains(QStringLiteral("no-identify"));
 }
 
 void IdentityGate::pass(const QList<IdentityCheck::Claim> &claims, const std::function<void()> &next,

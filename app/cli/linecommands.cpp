@@ -3,6 +3,7 @@
 
 #include "commissioning/parametertransfer.h"
 
+#include "broadcastgate.h"
 #include "commandparser.h"
 #include "exitcodes.h"
 #include "identitygate.h"
@@ -52,6 +53,7 @@ LineCommands::LineCommands(const FamilyRegistry &registry, QTextStream &out, QTe
                            EventLog::Open::AppendOnly);
     new WriteAudit(&m_bus, m_audit, this);
     m_identity = new IdentityGate(m_bus, m_registry, m_err, this);
+    m_broadcast = new BroadcastGate(m_bus, m_registry, m_err, this);
 }
 
 LineCommands::~LineCommands() = default;
@@ -337,6 +339,7 @@ std::optional<int> LineCommands::write(const QStringList &arguments)
     parser.addOption({QStringLiteral("verify"),
                       tr("For a broadcast (FAMILY@0): the addresses to read it back from, e.g. 1,2,5."),
                       tr("addresses")});
+    BroadcastGate::addOptions(parser);
     parser.addPositionalArgument(QStringLiteral("device"), tr("FAMILY@ADDRESS, or FAMILY@0 for a broadcast."));
     parser.addPositionalArgument(QStringLiteral("assignment"), tr("ID=VALUE, e.g. input_setpoint=42.5."),
                                  QStringLiteral("id=value..."));
@@ -366,10 +369,8 @@ std::optional<int> LineCommands::write(const QStringList &arguments)
             }
             verifyAddresses << quint8(address);
         }
-        if (verifyAddresses.isEmpty()) {
-            m_err << tr("a broadcast is not answered: name the devices to read it back from with --verify") << Qt::endl;
-            return 2;
-        }
+        if (const auto stop = m_broadcast->configure(parser, target.map, verifyAddresses))
+            return stop;
     }
     for (const QString &assignment : std::as_const(args)) {
         const qsizetype eq = assignment.indexOf(QLatin1Char('='));
@@ -392,11 +393,14 @@ std::optional<int> LineCommands::write(const QStringList &arguments)
     if (const auto stop = openLine(parser))
         return stop;
     m_identity->recordSkipsIn(m_audit);
-    QList<IdentityCheck::Claim> checked;
-    for (quint8 address : broadcast ? verifyAddresses : QList<quint8>{target.address})
-        checked << IdentityCheck::Claim{address, target.map};
-    m_identity->pass(checked, [this, target, broadcast, verifyAddresses] { startWrites(target, broadcast, verifyAddresses); },
-                     [this](int code) { finish(code); });
+    if (broadcast)
+        m_broadcast->pass(
+                *m_identity, m_audit,
+                [this, target](const QList<quint8> &readBack) { startWrites(target, true, readBack); },
+                [this](int code) { finish(code); });
+    else
+        m_identity->pass({{target.address, target.map}}, [this, target] { startWrites(target, false, {}); },
+                         [this](int code) { finish(code); });
     return std::nullopt;
 }
 

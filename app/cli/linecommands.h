@@ -17,6 +17,7 @@
 namespace jumo {
 
 class CommandParser;
+class BroadcastGate;
 class DeviceScanner;
 class EventLog;
 class FamilyRegistry;
@@ -77,6 +78,7 @@ private:
     std::unique_ptr<DeviceScanner> m_scanner;
     EventLog *m_audit = nullptr;
     IdentityGate *m_identity = nullptr;
+    BroadcastGate *m_broadcast = nullptr;
     QList<Target> m_targets;
     QStringList m_ids;
     QList<QPair<QString, QString>> m_pendingWrites;

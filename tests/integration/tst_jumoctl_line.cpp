@@ -34,6 +34,7 @@ private slots:
     void wrongFamilyIsRefused_data();
     void wrongFamilyIsRefused();
     void noIdentifyIsAudited();
+    void broadcastNeedsALineOfOneFamily();
 
 private:
     QTemporaryDir m_logs;
@@ -311,7 +312,8 @@ void tst_JumoctlLine::wrongFamilyIsRefused_data()
     QTest::newRow("read") << QStringList{"read", "quantrol@4", "controller_setpoint"};
     QTest::newRow("dump") << QStringList{"dump", "quantrol@4", "--json"};
     QTest::newRow("write") << QStringList{"write", "quantrol@4", "controller_setpoint=50"};
-    QTest::newRow("broadcast read-back") << QStringList{"write", "quantrol@0", "controller_setpoint=50", "--verify", "3,4"};
+    QTest::newRow("broadcast read-back") << QStringList{"write", "quantrol@0", "controller_setpoint=50", "--verify", "3,4",
+                                                    "--line-has-only", "quantrol"};
     QTest::newRow("monitor") << QStringList{"monitor", "quantrol@3", "quantrol@4", "--cycles", "1", "--jsonl"};
     QTest::newRow("backup") << QStringList{"backup", "quantrol@4", "NEW"};
     QTest::newRow("diff") << QStringList{"diff", "quantrol@4", "FILE"};
@@ -336,7 +338,8 @@ void tst_JumoctlLine::wrongFamilyIsRefused()
     QVERIFY2(r.err.contains("quantrol@4 refused: the device at address 4 is a dtron300"), qPrintable(r.err));
     QVERIFY2(r.out.isEmpty(), qPrintable(r.out));   // no value, no difference, no "saved"
     QCOMPARE(m_sim.writeFrames(), writesBefore);
-    QCOMPARE(auditRecords().size(), auditBefore);
+    if (!arguments.contains("--line-has-only"))   // an acknowledgement is recorded as given
+        QCOMPARE(auditRecords().size(), auditBefore);
     QVERIFY(!QFile::exists(dir.filePath("new.out")));
 }
 
@@ -350,6 +353,38 @@ void tst_JumoctlLine::noIdentifyIsAudited()
     QCOMPARE(audit.at(audit.size() - 2).value("result").toString(), QString("identity_not_checked"));
     QCOMPARE(audit.last().value("entry").toString(), QString("setpoint_w3"));
     QCOMPARE(audit.last().value("result").toString(), QString("confirmed"));
+}
+
+void tst_JumoctlLine::broadcastNeedsALineOfOneFamily()
+{
+    // dTRON's segment_setpoint_3 is at the IPC 300's load_voltage_limit (0x0099).
+    SimulatedDevice *ipc = m_sim.line().device(1);
+    const double limit = ipc->number("load_voltage_limit");
+    const int writesBefore = m_sim.writeFrames();
+    const QStringList broadcast = QStringList{"write"} + port() + QStringList{"dtron300@0", "segment_setpoint_3=500"};
+
+    Run r = run(broadcast + QStringList{"--verify", "4"});
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains("give --scan-first") && r.err.contains("--line-has-only dtron300"), qPrintable(r.err));
+    r = run(broadcast + QStringList{"--verify", "4", "--line-has-only", "ipc300"});
+    QCOMPARE(r.code, 2);
+    // The scan of the line meets the IPC 300 at address 1 and stops there.
+    r = run(broadcast + QStringList{"--scan-first"});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains("not broadcast: address 1 answers as ipc300"), qPrintable(r.err));
+    QCOMPARE(m_sim.writeFrames(), writesBefore);
+    QCOMPARE(ipc->number("load_voltage_limit"), limit);
+
+    // The user's word is taken, and recorded: then the frame goes out, once.
+    r = run(broadcast + QStringList{"--verify", "4", "--line-has-only", "dtron300"});
+    QCOMPARE(r.code, 0);
+    QCOMPARE(m_sim.writeFrames(), writesBefore + 1);
+    const QList<QJsonObject> audit = auditRecords();
+    QCOMPARE(audit.at(audit.size() - 2).value("device").toString(), QString("dtron300@0"));
+    QCOMPARE(audit.at(audit.size() - 2).value("result").toString(), QString("broadcast_acknowledged"));
+    QCOMPARE(audit.last().value("result").toString(), QString("confirmed"));
+    QCOMPARE(ipc->number("load_voltage_limit"), 500.0);   // what the acknowledgement was wrong about
+    ipc->setNumber("load_voltage_limit", limit);
 }
 
 QTEST_GUILESS_MAIN(tst_JumoctlLine)

@@ -21,9 +21,9 @@ private slots:
     void familiesWithTheSameProbesConfirmEachOther();
 
 private:
-    static QList<IdentityCheck::Finding> check(Line &line, const QList<IdentityCheck::Claim> &claims,
-                                               Job::Result *result = nullptr,
-                                               const QList<std::shared_ptr<const RegisterMap>> &known = families().families());
+    static QList<IdentityCheck::Finding> check(
+            Line &line, const QList<IdentityCheck::Claim> &claims, Job::Result *result = nullptr,
+            const QList<std::shared_ptr<const RegisterMap>> &known = families().families());
 };
 
 QList<IdentityCheck::Finding> tst_IdentityCheck::check(Line &line, const QList<IdentityCheck::Claim> &claims,
