@@ -145,12 +145,12 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>ein Broadcast wird nicht beantwortet: nennen Sie mit --verify die Geräte, von denen er zurückgelesen wird</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>the user stated that every device on the line is a %1 (--line-has-only %1)</source>
         <translation>der Benutzer hat erklärt, dass jedes Gerät an der Leitung ein %1 ist (--line-has-only %1)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>scanning address %1 of %2 before the broadcast</source>
         <translation>durchsuche Adresse %1 von %2 vor dem Broadcast</translation>
     </message>
@@ -357,7 +357,7 @@ Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 3; --no-identify
     <message>
         <location line="+11"/>
         <location line="+1"/>
-        <location filename="../ui/reportwriter.cpp" line="+20"/>
+        <location filename="../ui/reportwriter.cpp" line="+26"/>
         <source>Commissioning report</source>
         <translation>Inbetriebnahmebericht</translation>
     </message>
@@ -461,16 +461,6 @@ Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 3; --no-identify
         <location line="+0"/>
         <source>Result</source>
         <translation>Ergebnis</translation>
-    </message>
-    <message>
-        <location filename="../ui/reportwriter.cpp" line="+9"/>
-        <source>cannot write %1</source>
-        <translation>%1 kann nicht geschrieben werden</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>cannot write %1: %2</source>
-        <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
 </context>
 <context>
@@ -803,14 +793,17 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::EventLog</name>
     <message>
-        <location filename="../lib/logs/eventlog.cpp" line="+24"/>
-        <source>cannot read %1: %2</source>
-        <translation>%1 kann nicht gelesen werden: %2</translation>
+        <location filename="../lib/logs/eventlog.cpp" line="+29"/>
+        <source>cannot read %1</source>
+        <translation>%1 kann nicht gelesen werden</translation>
     </message>
     <message>
-        <location line="+42"/>
-        <location line="+12"/>
-        <location line="+14"/>
+        <location line="+46"/>
+        <source>cannot write %1</source>
+        <translation>%1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -845,6 +838,14 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
 </context>
 <context>
+    <name>jumo::FileSaver</name>
+    <message>
+        <location filename="../lib/protocol/filesaver.cpp" line="+25"/>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
     <name>jumo::IdentityCheck</name>
     <message>
         <location filename="../lib/bus/identitycheck.cpp" line="+62"/>
@@ -875,7 +876,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Der genannten Familie vertrauen, ohne die Identitätsregister des Geräts zu prüfen (für Geräte, deren Identität nicht lesbar ist; das Audit-Protokoll vermerkt es).</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>the family was not checked against the device (--no-identify)</source>
         <translation>die Familie wurde nicht am Gerät geprüft (--no-identify)</translation>
     </message>
@@ -912,7 +913,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+89"/>
+        <location filename="../app/cli/linecommands.cpp" line="+56"/>
+        <source>the audit log did not take a record: %1</source>
+        <translation>das Audit-Protokoll hat einen Eintrag nicht aufgenommen: %1</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>Serial port, e.g. /dev/ttyUSB0 (required).</source>
         <translation>Serielle Schnittstelle, z. B. /dev/ttyUSB0 (erforderlich).</translation>
     </message>
@@ -949,12 +955,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <message>
         <location line="+0"/>
         <location line="+2"/>
-        <location line="+367"/>
+        <location line="+371"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-367"/>
+        <location line="-371"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
@@ -965,12 +971,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+367"/>
+        <location line="+371"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-365"/>
+        <location line="-369"/>
         <source>Never write to the line (control-room mode).</source>
         <translation>Nie auf die Leitung schreiben (Leitwarten-Modus).</translation>
     </message>
@@ -1010,7 +1016,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Geräteadresse %1 liegt außerhalb von 1..255</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+22"/>
         <source>Finds devices on the line and names their family.</source>
         <translation>Sucht Geräte an der Leitung und benennt ihre Gerätefamilie.</translation>
     </message>
@@ -1085,13 +1091,13 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+349"/>
+        <location line="+351"/>
         <location line="+130"/>
         <source>FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="-477"/>
+        <location line="-479"/>
         <source>Entry ids.</source>
         <translation>Kennungen der Einträge.</translation>
     </message>
@@ -1153,7 +1159,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>&apos;%1&apos; hat nicht die Form ID=VALUE</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+46"/>
         <source>(was %1)</source>
         <translation>(vorher %1)</translation>
     </message>
@@ -1267,12 +1273,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Parameterdatei (JSON).</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>cannot read %1: %2</source>
-        <translation>%1 kann nicht gelesen werden: %2</translation>
+        <location line="+10"/>
+        <source>cannot read %1</source>
+        <translation>%1 kann nicht gelesen werden</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+16"/>
         <source>the files are for different or unknown families: %1, %2</source>
         <translation>die Dateien gehören zu verschiedenen oder unbekannten Gerätefamilien: %1, %2</translation>
     </message>
@@ -1292,13 +1298,8 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <source>these parameters could not be read, nothing was done: %1</source>
         <translation>diese Parameter konnten nicht gelesen werden, es wurde nichts getan: %1</translation>
     </message>
-    <message>
-        <location line="+9"/>
-        <source>cannot write %1: %2</source>
-        <translation>%1 kann nicht geschrieben werden: %2</translation>
-    </message>
     <message numerus="yes">
-        <location line="+4"/>
+        <location line="+13"/>
         <source>%n parameter(s) of %1 saved to %2</source>
         <translation>
             <numerusform>%n Parameter von %1 in %2 gesichert</numerusform>
@@ -1339,7 +1340,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>%1 hat nicht geantwortet: kein Bericht geschrieben</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+8"/>
+        <source>no report written: its writes of today are unknown: %1</source>
+        <translation>kein Bericht geschrieben: die Schreibvorgänge von heute sind unbekannt: %1</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>report of %1 written to %2</source>
         <translation>Bericht von %1 in %2 geschrieben</translation>
     </message>
@@ -1499,12 +1505,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+193"/>
+        <location line="+206"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-188"/>
+        <location line="-201"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -1542,6 +1548,11 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <location line="+36"/>
         <source>READ-ONLY</source>
         <translation>NUR LESEN</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Not logged: %1</source>
+        <translation>Nicht protokolliert: %1</translation>
     </message>
     <message>
         <location line="+9"/>
@@ -2317,7 +2328,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ParametersDialog</name>
     <message>
-        <location filename="../ui/parametersdialog.cpp" line="+21"/>
+        <location filename="../ui/parametersdialog.cpp" line="+22"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -2400,12 +2411,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+51"/>
-        <source>Cannot read %1: %2</source>
-        <translation>%1 kann nicht gelesen werden: %2</translation>
+        <location line="+52"/>
+        <source>Cannot read %1</source>
+        <translation>%1 kann nicht gelesen werden</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+26"/>
         <location line="+29"/>
         <source>Reading all parameters...</source>
         <translation>Alle Parameter werden gelesen...</translation>
@@ -2415,13 +2426,8 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <source>Not saved: these could not be read: %1</source>
         <translation>Nicht gesichert: diese konnten nicht gelesen werden: %1</translation>
     </message>
-    <message>
-        <location line="+5"/>
-        <source>Cannot write %1: %2</source>
-        <translation>%1 kann nicht geschrieben werden: %2</translation>
-    </message>
     <message numerus="yes">
-        <location line="+3"/>
+        <location line="+8"/>
         <source>%n parameter(s) saved to %1</source>
         <translation>
             <numerusform>%n Parameter in %1 gesichert</numerusform>
@@ -2604,6 +2610,24 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+1"/>
         <source>Section</source>
         <translation>Abschnitt</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::RegularFile</name>
+    <message>
+        <location filename="../lib/protocol/regularfile.cpp" line="+32"/>
+        <source>%1: not a regular file</source>
+        <translation>%1: keine reguläre Datei</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>%1: too big (%2 bytes, at most %3)</source>
+        <translation>%1: zu groß (%2 Bytes, höchstens %3)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: too big (more than %2 bytes)</source>
+        <translation>%1: zu groß (mehr als %2 Bytes)</translation>
     </message>
 </context>
 <context>
@@ -2792,11 +2816,6 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="-3"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
-    </message>
-    <message>
-        <location line="+101"/>
-        <source>cannot write %1: %2</source>
-        <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
 </context>
 <context>

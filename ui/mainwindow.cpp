@@ -145,6 +145,19 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
         mode->setStyleSheet(QStringLiteral("background: #fff3c0; color: #604000; padding: 0 6px; font-weight: bold"));
         statusBar()->addPermanentWidget(mode);
     }
+    // A record the logs could not keep is no passing error: it stays until the end.
+    auto *logFailure = new QLabel(this);
+    logFailure->setObjectName(QStringLiteral("logFailureStatus"));
+    logFailure->setStyleSheet(QStringLiteral("background: #ffd6d6; color: #600000; padding: 0 6px"));
+    logFailure->hide();
+    statusBar()->addPermanentWidget(logFailure);
+    for (EventLog *log : {m_journalLog, m_auditLog}) {
+        connect(log, &EventLog::writeFailed, logFailure, [logFailure](const QString &message) {
+            logFailure->setText(tr("Not logged: %1").arg(message));
+            logFailure->setToolTip(message);
+            logFailure->show();
+        });
+    }
     connect(&m_bus, &Bus::stateChanged, this, &MainWindow::onStateChanged);
     connect(&m_bus, &Bus::lineError, this, [this](const QString &message) { m_lastError = message; });
     connect(&m_bus, &Bus::traffic, this, [this](const TrafficRecord &record) {

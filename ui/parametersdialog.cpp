@@ -1,7 +1,9 @@
 #include "parametersdialog.h"
 
+#include "protocol/filesaver.h"
+#include "protocol/regularfile.h"
+
 #include <QCoreApplication>
-#include <QFile>
 #include <QFileDialog>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -9,7 +11,6 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -100,13 +101,13 @@ void ParametersDialog::setBusy(bool busy)
 
 std::optional<ParameterSet> ParametersDialog::load(const QString &path)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        setStatus(tr("Cannot read %1: %2").arg(path, file.errorString()));
+    QString error;
+    const std::optional<QByteArray> json = RegularFile::read(path, RegularFile::defaultLimit, &error);
+    if (!json) {
+        setStatus(tr("Cannot read %1").arg(error));
         return std::nullopt;
     }
-    QString error;
-    std::optional<ParameterSet> set = ParameterSet::fromJson(file.readAll(), &error);
+    std::optional<ParameterSet> set = ParameterSet::fromJson(*json, &error);
     if (!set)
         setStatus(error);
     return set;
@@ -137,9 +138,9 @@ void ParametersDialog::backup(const QString &path)
             setStatus(tr("Not saved: these could not be read: %1").arg(failed.join(QStringLiteral(", "))));
             return;
         }
-        QSaveFile file(path);
-        if (!file.open(QIODevice::WriteOnly) || file.write(set.toJson()) < 0 || !file.commit()) {
-            setStatus(tr("Cannot write %1: %2").arg(path, file.errorString()));
+        QString error;
+        if (!FileSaver::save(path, set.toJson(), &error)) {
+            setStatus(error);
             return;
         }
         setStatus(tr("%n parameter(s) saved to %1", nullptr, int(set.values.size())).arg(path));

@@ -1,20 +1,26 @@
 #include "reportwriter.h"
 
+#include "protocol/filesaver.h"
+
+#include <QBuffer>
 #include <QCoreApplication>
-#include <QFile>
-#include <QFileInfo>
 #include <QPageLayout>
 #include <QPageSize>
 #include <QPdfWriter>
-#include <QSaveFile>
 #include <QTextDocument>
 
 namespace jumo {
 
 bool writeReport(const QString &html, const QString &path, QString *error)
 {
-    if (path.endsWith(QLatin1String(".pdf"), Qt::CaseInsensitive)) {
-        QPdfWriter pdf(path);
+    if (!path.endsWith(QLatin1String(".pdf"), Qt::CaseInsensitive))
+        return FileSaver::save(path, html.toUtf8(), error);
+    // The PDF is made in memory and saved as a whole: QPdfWriter reports no errors, and a
+    // report must not half-replace an earlier one.
+    QBuffer buffer;
+    buffer.open(QIODevice::WriteOnly);
+    {
+        QPdfWriter pdf(&buffer);
         pdf.setPageSize(QPageSize(QPageSize::A4));
         pdf.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
         pdf.setTitle(QCoreApplication::translate("jumo::CommissioningReport", "Commissioning report"));
@@ -23,21 +29,8 @@ bool writeReport(const QString &html, const QString &path, QString *error)
         QTextDocument document;
         document.setHtml(html);
         document.print(&pdf);   // lays the text out in points on the writer's pages
-        // QPdfWriter reports no errors: check that something was written.
-        if (!QFile::exists(path) || QFileInfo(path).size() == 0) {
-            if (error)
-                *error = QCoreApplication::translate("jumo::CommissioningReport", "cannot write %1").arg(path);
-            return false;
-        }
-        return true;
     }
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(html.toUtf8()) < 0 || !file.commit()) {
-        if (error)
-            *error = QCoreApplication::translate("jumo::CommissioningReport", "cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    return FileSaver::save(path, buffer.data(), error);
 }
 
 } // namespace jumo

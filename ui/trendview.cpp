@@ -1,6 +1,7 @@
 #include "trendview.h"
 
 #include "models/livevaluesmodel.h"
+#include "protocol/filesaver.h"
 
 #include <QChart>
 #include <QChartView>
@@ -8,7 +9,6 @@
 #include <QComboBox>
 #include <QDateTime>
 #include <QDateTimeAxis>
-#include <QFile>
 #include <QFileDialog>
 #include <QHBoxLayout>
 #include <QLineSeries>
@@ -148,13 +148,8 @@ void TrendView::rescale()
 
 bool TrendView::exportCsv(const QString &path, QString *error) const
 {
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
-        if (error)
-            *error = tr("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    QTextStream out(&file);
+    QString csv;
+    QTextStream out(&csv);
     out << "time,entry,value,unit\n";
     for (auto it = m_series.cbegin(); it != m_series.cend(); ++it) {
         const QString id = m_values->entryId(it.key());
@@ -163,7 +158,8 @@ bool TrendView::exportCsv(const QString &path, QString *error) const
             out << QDateTime::fromMSecsSinceEpoch(qint64(p.x()), Qt::UTC).toString(Qt::ISODateWithMs) << ',' << id << ','
                 << QString::number(p.y(), 'g', 7) << ',' << unit << '\n';
     }
-    return true;
+    out.flush();
+    return FileSaver::save(path, csv.toUtf8(), error);
 }
 
 } // namespace jumo

@@ -11,12 +11,12 @@
 #include "bus/devicescanner.h"
 #include "logs/eventlog.h"
 #include "protocol/familyregistry.h"
+#include "protocol/filesaver.h"
+#include "protocol/regularfile.h"
 #include "reportwriter.h"
 #include "logs/writeaudit.h"
 
 #include <QDateTime>
-#include <QFile>
-#include <QSaveFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -52,6 +52,10 @@ LineCommands::LineCommands(const FamilyRegistry &registry, QTextStream &out, QTe
     m_audit = new EventLog(EventLog::defaultFolder() + QStringLiteral("/write-audit.jsonl"), this,
                            EventLog::Open::AppendOnly);
     new WriteAudit(&m_bus, m_audit, this);
+    connect(m_audit, &EventLog::writeFailed, this, [this](const QString &message) {
+        m_err << tr("the audit log did not take a record: %1").arg(message) << Qt::endl;
+        m_auditFailed = true;
+    });
     m_identity = new IdentityGate(m_bus, m_registry, m_err, this);
     m_broadcast = new BroadcastGate(m_bus, m_registry, m_err, this);
 }
@@ -176,6 +180,8 @@ void LineCommands::finish(int code)
     if (m_finished)
         return;
     m_finished = true;
+    if (m_auditFailed && code == exitcode::Ok)
+        code = exitcode::Failed;
     m_out.flush();
     m_err.flush();
     m_bus.close();
@@ -629,13 +635,13 @@ std::optional<int> LineCommands::parameters(const QString &command, const QStrin
     const QString path = parser.positionalArguments().at(1);
 
     auto load = [this](const QString &file) -> std::optional<ParameterSet> {
-        QFile f(file);
-        if (!f.open(QIODevice::ReadOnly)) {
-            m_err << tr("cannot read %1: %2").arg(file, f.errorString()) << Qt::endl;
+        QString error;
+        const std::optional<QByteArray> json = RegularFile::read(file, RegularFile::defaultLimit, &error);
+        if (!json) {
+            m_err << tr("cannot read %1").arg(error) << Qt::endl;
             return std::nullopt;
         }
-        QString error;
-        std::optional<ParameterSet> set = ParameterSet::fromJson(f.readAll(), &error);
+        std::optional<ParameterSet> set = ParameterSet::fromJson(*json, &error);
         if (!set)
             m_err << file << ": " << error << Qt::endl;
         return set;
@@ -688,10 +694,10 @@ std::optional<int> LineCommands::parameters(const QString &command, const QStrin
         }
         const RegisterMap &map = *m_targets.first().map;
         if (backup) {
-            QSaveFile out(path);
-            if (!out.open(QIODevice::WriteOnly) || out.write(device.toJson()) < 0 || !out.commit()) {
-                m_err << tr("cannot write %1: %2").arg(path, out.errorString()) << Qt::endl;
-                finish(1);
+            QString error;
+            if (!FileSaver::save(path, device.toJson(), &error)) {
+                m_err << error << Qt::endl;
+                finish(exitcode::Failed);
                 return;
             }
             m_out << tr("%n parameter(s) of %1 saved to %2", nullptr, int(device.values.size())).arg(first, path)
@@ -784,6 +790,11 @@ void LineCommands::startReport(const QString &path)
         CommissioningReport report(*t.map, t.address, [this, id](const QString &entry) { return m_bus.entryState(id, entry); });
         // The command line has no session: its writes of today stand in for one.
         const EventLog audit(EventLog::defaultFolder() + QStringLiteral("/write-audit.jsonl"));
+        if (!audit.lastError().isEmpty()) {
+            m_err << tr("no report written: its writes of today are unknown: %1").arg(audit.lastError()) << Qt::endl;
+            finish(exitcode::Failed);
+            return;
+        }
         const QString device = deviceName(*t.map, t.address);
         const QDateTime since = QDateTime(QDate::currentDate(), QTime(0, 0));
         QList<QJsonObject> writes;

@@ -89,6 +89,7 @@ private:
     bool m_csv = false;
     int m_cyclesWanted = 0;
     bool m_finished = false;
+    bool m_auditFailed = false;
 };
 
 } // namespace jumo

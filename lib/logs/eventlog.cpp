@@ -1,13 +1,17 @@
 #include "protocol/csv.h"
 #include "logs/eventlog.h"
+#include "protocol/filesaver.h"
+#include "protocol/regularfile.h"
 
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QLoggingCategory>
-#include <QSaveFile>
 #include <QStandardPaths>
-#include <QTextStream>
+
+#include <cerrno>
+#include <cstring>
+#include <unistd.h>
 
 Q_LOGGING_CATEGORY(lcLog, "jumo.log", QtWarningMsg)
 
@@ -17,11 +21,12 @@ EventLog::EventLog(const QString &path, QObject *parent, Open mode) : QObject(pa
 {
     if (m_path.isEmpty() || mode == Open::AppendOnly)
         return;
-    QFile file(m_path);
-    if (!file.exists())
+    QFile file;
+    if (!QFile::exists(m_path))
         return;
-    if (!file.open(QIODevice::ReadOnly)) {
-        m_lastError = tr("cannot read %1: %2").arg(m_path, file.errorString());
+    QString reason;
+    if (!RegularFile::openForReading(file, m_path, &reason)) {
+        m_lastError = tr("cannot read %1").arg(reason);
         return;
     }
     int line = 0;
@@ -47,52 +52,53 @@ QString EventLog::defaultFolder()
     return folder;
 }
 
-void EventLog::append(QJsonObject record)
+bool EventLog::append(QJsonObject record)
 {
     if (!record.contains(QLatin1String("time")))
         record.insert(QStringLiteral("time"), QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs));
     m_records << record;
-    if (!m_path.isEmpty()) {
-        QDir().mkpath(QFileInfo(m_path).absolutePath());
-        QFile file(m_path);
-        if (file.open(QIODevice::ReadWrite | QIODevice::Append)) {
-            // A line cut by a crash must not swallow the next record: start a new line.
-            QByteArray line = QJsonDocument(record).toJson(QJsonDocument::Compact) + '\n';
-            if (file.size() > 0 && file.seek(file.size() - 1) && file.peek(1) != "\n")
-                line.prepend('\n');
-            file.write(line);
-            file.flush();
-        } else {
-            m_lastError = tr("cannot write %1: %2").arg(m_path, file.errorString());
-            qCWarning(lcLog).noquote() << m_lastError;
-        }
-    }
+    const bool written = m_path.isEmpty() || writeLine(QJsonDocument(record).toJson(QJsonDocument::Compact));
     emit appended(record);
+    if (!written) {
+        qCDebug(lcLog).noquote() << m_lastError;   // the caller reports it
+        emit writeFailed(m_lastError);
+    }
+    return written;
+}
+
+bool EventLog::writeLine(QByteArray line)
+{
+    QDir().mkpath(QFileInfo(m_path).absolutePath());
+    QFile file;
+    QString reason;
+    if (!RegularFile::openForAppending(file, m_path, &reason)) {
+        m_lastError = tr("cannot write %1").arg(reason);
+        return false;
+    }
+    // A line cut by a crash must not swallow the next record: start a new line.
+    line += '\n';
+    if (file.size() > 0 && file.seek(file.size() - 1) && file.peek(1) != "\n")
+        line.prepend('\n');
+    // Flushed and synced: a record the caller was told about must survive a power cut.
+    if (file.write(line) != line.size() || !file.flush() || ::fsync(file.handle()) != 0) {
+        m_lastError = tr("cannot write %1: %2")
+                              .arg(m_path, file.error() != QFileDevice::NoError ? file.errorString()
+                                                                                 : QString::fromLocal8Bit(std::strerror(errno)));
+        return false;
+    }
+    return true;
 }
 
 bool EventLog::exportCsv(const QString &path, const QStringList &columns, QString *error) const
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Text)) {
-        if (error)
-            *error = tr("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    QTextStream out(&file);
-    out << columns.join(QLatin1Char(',')) << '\n';
+    QByteArray csv = columns.join(QLatin1Char(',')).toUtf8() + '\n';
     for (const QJsonObject &r : m_records) {
         QStringList row;
         for (const QString &c : columns)
             row << csvField(r.value(c).toVariant().toString());
-        out << row.join(QLatin1Char(',')) << '\n';
+        csv += row.join(QLatin1Char(',')).toUtf8() + '\n';
     }
-    out.flush();
-    if (!file.commit()) {
-        if (error)
-            *error = tr("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    return FileSaver::save(path, csv, error);
 }
 
 } // namespace jumo

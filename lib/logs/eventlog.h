@@ -30,14 +30,19 @@ public:
     QString lastError() const { return m_lastError; }
     const QList<QJsonObject> &records() const { return m_records; }
 
-    void append(QJsonObject record);
+    // Kept in memory in any case; false (and writeFailed) when the file could not take
+    // it: the caller must not pretend it was logged.
+    bool append(QJsonObject record);
     // CSV with the given columns (keys of the records), one row per record.
     bool exportCsv(const QString &path, const QStringList &columns, QString *error = nullptr) const;
 
 signals:
     void appended(const QJsonObject &record);
+    void writeFailed(const QString &message);
 
 private:
+    bool writeLine(QByteArray line);
+
     QString m_path;
     QString m_lastError;
     QList<QJsonObject> m_records;

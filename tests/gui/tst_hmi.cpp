@@ -38,10 +38,11 @@ private slots:
     void errorValueShowsAsOverrange();
     void journalAndAuditSurviveARestart();
     void parametersBackupCompareRestore();
+    void lostAuditRecordShowsInTheStatusBar();
 
 private:
     // A window connected to the line with the IPC 300 at address 1 on its page.
-    std::unique_ptr<MainWindow> connectedWindow(bool readOnly);
+    std::unique_ptr<MainWindow> connectedWindow(bool readOnly, const QString &logFolder = QString());
 
     QTemporaryDir m_dir;
     TestLine m_line;
@@ -54,12 +55,12 @@ void tst_Hmi::initTestCase()
     QVERIFY(m_sim.startOneOfEachFamily(m_line.deviceEnd()));
 }
 
-std::unique_ptr<MainWindow> tst_Hmi::connectedWindow(bool readOnly)
+std::unique_ptr<MainWindow> tst_Hmi::connectedWindow(bool readOnly, const QString &logFolder)
 {
     MainWindow::Options options;
     options.readOnly = readOnly;
     options.settingsFile = m_dir.filePath(QStringLiteral("settings-%1.ini").arg(readOnly));
-    options.logFolder = m_dir.filePath(QStringLiteral("logs"));
+    options.logFolder = logFolder.isEmpty() ? m_dir.filePath(QStringLiteral("logs")) : logFolder;
     auto window = std::make_unique<MainWindow>(families(), options);
     window->connectionBar()->setSettings(m_line.masterEnd(), 19200, "8N1");
     if (!window->connectLine())
@@ -250,6 +251,23 @@ void tst_Hmi::parametersBackupCompareRestore()
     QCOMPARE(ipc->number("max_alarm_limit"), limit);
     dialog.compare(file);
     QTRY_VERIFY_WITH_TIMEOUT(dialog.status().contains("matches the file"), 20000);
+}
+
+void tst_Hmi::lostAuditRecordShowsInTheStatusBar()
+{
+    const QString logs = m_dir.filePath(QStringLiteral("broken-logs"));
+    QVERIFY(QDir().mkpath(logs + QStringLiteral("/write-audit.jsonl")));   // a folder where the log goes
+    auto window = connectedWindow(false, logs);
+    QVERIFY(window);
+    auto *status = window->findChild<QLabel *>("logFailureStatus");
+    QVERIFY(status);
+    QVERIFY(!status->isVisible());
+    ControlRow *row = window->devicePage("ipc300", 1)->controls()->row("input_setpoint");
+    row->setInputValue("36.5");
+    QTest::mouseClick(row->findChild<QPushButton *>("write_input_setpoint"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(row->stateText().startsWith("Confirmed"), 20000);
+    QTRY_VERIFY(status->isVisible());
+    QVERIFY2(status->text().contains("write-audit.jsonl: Is a directory"), qPrintable(status->text()));
 }
 
 QTEST_MAIN(tst_Hmi)

@@ -9,7 +9,10 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
+#include <QScopeGuard>
 #include <QTest>
+
+#include <sys/stat.h>
 
 using namespace jumo;
 using namespace jumo::test;
@@ -35,6 +38,8 @@ private slots:
     void wrongFamilyIsRefused();
     void noIdentifyIsAudited();
     void broadcastNeedsALineOfOneFamily();
+    void fullDiskKeepsThePreviousFiles();
+    void auditFailureIsAFailure();
 
 private:
     QTemporaryDir m_logs;
@@ -385,6 +390,85 @@ void tst_JumoctlLine::broadcastNeedsALineOfOneFamily()
     QCOMPARE(audit.last().value("result").toString(), QString("confirmed"));
     QCOMPARE(ipc->number("load_voltage_limit"), 500.0);   // what the acknowledgement was wrong about
     ipc->setNumber("load_voltage_limit", limit);
+}
+
+void tst_JumoctlLine::fullDiskKeepsThePreviousFiles()
+{
+    QTemporaryDir dir;
+    const QString disk = dir.filePath("disk");
+    QVERIFY(QDir().mkpath(disk));
+    QProcess mount;
+    mount.start("mount", {"-t", "tmpfs", "-o", "size=256k", "tmpfs", disk});
+    if (!mount.waitForFinished(10000) || mount.exitStatus() != QProcess::NormalExit || mount.exitCode() != 0)
+        QSKIP("no small tmpfs can be mounted here (needs root); tst_files makes a disk full with a file size limit");
+    const auto unmount = qScopeGuard([&] { QProcess::execute("umount", {disk}); });
+    const QString backup = QDir(disk).filePath("dtron.json");
+    const QString html = QDir(disk).filePath("report.html");
+    const QString pdf = QDir(disk).filePath("report.pdf");
+    auto pdfReport = [&] {
+        QProcess p;   // PDF needs QtGui: the real executable makes it
+        QSignalSpy finished(&p, &QProcess::finished);
+        p.start(QStringLiteral(JUMOCTL_PATH), QStringList{"report"} + port() + QStringList{"dtron300@4", pdf});
+        // The simulator lives in this process: keep its event loop running meanwhile.
+        const bool ended = finished.wait(60000);
+        return std::make_pair(ended ? p.exitCode() : -1, QString::fromLocal8Bit(p.readAllStandardError()));
+    };
+    QCOMPARE(run(QStringList{"backup"} + port() + QStringList{"dtron300@4", backup}).code, 0);
+    QCOMPARE(run(QStringList{"report"} + port() + QStringList{"dtron300@4", html}).code, 0);
+    QCOMPARE(pdfReport().first, 0);
+    QHash<QString, QByteArray> before;
+    for (const QString &path : {backup, html, pdf}) {
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        before.insert(path, f.readAll());
+        QVERIFY(!before[path].isEmpty());
+    }
+    // Fill the disk to the last byte.
+    QFile filler(QDir(disk).filePath("filler"));
+    QVERIFY(filler.open(QIODevice::WriteOnly | QIODevice::Unbuffered));
+    while (filler.write(QByteArray(512, 'x')) > 0) { }
+    while (filler.write("x", 1) > 0) { }
+    filler.close();
+    m_sim.line().device(4)->setNumber("setpoint_w2", 99);   // the new files would differ
+
+    Run r = run(QStringList{"backup"} + port() + QStringList{"dtron300@4", backup});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains("cannot write " + backup + ": No space left on device"), qPrintable(r.err));
+    QVERIFY2(!r.out.contains("saved"), qPrintable(r.out));
+    r = run(QStringList{"report"} + port() + QStringList{"dtron300@4", html});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains("cannot write " + html + ": No space left on device"), qPrintable(r.err));
+    const auto [pdfCode, pdfError] = pdfReport();
+    QCOMPARE(pdfCode, 1);
+    QVERIFY2(pdfError.contains("cannot write " + pdf + ": No space left on device"), qPrintable(pdfError));
+    for (const QString &path : {backup, html, pdf}) {
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QVERIFY2(f.readAll() == before[path], qPrintable(path));   // byte for byte
+    }
+}
+
+void tst_JumoctlLine::auditFailureIsAFailure()
+{
+    QTemporaryDir logs;
+    qputenv("JUMO_LOG_DIR", logs.path().toUtf8());
+    const auto restore = qScopeGuard([&] { qputenv("JUMO_LOG_DIR", m_logs.path().toUtf8()); });
+    const QString audit = logs.filePath("write-audit.jsonl");
+
+    // The log is a folder: the write is done and confirmed, but its record is lost.
+    QVERIFY(QDir().mkpath(audit));
+    Run r = run(QStringList{"write"} + port() + QStringList{"dtron300@4", "setpoint_w3=62"});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.out.contains("confirmed"), qPrintable(r.out));
+    QVERIFY2(r.err.contains("the audit log did not take a record: cannot write " + audit), qPrintable(r.err));
+
+    // The log is a FIFO: a report must not wait for a writer, nor leave out today's writes.
+    QVERIFY(QDir(audit).removeRecursively());
+    QVERIFY(::mkfifo(QFile::encodeName(audit).constData(), 0600) == 0);
+    r = run(QStringList{"report"} + port() + QStringList{"dtron300@4", logs.filePath("report.html")});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains("not a regular file"), qPrintable(r.err));
+    QVERIFY(!QFile::exists(logs.filePath("report.html")));
 }
 
 QTEST_GUILESS_MAIN(tst_JumoctlLine)

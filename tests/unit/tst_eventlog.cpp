@@ -3,8 +3,11 @@
 #include "logs/eventlog.h"
 
 #include <QFile>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <sys/stat.h>
 
 using namespace jumo;
 
@@ -17,6 +20,9 @@ private slots:
     void aCutLineIsSkipped();
     void csvExportQuotes();
     void appendOnlyDoesNotRead();
+    void failedAppendIsReported_data();
+    void failedAppendIsReported();
+    void fifoLogIsNotWaitedFor();
 };
 
 void tst_EventLog::recordsSurviveARestart()
@@ -74,6 +80,48 @@ void tst_EventLog::appendOnlyDoesNotRead()
     QCOMPARE(appendOnly.records().size(), 0);
     appendOnly.append(QJsonObject{{"entry", "b"}});
     QCOMPARE(EventLog(path).records().size(), 2);
+}
+
+void tst_EventLog::failedAppendIsReported_data()
+{
+    QTest::addColumn<QString>("kind");
+    QTest::addColumn<QString>("reason");
+    QTest::newRow("the log is a folder") << "folder" << "Is a directory";
+    QTest::newRow("the log folder is a file") << "file" << "Not a directory";
+    QTest::newRow("the log is /dev/full") << "full" << "not a regular file";
+}
+
+void tst_EventLog::failedAppendIsReported()
+{
+    QFETCH(QString, kind);
+    QFETCH(QString, reason);
+    QTemporaryDir dir;
+    QString path = dir.filePath("write-audit.jsonl");
+    if (kind == "folder") {
+        QVERIFY(QDir().mkpath(path));
+    } else if (kind == "file") {
+        QFile blocker(dir.filePath("logs"));
+        QVERIFY(blocker.open(QIODevice::WriteOnly));
+        path = dir.filePath("logs/write-audit.jsonl");
+    } else {
+        QVERIFY(QFile::link("/dev/full", path));
+    }
+    EventLog log(path, nullptr, EventLog::Open::AppendOnly);
+    QSignalSpy failed(&log, &EventLog::writeFailed);
+    QVERIFY(!log.append(QJsonObject{{"device", "ipc300@1"}, {"result", "confirmed"}}));
+    QCOMPARE(failed.count(), 1);
+    QVERIFY2(failed.at(0).at(0).toString().startsWith("cannot write " + path), qPrintable(failed.at(0).at(0).toString()));
+    QVERIFY2(log.lastError().contains(reason), qPrintable(log.lastError()));
+}
+
+void tst_EventLog::fifoLogIsNotWaitedFor()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath("write-audit.jsonl");
+    QVERIFY(::mkfifo(QFile::encodeName(path).constData(), 0600) == 0);
+    const EventLog log(path);   // a plain open() would wait for a writer
+    QVERIFY(log.records().isEmpty());
+    QVERIFY2(log.lastError().contains("not a regular file"), qPrintable(log.lastError()));
 }
 
 QTEST_GUILESS_MAIN(tst_EventLog)

@@ -1,0 +1,90 @@
+#include "protocol/regularfile.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace jumo {
+
+namespace {
+
+QString systemError(int code)
+{
+    return QString::fromLocal8Bit(std::strerror(code));
+}
+
+// Opens with O_NONBLOCK, so that a FIFO does not wait for a writer, looks at what was
+// opened, and hands a regular file on to QFile in blocking mode.
+bool openRegular(QFile &file, const QString &path, int flags, QIODevice::OpenMode mode, QString *error)
+{
+    const int fd = ::open(QFile::encodeName(path).constData(), flags | O_NONBLOCK | O_CLOEXEC | O_NOCTTY, 0644);
+    if (fd < 0) {
+        if (error)
+            *error = QStringLiteral("%1: %2").arg(path, systemError(errno));
+        return false;
+    }
+    struct stat info = {};
+    if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
+        ::close(fd);
+        if (error)
+            *error = RegularFile::tr("%1: not a regular file").arg(path);
+        return false;
+    }
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+    if (!file.open(fd, mode, QFileDevice::AutoCloseHandle)) {
+        ::close(fd);
+        if (error)
+            *error = QStringLiteral("%1: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+bool RegularFile::openForReading(QFile &file, const QString &path, QString *error)
+{
+    if (path.startsWith(QLatin1Char(':'))) {
+        file.setFileName(path);
+        if (file.open(QIODevice::ReadOnly))
+            return true;
+        if (error)
+            *error = QStringLiteral("%1: %2").arg(path, file.errorString());
+        return false;
+    }
+    return openRegular(file, path, O_RDONLY, QIODevice::ReadOnly, error);
+}
+
+bool RegularFile::openForAppending(QFile &file, const QString &path, QString *error)
+{
+    return openRegular(file, path, O_RDWR | O_APPEND | O_CREAT, QIODevice::ReadWrite | QIODevice::Append, error);
+}
+
+std::optional<QByteArray> RegularFile::read(const QString &path, qint64 maxBytes, QString *error)
+{
+    QFile file;
+    if (!openForReading(file, path, error))
+        return std::nullopt;
+    if (file.size() > maxBytes) {
+        if (error)
+            *error = tr("%1: too big (%2 bytes, at most %3)").arg(path).arg(file.size()).arg(maxBytes);
+        return std::nullopt;
+    }
+    // It may grow while it is read: never more than the limit.
+    QByteArray data = file.read(maxBytes + 1);
+    if (data.size() > maxBytes) {
+        if (error)
+            *error = tr("%1: too big (more than %2 bytes)").arg(path).arg(maxBytes);
+        return std::nullopt;
+    }
+    if (file.error() != QFileDevice::NoError) {
+        if (error)
+            *error = QStringLiteral("%1: %2").arg(path, file.errorString());
+        return std::nullopt;
+    }
+    return data;
+}
+
+} // namespace jumo
