@@ -838,6 +838,14 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
 </context>
 <context>
+    <name>jumo::FamilyRegistry</name>
+    <message>
+        <location filename="../lib/protocol/familyregistry.cpp" line="+48"/>
+        <source>%1: family &apos;%2&apos; is defined by each of these files, so none of them is used</source>
+        <translation>%1: die Familie &apos;%2&apos; ist in jeder dieser Dateien definiert, daher wird keine davon verwendet</translation>
+    </message>
+</context>
+<context>
     <name>jumo::FileSaver</name>
     <message>
         <location filename="../lib/protocol/filesaver.cpp" line="+25"/>
@@ -1867,17 +1875,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::MapLoader</name>
     <message>
-        <location filename="../lib/protocol/maploader.cpp" line="+47"/>
-        <source>malformed JSON at byte %1: %2</source>
-        <translation>fehlerhaftes JSON bei Byte %1: %2</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>the top level must be a JSON object</source>
-        <translation>die oberste Ebene muss ein JSON-Objekt sein</translation>
-    </message>
-    <message>
-        <location line="+31"/>
+        <location filename="../lib/protocol/jsonfieldreader.cpp" line="+52"/>
         <source>unknown key &apos;%1&apos;</source>
         <translation>unbekannter Schlüssel &apos;%1&apos;</translation>
     </message>
@@ -1888,46 +1886,99 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+12"/>
-        <source>&apos;%1&apos; must be a whole number</source>
-        <translation>&apos;%1&apos; muss eine ganze Zahl sein</translation>
+        <source>&apos;%1&apos; must be a string, not %2</source>
+        <translation>&apos;%1&apos; muss ein Text sein, nicht %2</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+13"/>
+        <source>&apos;%1&apos; must be an array of strings</source>
+        <translation>&apos;%1&apos; muss ein Array von Texten sein</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&apos;%1&apos; must contain only strings, not %2</source>
+        <translation>&apos;%1&apos; darf nur Texte enthalten, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>&apos;%1&apos; must be true or false, not %2</source>
+        <translation>&apos;%1&apos; muss true oder false sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>&apos;%1&apos; must be a whole number %2..%3, not %4</source>
+        <translation>&apos;%1&apos; muss eine ganze Zahl %2..%3 sein, nicht %4</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>&apos;%1&apos; must be a number, not %2</source>
+        <translation>&apos;%1&apos; muss eine Zahl sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1&apos; must be a number %2..%3, not %4</source>
+        <translation>&apos;%1&apos; muss eine Zahl %2..%3 sein, nicht %4</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>&apos;%1&apos; may contain only %2, not %3</source>
+        <translation>&apos;%1&apos; darf nur %2 enthalten, nicht %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1&apos; lists %2 twice</source>
+        <translation>&apos;%1&apos; nennt %2 zweimal</translation>
+    </message>
+    <message>
+        <location line="-39"/>
         <source>&apos;%1&apos; is missing</source>
         <translation>&apos;%1&apos; fehlt</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <source>&apos;%1&apos; must be a number</source>
-        <translation>&apos;%1&apos; muss eine Zahl sein</translation>
-    </message>
-    <message>
-        <location line="+10"/>
+        <location line="+50"/>
         <source>&apos;%1&apos; must be 0x followed by 4 hex digits, not &apos;%2&apos;</source>
         <translation>&apos;%1&apos; muss 0x gefolgt von 4 Hexziffern sein, nicht &apos;%2&apos;</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="-22"/>
         <source>&apos;%1&apos; must be a non-empty array of numbers</source>
         <translation>&apos;%1&apos; muss ein nicht leeres Array von Zahlen sein</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>&apos;%1&apos; must contain only numbers</source>
-        <translation>&apos;%1&apos; darf nur Zahlen enthalten</translation>
+        <location filename="../lib/protocol/overlapcheck.cpp" line="+37"/>
+        <source>&apos;%1&apos; (%2..%3)</source>
+        <translation>&apos;%1&apos; (%2..%3)</translation>
     </message>
     <message>
-        <location line="+16"/>
-        <source>&apos;format&apos; must be 1</source>
-        <translation>&apos;format&apos; muss 1 sein</translation>
+        <location line="+28"/>
+        <source>words %1..%2 overlap entry %3</source>
+        <translation>Wörter %1..%2 überschneiden sich mit Eintrag %3</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source> and %n more entries</source>
+        <translation>
+            <numerusform> und %n weiteren Eintrag</numerusform>
+            <numerusform> und %n weiteren Einträgen</numerusform>
+        </translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../lib/protocol/maploader.cpp" line="+35"/>
+        <source>malformed JSON at byte %1: %2</source>
+        <translation>fehlerhaftes JSON bei Byte %1: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the top level must be a JSON object</source>
+        <translation>die oberste Ebene muss ein JSON-Objekt sein</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>family id &apos;%1&apos; must be lower case letters, digits and &apos;_&apos;</source>
         <translation>Familienkennung &apos;%1&apos; darf nur aus Kleinbuchstaben, Ziffern und &apos;_&apos; bestehen</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>&apos;entries&apos; must be a non-empty array</source>
         <translation>&apos;entries&apos; muss ein nicht leeres Array sein</translation>
     </message>
@@ -1942,22 +1993,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;protocol&apos; muss ein Objekt sein</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>&apos;maxReadWords&apos; must be 1..127, not %1</source>
-        <translation>&apos;maxReadWords&apos; muss 1..127 sein, nicht %1</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>&apos;maxWriteWords&apos; must be 1..127, not %1</source>
-        <translation>&apos;maxWriteWords&apos; muss 1..127 sein, nicht %1</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+17"/>
         <source>&apos;%1&apos; must be ABCD, CDAB, BADC or DCBA, not &apos;%2&apos;</source>
         <translation>&apos;%1&apos; muss ABCD, CDAB, BADC oder DCBA sein, nicht &apos;%2&apos;</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>unknown data format &apos;%1&apos;</source>
         <translation>unbekanntes Datenformat &apos;%1&apos;</translation>
     </message>
@@ -1968,13 +2009,18 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+4"/>
-        <source>address range %1..%2 is not within 1..255</source>
-        <translation>Adressbereich %1..%2 liegt nicht innerhalb von 1..255</translation>
+        <source>address range %1..%2 is empty</source>
+        <translation>Adressbereich %1..%2 ist leer</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>&apos;processingTimeMaxMs&apos; is missing or negative</source>
-        <translation>&apos;processingTimeMaxMs&apos; fehlt oder ist negativ</translation>
+        <location line="+3"/>
+        <source>&apos;alwaysAnswersAddress&apos; must be 1..247 or 255, not %1</source>
+        <translation>&apos;alwaysAnswersAddress&apos; muss 1..247 oder 255 sein, nicht %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&apos;processingTimeMaxMs&apos; is missing</source>
+        <translation>&apos;processingTimeMaxMs&apos; fehlt</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -1982,14 +2028,19 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;identify&apos; muss ein nicht leeres Array von Prüfabfragen sein</translation>
     </message>
     <message>
-        <location line="+32"/>
-        <source>a probe needs exactly one of textContains, maskNonZero, answers, exception</source>
-        <translation>eine Prüfabfrage benötigt genau eines von textContains, maskNonZero, answers, exception</translation>
+        <location line="+7"/>
+        <source>a probe must be an object</source>
+        <translation>eine Probe muss ein Objekt sein</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>&apos;words&apos; must be 1..125</source>
-        <translation>&apos;words&apos; muss 1..125 sein</translation>
+        <location line="+22"/>
+        <source>&apos;answers&apos; can only be true</source>
+        <translation>&apos;answers&apos; kann nur true sein</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>a probe needs exactly one of textContains, maskNonZero, answers, exception</source>
+        <translation>eine Prüfabfrage benötigt genau eines von textContains, maskNonZero, answers, exception</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -1997,7 +2048,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;exceptions&apos; muss ein Objekt sein, das Codes ihren Bedeutungen zuordnet</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>&apos;%1&apos; is not an exception code with a text</source>
         <translation>&apos;%1&apos; ist kein Exception-Code mit Text</translation>
     </message>
@@ -2023,13 +2074,13 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+1"/>
-        <location line="+287"/>
-        <location line="+21"/>
+        <location line="+294"/>
+        <location filename="../lib/protocol/overlapcheck.cpp" line="+1"/>
         <source>entry &apos;%1&apos; (%2)</source>
         <translation>Eintrag &apos;%1&apos; (%2)</translation>
     </message>
     <message>
-        <location line="-298"/>
+        <location line="-284"/>
         <source>id must be lower case letters, digits and &apos;_&apos;</source>
         <translation>die Kennung darf nur aus Kleinbuchstaben, Ziffern und &apos;_&apos; bestehen</translation>
     </message>
@@ -2059,14 +2110,14 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>ein Text benötigt &apos;bytes&apos; (mindestens 2, einschließlich des NUL)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>&apos;bytes&apos; is only for texts</source>
         <translation>&apos;bytes&apos; ist nur für Texte zulässig</translation>
     </message>
     <message>
         <location line="+5"/>
-        <source>&apos;words&apos; is only for reserved blocks and must be at least 1</source>
-        <translation>&apos;words&apos; ist nur für reservierte Blöcke zulässig und muss mindestens 1 sein</translation>
+        <source>&apos;words&apos; is only for reserved blocks</source>
+        <translation>&apos;words&apos; gilt nur für reservierte Blöcke</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -2084,17 +2135,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>ein Bedienelement benötigt einen schreibbaren Eintrag</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>&apos;action&apos; must be true or false</source>
-        <translation>&apos;action&apos; muss true oder false sein</translation>
+        <location line="+5"/>
+        <source>an entry cannot be an alias of itself</source>
+        <translation>ein Eintrag kann kein Alias seiner selbst sein</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>an action needs a writable entry</source>
         <translation>eine Aktion braucht einen beschreibbaren Eintrag</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
         <source>&apos;values&apos; is only for enums</source>
         <translation>&apos;values&apos; ist nur für Enums zulässig</translation>
     </message>
@@ -2119,17 +2170,22 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>ein Bitfeld benötigt &apos;bits&apos;</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+7"/>
+        <source>a bit must be an object</source>
+        <translation>ein Bit muss ein Objekt sein</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>%1, bit %2</source>
         <translation>%1, Bit %2</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+14"/>
         <source>bit number must be 0..15</source>
         <translation>Bitnummer muss 0..15 sein</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>bit field of width %1 does not fit in 16 bits</source>
         <translation>Bitfeld der Breite %1 passt nicht in 16 Bit</translation>
     </message>
@@ -2224,15 +2280,13 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <source>runs past address 0xFFFF</source>
         <translation>reicht über Adresse 0xFFFF hinaus</translation>
     </message>
-    <message>
-        <location line="+14"/>
-        <source>words %1..%2 overlap entry &apos;%3&apos; (%4..%5)</source>
-        <translation>Wörter %1..%2 überschneiden sich mit Eintrag &apos;%3&apos; (%4..%5)</translation>
-    </message>
-    <message>
-        <location line="+15"/>
-        <source>%1: cannot open: %2</source>
-        <translation>%1: kann nicht geöffnet werden: %2</translation>
+    <message numerus="yes">
+        <location filename="../lib/protocol/overlapcheck.cpp" line="+14"/>
+        <source>%n more group(s) of overlapping entries not listed</source>
+        <translation>
+            <numerusform>%n weitere Gruppe überlappender Einträge nicht aufgeführt</numerusform>
+            <numerusform>%n weitere Gruppen überlappender Einträge nicht aufgeführt</numerusform>
+        </translation>
     </message>
 </context>
 <context>

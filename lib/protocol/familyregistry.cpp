@@ -2,7 +2,9 @@
 
 #include "protocol/maploader.h"
 
+#include <QCoreApplication>
 #include <QDir>
+#include <QMap>
 #include <QStandardPaths>
 
 #include <algorithm>
@@ -17,19 +19,37 @@ FamilyRegistry FamilyRegistry::loadDefault()
 FamilyRegistry FamilyRegistry::load(const QStringList &folders, bool withBuiltins)
 {
     FamilyRegistry registry;
-    QStringList paths;
     if (withBuiltins) {
         const QDir builtins(QStringLiteral(":/maps"));
         for (const QString &name : builtins.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name))
-            paths << builtins.filePath(name);
+            registry.add(builtins.filePath(name));
     }
+    // User files: two of one family leave it open which the user meant, so neither is
+    // taken (the built-in family, if any, stays).
+    QMap<QString, QList<std::shared_ptr<const RegisterMap>>> userMaps;
     for (const QString &folder : folders) {
         const QDir dir(folder);
-        for (const QString &name : dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name))
-            paths << dir.filePath(name);
+        for (const QString &name : dir.entryList({QStringLiteral("*.json")}, QDir::Files | QDir::System, QDir::Name)) {
+            MapLoadResult result = MapLoader::loadFile(dir.filePath(name));
+            if (result.ok())
+                userMaps[result.map->family] << std::make_shared<const RegisterMap>(std::move(*result.map));
+            else
+                registry.m_errors << result.errors;
+        }
     }
-    for (const QString &path : std::as_const(paths))
-        registry.add(path);
+    for (auto it = userMaps.cbegin(); it != userMaps.cend(); ++it) {
+        if (it->size() == 1) {
+            registry.put(it->first());
+            continue;
+        }
+        QStringList files;
+        for (const auto &map : *it)
+            files << map->sourceFile;
+        registry.m_errors << QCoreApplication::translate("jumo::FamilyRegistry",
+                                                         "%1: family '%2' is defined by each of these files, so none "
+                                                         "of them is used")
+                                     .arg(files.join(QStringLiteral(", ")), it.key());
+    }
     std::stable_sort(registry.m_families.begin(), registry.m_families.end(),
                      [](const auto &a, const auto &b) { return a->family < b->family; });
     return registry;
@@ -54,14 +74,18 @@ void FamilyRegistry::add(const QString &path)
         m_errors << result.errors;
         return;
     }
-    auto map = std::make_shared<const RegisterMap>(std::move(*result.map));
-    // A later file of the same family (a user folder) replaces the earlier one.
+    put(std::make_shared<const RegisterMap>(std::move(*result.map)));
+}
+
+void FamilyRegistry::put(std::shared_ptr<const RegisterMap> map)
+{
+    // A user file of a built-in family replaces it.
     auto it = std::find_if(m_families.begin(), m_families.end(),
                            [&](const auto &m) { return m->family == map->family; });
     if (it != m_families.end())
-        *it = map;
+        *it = std::move(map);
     else
-        m_families << map;
+        m_families << std::move(map);
 }
 
 std::shared_ptr<const RegisterMap> FamilyRegistry::family(const QString &id) const

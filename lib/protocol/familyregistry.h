@@ -14,7 +14,8 @@ class FamilyRegistry
 {
 public:
     // Loads the built-in maps, then the user folders ($JUMO_MAP_PATH, the application
-    // data folder + "/maps"); a user file replaces a built-in family of the same id.
+    // data folder + "/maps"); a user file replaces a built-in family of the same id, and
+    // two user files of one family are both refused.
     static FamilyRegistry loadDefault();
     // Loads only the given folders (and the built-ins when asked): used by tests.
     static FamilyRegistry load(const QStringList &folders, bool withBuiltins);
@@ -29,6 +30,7 @@ public:
 
 private:
     void add(const QString &path);
+    void put(std::shared_ptr<const RegisterMap> map);
 
     QList<std::shared_ptr<const RegisterMap>> m_families;
     QStringList m_errors;

@@ -1,16 +1,16 @@
 #include "protocol/maploader.h"
 
+#include "protocol/jsonfieldreader.h"
+#include "protocol/overlapcheck.h"
+#include "protocol/regularfile.h"
+
 #include <QCoreApplication>
-#include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLoggingCategory>
-#include <QRegularExpression>
 #include <QSet>
-
-#include <cmath>
 
 Q_LOGGING_CATEGORY(lcMap, "jumo.map", QtWarningMsg)
 
@@ -18,26 +18,14 @@ namespace jumo {
 
 namespace {
 
-const QRegularExpression &idPattern()
-{
-    static const QRegularExpression pattern(QStringLiteral("^[a-z][a-z0-9_]*$"));
-    return pattern;
-}
-
-const QRegularExpression &addressPattern()
-{
-    static const QRegularExpression pattern(QStringLiteral("^0x[0-9A-Fa-f]{4}$"));
-    return pattern;
-}
-
 // Walks one JSON document and collects every problem instead of stopping at the first,
 // so a user fixing a file sees all that is wrong in one go.
-class MapParser
+class MapParser : private JsonFieldReader
 {
     Q_DECLARE_TR_FUNCTIONS(jumo::MapLoader)
 
 public:
-    explicit MapParser(QString source) : m_source(std::move(source)) { }
+    explicit MapParser(QString source) : JsonFieldReader(std::move(source)) { }
 
     MapLoadResult parse(const QByteArray &json)
     {
@@ -55,103 +43,15 @@ public:
     }
 
 private:
-    QString m_source;
-    QStringList m_errors;
-
-    void fail(const QString &where, const QString &problem)
-    {
-        m_errors << (where.isEmpty() ? QStringLiteral("%1: %2").arg(m_source, problem)
-                                     : QStringLiteral("%1: %2: %3").arg(m_source, where, problem));
-    }
-
     MapLoadResult finish(std::optional<RegisterMap> map)
     {
         MapLoadResult result;
-        result.errors = m_errors;
-        if (m_errors.isEmpty())
+        result.errors = errors();
+        if (errors().isEmpty())
             result.map = std::move(map);
-        for (const QString &e : std::as_const(m_errors))
+        for (const QString &e : errors())
             qCDebug(lcMap).noquote() << e;
         return result;
-    }
-
-    void checkKeys(const QJsonObject &object, const QStringList &allowed, const QString &where)
-    {
-        for (auto it = object.begin(); it != object.end(); ++it) {
-            if (!allowed.contains(it.key()))
-                fail(where, tr("unknown key '%1'").arg(it.key()));
-        }
-    }
-
-    QString requireString(const QJsonObject &object, const QString &key, const QString &where)
-    {
-        const QJsonValue v = object.value(key);
-        if (!v.isString() || v.toString().isEmpty()) {
-            fail(where, tr("'%1' is missing or not a non-empty string").arg(key));
-            return {};
-        }
-        return v.toString();
-    }
-
-    std::optional<int> optionalInt(const QJsonObject &object, const QString &key, const QString &where)
-    {
-        const QJsonValue v = object.value(key);
-        if (v.isUndefined() || v.isNull())
-            return std::nullopt;
-        if (!v.isDouble() || std::floor(v.toDouble()) != v.toDouble()) {
-            fail(where, tr("'%1' must be a whole number").arg(key));
-            return std::nullopt;
-        }
-        return v.toInt();
-    }
-
-    int requireInt(const QJsonObject &object, const QString &key, const QString &where)
-    {
-        if (!object.contains(key)) {
-            fail(where, tr("'%1' is missing").arg(key));
-            return 0;
-        }
-        return optionalInt(object, key, where).value_or(0);
-    }
-
-    std::optional<double> optionalNumber(const QJsonObject &object, const QString &key, const QString &where)
-    {
-        const QJsonValue v = object.value(key);
-        if (v.isUndefined() || v.isNull())
-            return std::nullopt;
-        if (!v.isDouble()) {
-            fail(where, tr("'%1' must be a number").arg(key));
-            return std::nullopt;
-        }
-        return v.toDouble();
-    }
-
-    std::optional<quint16> parseHex16(const QJsonValue &value, const QString &key, const QString &where)
-    {
-        const QString text = value.toString();
-        if (!value.isString() || !addressPattern().match(text).hasMatch()) {
-            fail(where, tr("'%1' must be 0x followed by 4 hex digits, not '%2'")
-                            .arg(key, value.isString() ? text : QJsonDocument(QJsonArray{value}).toJson(QJsonDocument::Compact)));
-            return std::nullopt;
-        }
-        return quint16(text.mid(2).toUInt(nullptr, 16));
-    }
-
-    QList<int> intList(const QJsonObject &object, const QString &key, const QString &where)
-    {
-        QList<int> out;
-        const QJsonValue v = object.value(key);
-        if (!v.isArray() || v.toArray().isEmpty()) {
-            fail(where, tr("'%1' must be a non-empty array of numbers").arg(key));
-            return out;
-        }
-        for (const QJsonValue &item : v.toArray()) {
-            if (!item.isDouble())
-                fail(where, tr("'%1' must contain only numbers").arg(key));
-            else
-                out << item.toInt();
-        }
-        return out;
     }
 
     std::optional<RegisterMap> parseMap(const QJsonObject &root)
@@ -161,18 +61,16 @@ private:
                          "entries"},
                   QString());
         RegisterMap map;
-        map.sourceFile = m_source;
-        if (root.value("format").toInt(-1) != 1)
-            fail(QString(), tr("'format' must be 1"));
+        map.sourceFile = source();
+        requireInt(root, "format", 1, 1, QString());
         map.family = requireString(root, "family", QString());
-        if (!map.family.isEmpty() && !idPattern().match(map.family).hasMatch())
+        if (!map.family.isEmpty() && !isId(map.family))
             fail(QString(), tr("family id '%1' must be lower case letters, digits and '_'").arg(map.family));
         map.name = requireString(root, "name", QString());
-        map.manual = root.value("manual").toString();
-        map.description = root.value("description").toString();
-        for (const QJsonValue &m : root.value("models").toArray())
-            map.models << m.toString();
-        map.scanPriority = optionalInt(root, "scanPriority", QString()).value_or(100);
+        map.manual = optionalString(root, "manual", QString());
+        map.description = optionalString(root, "description", QString());
+        map.models = stringList(root, "models", QString());
+        map.scanPriority = optionalInt(root, "scanPriority", 0, 1000, QString()).value_or(100);
 
         parseProtocol(root.value("protocol"), map.protocol);
         parseIdentify(root.value("identify"), map.identify);
@@ -197,11 +95,11 @@ private:
             parseSimulation(root.value("simulation"), map);
         for (const char *key : {"overview", "identity"}) {
             QStringList &ids = QLatin1String(key) == QLatin1String("overview") ? map.overview : map.identity;
-            for (const QJsonValue &v : root.value(key).toArray()) {
-                if (const RegisterEntry *e = map.entry(v.toString()); e && e->isReadable())
-                    ids << v.toString();
+            for (const QString &id : stringList(root, QLatin1String(key), QString())) {
+                if (const RegisterEntry *e = map.entry(id); e && e->isReadable())
+                    ids << id;
                 else
-                    fail(QLatin1String(key), tr("'%1' is not a readable entry").arg(v.toString()));
+                    fail(QLatin1String(key), tr("'%1' is not a readable entry").arg(id));
             }
         }
         return map;
@@ -220,16 +118,12 @@ private:
                       "alwaysAnswersAddress", "broadcast", "processingTimeMaxMs", "turnaroundMs",
                       "minResponseTimeMaxMs", "busErrorTimeoutMs", "notes"},
                   where);
-        p.readFunctions = intList(o, "readFunctions", where);
-        p.writeFunctions = intList(o, "writeFunctions", where);
-        p.maxReadWords = requireInt(o, "maxReadWords", where);
-        p.maxWriteWords = requireInt(o, "maxWriteWords", where);
-        if (p.maxReadWords < 1 || p.maxReadWords > 127)
-            fail(where, tr("'maxReadWords' must be 1..127, not %1").arg(p.maxReadWords));
-        if (p.maxWriteWords < 1 || p.maxWriteWords > 127)
-            fail(where, tr("'maxWriteWords' must be 1..127, not %1").arg(p.maxWriteWords));
+        p.readFunctions = intList(o, "readFunctions", {3, 4}, where);
+        p.writeFunctions = intList(o, "writeFunctions", {6, 16}, where);
+        p.maxReadWords = requireInt(o, "maxReadWords", 1, 127, where);
+        p.maxWriteWords = requireInt(o, "maxWriteWords", 1, 127, where);
         for (const char *key : {"floatWordOrder", "int32WordOrder"}) {
-            const QString name = o.value(key).toString();
+            const QString name = optionalString(o, QLatin1String(key), where);
             const std::optional<WordOrder> order = wordOrderFromName(name);
             if (!order)
                 fail(where, tr("'%1' must be ABCD, CDAB, BADC or DCBA, not '%2'").arg(key, name));
@@ -238,28 +132,33 @@ private:
             else
                 p.int32WordOrder = *order;
         }
-        p.baudRates = intList(o, "baudRates", where);
-        for (const QJsonValue &f : o.value("dataFormats").toArray()) {
+        // The standard rates of a serial line; anything else is a typo.
+        p.baudRates = intList(o, "baudRates", {1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200}, where);
+        for (const QString &f : stringList(o, "dataFormats", where)) {
             static const QStringList known{"8N1", "8E1", "8O1", "8N2"};
-            if (!known.contains(f.toString()))
-                fail(where, tr("unknown data format '%1'").arg(f.toString()));
-            p.dataFormats << f.toString();
+            if (!known.contains(f))
+                fail(where, tr("unknown data format '%1'").arg(f));
+            p.dataFormats << f;
         }
         if (p.dataFormats.isEmpty())
             fail(where, tr("'dataFormats' must list at least one format"));
-        p.addressMin = requireInt(o, "addressMin", where);
-        p.addressMax = requireInt(o, "addressMax", where);
-        if (p.addressMin < 1 || p.addressMax > 255 || p.addressMin > p.addressMax)
-            fail(where, tr("address range %1..%2 is not within 1..255").arg(p.addressMin).arg(p.addressMax));
-        p.alwaysAnswersAddress = optionalInt(o, "alwaysAnswersAddress", where);
-        p.broadcast = o.value("broadcast").toBool(false);
-        p.processingTimeMaxMs = optionalNumber(o, "processingTimeMaxMs", where).value_or(-1);
-        if (p.processingTimeMaxMs < 0)
-            fail(where, tr("'processingTimeMaxMs' is missing or negative"));
-        p.turnaroundMs = optionalNumber(o, "turnaroundMs", where).value_or(0);
-        p.minResponseTimeMaxMs = optionalNumber(o, "minResponseTimeMaxMs", where).value_or(0);
-        p.busErrorTimeoutMs = optionalInt(o, "busErrorTimeoutMs", where);
-        p.notes = o.value("notes").toString();
+        p.addressMin = requireInt(o, "addressMin", 1, 255, where);
+        p.addressMax = requireInt(o, "addressMax", 1, 255, where);
+        if (p.addressMin > p.addressMax)
+            fail(where, tr("address range %1..%2 is empty").arg(p.addressMin).arg(p.addressMax));
+        p.alwaysAnswersAddress = optionalInt(o, "alwaysAnswersAddress", 1, 255, where);
+        if (p.alwaysAnswersAddress && *p.alwaysAnswersAddress > 247 && *p.alwaysAnswersAddress != 255)
+            fail(where, tr("'alwaysAnswersAddress' must be 1..247 or 255, not %1").arg(*p.alwaysAnswersAddress));
+        p.broadcast = optionalBool(o, "broadcast", false, where);
+        // Bounds the manuals make plausible: a device that needs longer is broken, and a
+        // typo here would make every timeout on the line minutes long.
+        p.processingTimeMaxMs = optionalNumber(o, "processingTimeMaxMs", where, 0, 1000).value_or(-1);
+        if (!o.contains("processingTimeMaxMs"))
+            fail(where, tr("'processingTimeMaxMs' is missing"));
+        p.turnaroundMs = optionalNumber(o, "turnaroundMs", where, 0, 100).value_or(0);
+        p.minResponseTimeMaxMs = optionalNumber(o, "minResponseTimeMaxMs", where, 0, 1000).value_or(0);
+        p.busErrorTimeoutMs = optionalInt(o, "busErrorTimeoutMs", 100, 3600000, where);
+        p.notes = optionalString(o, "notes", where);
     }
 
     void parseIdentify(const QJsonValue &value, QList<IdentifyProbe> &probes)
@@ -271,15 +170,19 @@ private:
         int index = 0;
         for (const QJsonValue &v : value.toArray()) {
             const QString where = QStringLiteral("identify[%1]").arg(index++);
+            if (!v.isObject()) {
+                fail(where, tr("a probe must be an object"));
+                continue;
+            }
             const QJsonObject o = v.toObject();
             checkKeys(o, {"address", "words", "textContains", "maskNonZero", "answers", "exception"}, where);
             IdentifyProbe probe;
             probe.address = parseHex16(o.value("address"), "address", where).value_or(0);
-            probe.words = o.value("words").toInt(1);
+            probe.words = optionalInt(o, "words", 1, 125, where).value_or(1);
             int tests = 0;
             if (o.contains("textContains")) {
                 probe.test = ProbeTest::TextContains;
-                probe.text = o.value("textContains").toString();
+                probe.text = requireString(o, "textContains", where);
                 ++tests;
             }
             if (o.contains("maskNonZero")) {
@@ -289,17 +192,17 @@ private:
             }
             if (o.contains("answers")) {
                 probe.test = ProbeTest::Answers;
+                if (o.value("answers") != QJsonValue(true))
+                    fail(where, tr("'answers' can only be true"));
                 ++tests;
             }
             if (o.contains("exception")) {
                 probe.test = ProbeTest::Exception;
-                probe.exceptionCode = o.value("exception").toInt();
+                probe.exceptionCode = requireInt(o, "exception", 1, 255, where);
                 ++tests;
             }
             if (tests != 1)
                 fail(where, tr("a probe needs exactly one of textContains, maskNonZero, answers, exception"));
-            if (probe.words < 1 || probe.words > 125)
-                fail(where, tr("'words' must be 1..125"));
             probes << probe;
         }
     }
@@ -312,12 +215,11 @@ private:
         }
         const QJsonObject o = value.toObject();
         for (auto it = o.begin(); it != o.end(); ++it) {
-            bool ok = false;
-            const int code = it.key().toInt(&ok);
-            if (!ok || code < 1 || code > 255 || !it.value().isString())
+            const std::optional<int> code = decimalKey(it.key(), 1, 255);
+            if (!code || !it.value().isString())
                 fail(QStringLiteral("exceptions"), tr("'%1' is not an exception code with a text").arg(it.key()));
             else
-                exceptions.insert(code, it.value().toString());
+                exceptions.insert(*code, it.value().toString());
         }
     }
 
@@ -345,11 +247,11 @@ private:
         }
         const QJsonObject o = value.toObject();
         RegisterEntry e;
-        const QString rawId = o.value("id").toString();
+        const QString rawId = o.value("id").toString().left(40);
         const QString where = rawId.isEmpty()
                 ? tr("entry #%1 (%2)").arg(index).arg(o.value("address").toString())
                 : tr("entry '%1' (%2)").arg(rawId, o.value("address").toString());
-        const int errorsBefore = m_errors.size();
+        const qsizetype errorsBefore = errors().size();
 
         checkKeys(o, {"address", "id", "label", "type", "bytes", "words", "access", "storage", "unit", "group",
                       "min", "max", "values", "bits", "activation", "action", "control", "restoreValue", "precondition",
@@ -357,25 +259,25 @@ private:
                   where);
         e.address = parseHex16(o.value("address"), "address", where).value_or(0);
         e.id = requireString(o, "id", where);
-        if (!e.id.isEmpty() && !idPattern().match(e.id).hasMatch())
+        if (!e.id.isEmpty() && !isId(e.id))
             fail(where, tr("id must be lower case letters, digits and '_'"));
         e.label = requireString(o, "label", where);
         e.group = requireString(o, "group", where);
 
-        const QString typeName = o.value("type").toString();
+        const QString typeName = optionalString(o, "type", where);
         if (const std::optional<ValueType> t = valueTypeFromName(typeName))
             e.type = *t;
         else
             fail(where, tr("unknown type '%1' (expected float, int16, uint16, int32, uint32, bool, enum, bitfield or text)")
                             .arg(typeName));
 
-        const QString accessText = o.value("access").toString();
+        const QString accessText = optionalString(o, "access", where);
         if (const std::optional<Access> a = accessFromName(accessText))
             e.access = *a;
         else
             fail(where, tr("unknown access '%1' (expected R, W or RW)").arg(accessText));
 
-        const QString storageText = o.value("storage").toString();
+        const QString storageText = optionalString(o, "storage", where);
         if (storageText == QLatin1String("RAM"))
             e.storage = Storage::Ram;
         else if (storageText == QLatin1String("EEPROM"))
@@ -385,26 +287,27 @@ private:
         if (e.storage != Storage::None && e.access == Access::Read)
             fail(where, tr("a read-only entry cannot have a storage"));
 
-        e.reserved = o.value("reserved").toBool(false);
+        e.reserved = optionalBool(o, "reserved", false, where);
         if (e.type == ValueType::Text) {
-            e.textBytes = optionalInt(o, "bytes", where).value_or(0);
-            if (e.textBytes < 2)
+            // Within one reply frame: 125 words.
+            if (!o.contains("bytes"))
                 fail(where, tr("a text needs 'bytes' (at least 2, including the NUL)"));
+            e.textBytes = optionalInt(o, "bytes", 2, 250, where).value_or(2);
         } else if (o.contains("bytes")) {
             fail(where, tr("'bytes' is only for texts"));
         }
         if (o.contains("words")) {
-            e.reservedWords = optionalInt(o, "words", where).value_or(0);
-            if (!e.reserved || e.reservedWords < 1)
-                fail(where, tr("'words' is only for reserved blocks and must be at least 1"));
+            e.reservedWords = optionalInt(o, "words", 1, 125, where).value_or(1);
+            if (!e.reserved)
+                fail(where, tr("'words' is only for reserved blocks"));
         }
 
-        e.unit = o.value("unit").toString();
+        e.unit = optionalString(o, "unit", where);
         e.minimum = optionalNumber(o, "min", where);
         e.maximum = optionalNumber(o, "max", where);
         if (e.minimum && e.maximum && *e.minimum > *e.maximum)
             fail(where, tr("'min' is greater than 'max'"));
-        e.control = o.value("control").toString();
+        e.control = optionalString(o, "control", where);
         static const QStringList controls{"setpoint", "analog_output", "digital_output", "external_input", "alpha",
                                           "setpoint_select", "parameter_set_select", "binary_outputs", "switches", "command",
                                           "override", "program", "parameter"};
@@ -413,24 +316,22 @@ private:
         if (!e.control.isEmpty() && !e.isWritable())
             fail(where, tr("a control needs a writable entry"));
         e.restoreValue = optionalNumber(o, "restoreValue", where);
-        e.precondition = o.value("precondition").toString();
-        e.alias = o.value("alias").toString();
-        e.notes = o.value("notes").toString();
-        e.erratum = o.value("erratum").toString();
+        e.precondition = optionalString(o, "precondition", where);
+        e.alias = optionalString(o, "alias", where);
+        if (!e.alias.isEmpty() && e.alias == e.id)
+            fail(where, tr("an entry cannot be an alias of itself"));
+        e.notes = optionalString(o, "notes", where);
+        e.erratum = optionalString(o, "erratum", where);
         if (o.contains("activation"))
             e.activationMask = parseHex16(o.value("activation"), "activation", where);
-        if (o.contains("action")) {
-            if (!o.value("action").isBool())
-                fail(where, tr("'action' must be true or false"));
-            e.action = o.value("action").toBool();
-            if (e.action && !e.isWritable())
-                fail(where, tr("an action needs a writable entry"));
-        }
+        e.action = optionalBool(o, "action", false, where);
+        if (e.action && !e.isWritable())
+            fail(where, tr("an action needs a writable entry"));
 
         parseEnumValues(o, e, where);
         parseBits(o, e, where);
 
-        if (m_errors.size() != errorsBefore)
+        if (errors().size() != errorsBefore)
             return std::nullopt;
         return e;
     }
@@ -449,12 +350,12 @@ private:
         }
         const QJsonObject v = values.toObject();
         for (auto it = v.begin(); it != v.end(); ++it) {
-            bool ok = false;
-            const int key = it.key().toInt(&ok);
-            if (!ok || key < 0 || key > 0xFFFF || !it.value().isString())
+            // Written as the number itself: "01" and "1" would be one value twice.
+            const std::optional<int> key = decimalKey(it.key(), 0, 0xFFFF);
+            if (!key || !it.value().isString())
                 fail(where, tr("enum value '%1' must be a number 0..65535 with a text").arg(it.key()));
             else
-                e.enumValues.insert(key, it.value().toString());
+                e.enumValues.insert(*key, it.value().toString());
         }
     }
 
@@ -473,34 +374,42 @@ private:
         quint16 used = 0;
         QSet<QString> ids;
         for (const QJsonValue &value : bits.toArray()) {
-            const QJsonObject b = value.toObject();
-            BitDefinition def;
-            def.bit = b.value("bit").toInt(-1);
-            def.width = b.value("width").toInt(1);
-            def.id = b.value("id").toString();
-            def.label = b.value("label").toString();
-            def.reserved = b.value("reserved").toBool(false);
-            def.notes = b.value("notes").toString();
-            def.erratum = b.value("erratum").toString();
-            def.stateFrom = b.value("stateFrom").toString();
-            const QString bitWhere = tr("%1, bit %2").arg(where).arg(b.value("bit").toVariant().toString());
-            checkKeys(b, {"bit", "width", "id", "label", "kind", "reserved", "stateFrom", "notes", "erratum"}, bitWhere);
-            if (!b.value("bit").isDouble() || def.bit < 0 || def.bit > 15) {
-                fail(bitWhere, tr("bit number must be 0..15"));
+            if (!value.isObject()) {
+                fail(where, tr("a bit must be an object"));
                 continue;
             }
-            if (def.width < 1 || def.bit + def.width > 16) {
+            const QJsonObject b = value.toObject();
+            const QString bitWhere = tr("%1, bit %2").arg(where, b.value("bit").toVariant().toString().left(20));
+            const qsizetype errorsBefore = errors().size();
+            BitDefinition def;
+            def.bit = optionalInt(b, "bit", 0, 15, bitWhere).value_or(-1);
+            def.width = optionalInt(b, "width", 1, 16, bitWhere).value_or(1);
+            def.id = optionalString(b, "id", bitWhere);
+            def.label = optionalString(b, "label", bitWhere);
+            def.reserved = optionalBool(b, "reserved", false, bitWhere);
+            def.notes = optionalString(b, "notes", bitWhere);
+            def.erratum = optionalString(b, "erratum", bitWhere);
+            def.stateFrom = optionalString(b, "stateFrom", bitWhere);
+            checkKeys(b, {"bit", "width", "id", "label", "kind", "reserved", "stateFrom", "notes", "erratum"}, bitWhere);
+            if (def.bit < 0) {
+                if (errors().size() == errorsBefore)
+                    fail(bitWhere, tr("bit number must be 0..15"));
+                continue;
+            }
+            if (errors().size() != errorsBefore)
+                continue;
+            if (def.bit + def.width > 16) {
                 fail(bitWhere, tr("bit field of width %1 does not fit in 16 bits").arg(def.width));
                 continue;
             }
-            if (def.id.isEmpty() || !idPattern().match(def.id).hasMatch())
+            if (def.id.isEmpty() || !isId(def.id))
                 fail(bitWhere, tr("a bit needs an id of lower case letters, digits and '_'"));
             else if (ids.contains(def.id))
                 fail(bitWhere, tr("duplicate bit id '%1'").arg(def.id));
             ids.insert(def.id);
             if (def.label.isEmpty())
                 fail(bitWhere, tr("a bit needs a label"));
-            const QString kindText = b.value("kind").toString();
+            const QString kindText = optionalString(b, "kind", bitWhere);
             if (const std::optional<BitKind> k = bitKindFromName(kindText))
                 def.kind = *k;
             else
@@ -640,28 +549,13 @@ private:
             byId.insert(e.id, &e);
         }
         for (const RegisterEntry &e : entries) {
-            if (!e.alias.isEmpty() && !byId.contains(e.alias))
+            if (!e.alias.isEmpty() && e.alias != e.id && !byId.contains(e.alias))
                 fail(tr("entry '%1'").arg(e.id), tr("alias of unknown entry '%1'").arg(e.alias));
             if (int(e.address) + e.wordCount() > 0x10000)
                 fail(tr("entry '%1'").arg(e.id), tr("runs past address 0xFFFF"));
         }
-        QList<const RegisterEntry *> sorted;
-        for (const RegisterEntry &e : entries)
-            sorted << &e;
-        std::stable_sort(sorted.begin(), sorted.end(),
-                         [](const RegisterEntry *a, const RegisterEntry *b) { return a->address < b->address; });
-        for (qsizetype i = 0; i < sorted.size(); ++i) {
-            for (qsizetype j = i + 1; j < sorted.size() && sorted[j]->address <= sorted[i]->lastAddress(); ++j) {
-                const RegisterEntry *a = sorted[i];
-                const RegisterEntry *b = sorted[j];
-                if (a->alias == b->id || b->alias == a->id)
-                    continue;
-                fail(tr("entry '%1' (%2)").arg(b->id, formatAddress(b->address)),
-                     tr("words %1..%2 overlap entry '%3' (%4..%5)")
-                             .arg(formatAddress(b->address), formatAddress(b->lastAddress()), a->id,
-                                  formatAddress(a->address), formatAddress(a->lastAddress())));
-            }
-        }
+        for (const auto &[where, problem] : OverlapCheck::check(entries))
+            fail(where, problem);
     }
 };
 
@@ -669,13 +563,14 @@ private:
 
 MapLoadResult MapLoader::loadFile(const QString &path)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
+    QString error;
+    const std::optional<QByteArray> json = RegularFile::read(path, maxFileBytes, &error);
+    if (!json) {
         MapLoadResult result;
-        result.errors << QCoreApplication::translate("jumo::MapLoader", "%1: cannot open: %2").arg(path, file.errorString());
+        result.errors << error;
         return result;
     }
-    return loadData(file.readAll(), path.startsWith(QLatin1Char(':')) ? path : QFileInfo(path).absoluteFilePath());
+    return loadData(*json, path.startsWith(QLatin1Char(':')) ? path : QFileInfo(path).absoluteFilePath());
 }
 
 MapLoadResult MapLoader::loadData(const QByteArray &json, const QString &sourceName)

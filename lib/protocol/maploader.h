@@ -22,6 +22,9 @@ struct MapLoadResult
 class MapLoader
 {
 public:
+    // The built-in maps are below 100 kB; a file many times that size is no map.
+    static constexpr qint64 maxFileBytes = 4 * 1024 * 1024;
+
     static MapLoadResult loadFile(const QString &path);
     static MapLoadResult loadData(const QByteArray &json, const QString &sourceName);
 };

@@ -11,6 +11,8 @@
 
 #include <functional>
 
+#include <sys/stat.h>
+
 using namespace jumo;
 
 namespace {
@@ -50,8 +52,6 @@ QJsonObject validMap()
     };
 }
 
-using Mutation = std::function<void(QJsonObject &)>;
-
 void editEntry(QJsonObject &map, int index, const std::function<void(QJsonObject &)> &edit)
 {
     QJsonArray entries = map.value("entries").toArray();
@@ -59,6 +59,18 @@ void editEntry(QJsonObject &map, int index, const std::function<void(QJsonObject
     edit(e);
     entries.replace(index, e);
     map.insert("entries", entries);
+}
+
+using Mutation = std::function<void(QJsonObject &)>;
+
+// Sets one key of the protocol object.
+Mutation protocolField(const QString &key, const QJsonValue &value)
+{
+    return [key, value](QJsonObject &m) {
+        QJsonObject p = m["protocol"].toObject();
+        p[key] = value;
+        m["protocol"] = p;
+    };
 }
 
 void appendEntry(QJsonObject &map, const QJsonObject &entry)
@@ -83,6 +95,9 @@ private slots:
     void refusesMalformedJson();
     void builtinMapsLoad();
     void userFolderReplacesBuiltinAndReportsBrokenFiles();
+    void twoUserFilesOfOneFamilyAreRefused();
+    void overlapsAreReportedOncePerGroup();
+    void onlyRegularFilesAreRead();
 };
 
 void tst_MapLoader::acceptsValidMap()
@@ -112,12 +127,12 @@ void tst_MapLoader::refusesBadMap_data()
         editEntry(m, 2, [](QJsonObject &e) {
             e["bits"] = QJsonArray{QJsonObject{{"bit", 16}, {"id", "x"}, {"label", "X"}, {"kind", "alarm"}}};
         });
-    }) << "entry 'alarms' (0x0003), bit 16" << "bit number must be 0..15";
+    }) << "entry 'alarms' (0x0003), bit 16" << "'bit' must be a whole number 0..15, not 16";
     QTest::newRow("negative bit") << Mutation([](QJsonObject &m) {
         editEntry(m, 2, [](QJsonObject &e) {
             e["bits"] = QJsonArray{QJsonObject{{"bit", -1}, {"id", "x"}, {"label", "X"}, {"kind", "alarm"}}};
         });
-    }) << "entry 'alarms' (0x0003), bit -1" << "bit number must be 0..15";
+    }) << "entry 'alarms' (0x0003), bit -1" << "'bit' must be a whole number 0..15, not -1";
     QTest::newRow("bit defined twice") << Mutation([](QJsonObject &m) {
         editEntry(m, 2, [](QJsonObject &e) {
             e["bits"] = QJsonArray{QJsonObject{{"bit", 3}, {"id", "x"}, {"label", "X"}, {"kind", "alarm"}},
@@ -156,13 +171,82 @@ void tst_MapLoader::refusesBadMap_data()
     QTest::newRow("storage on a read-only entry") << Mutation([](QJsonObject &m) {
         editEntry(m, 0, [](QJsonObject &e) { e["storage"] = "RAM"; });
     }) << "entry 'value_a'" << "a read-only entry cannot have a storage";
-    QTest::newRow("unknown word order") << Mutation([](QJsonObject &m) {
-        QJsonObject p = m["protocol"].toObject();
-        p["floatWordOrder"] = "little";
-        m["protocol"] = p;
-    }) << "protocol" << "'floatWordOrder' must be ABCD, CDAB, BADC or DCBA";
+    QTest::newRow("unknown word order") << protocolField("floatWordOrder", "little")
+                                 << "protocol" << "'floatWordOrder' must be ABCD, CDAB, BADC or DCBA";
     QTest::newRow("no entries") << Mutation([](QJsonObject &m) { m["entries"] = QJsonArray(); })
                                 << "test.json" << "'entries' must be a non-empty array";
+
+    // Numbers that used to pass unchecked, or overflow a check.
+    QTest::newRow("text bytes beyond a frame") << Mutation([](QJsonObject &m) {
+        editEntry(m, 3, [](QJsonObject &e) { e["bytes"] = 2147483647; });
+    }) << "entry 'name' (0x0004)" << "'bytes' must be a whole number 2..250, not 2147483647";
+    QTest::newRow("reserved words beyond a frame") << Mutation([](QJsonObject &m) {
+        appendEntry(m, QJsonObject{{"address", "0x0100"}, {"id", "gap"}, {"label", "Gap"}, {"type", "uint16"},
+                                   {"access", "R"}, {"group", "1 Test"}, {"reserved", true}, {"words", 2147483647}});
+    }) << "entry 'gap' (0x0100)" << "'words' must be a whole number 1..125, not 2147483647";
+    QTest::newRow("bit width that overflows") << Mutation([](QJsonObject &m) {
+        editEntry(m, 2, [](QJsonObject &e) {
+            e["bits"] = QJsonArray{QJsonObject{{"bit", 1}, {"width", 2147483647}, {"id", "x"}, {"label", "X"}, {"kind", "alarm"}}};
+        });
+    }) << "entry 'alarms' (0x0003), bit 1" << "'width' must be a whole number 1..16, not 2147483647";
+    QTest::newRow("bit field past bit 15") << Mutation([](QJsonObject &m) {
+        editEntry(m, 2, [](QJsonObject &e) {
+            e["bits"] = QJsonArray{QJsonObject{{"bit", 8}, {"width", 9}, {"id", "x"}, {"label", "X"}, {"kind", "alarm"}}};
+        });
+    }) << "entry 'alarms' (0x0003), bit 8" << "bit field of width 9 does not fit in 16 bits";
+    QTest::newRow("id with a trailing newline") << Mutation([](QJsonObject &m) {
+        editEntry(m, 1, [](QJsonObject &e) { e["id"] = "mode\n"; });
+    }) << "entry 'mode\n' (0x0002)" << "id must be lower case letters, digits and '_'";
+    QTest::newRow("family id with a trailing newline") << Mutation([](QJsonObject &m) { m["family"] = "testdev\n"; })
+                                                       << "test.json" << "family id 'testdev\n' must be lower case";
+    QTest::newRow("bit as a string") << Mutation([](QJsonObject &m) {
+        editEntry(m, 2, [](QJsonObject &e) {
+            e["bits"] = QJsonArray{QJsonObject{{"bit", "3"}, {"id", "x"}, {"label", "X"}, {"kind", "alarm"}}};
+        });
+    }) << "entry 'alarms' (0x0003), bit 3" << "'bit' must be a whole number 0..15, not 3";
+    QTest::newRow("width as a string") << Mutation([](QJsonObject &m) {
+        editEntry(m, 2, [](QJsonObject &e) {
+            e["bits"] = QJsonArray{QJsonObject{{"bit", 0}, {"width", "16"}, {"id", "x"}, {"label", "X"}, {"kind", "alarm"}}};
+        });
+    }) << "entry 'alarms' (0x0003), bit 0" << "'width' must be a whole number 1..16, not 16";
+    QTest::newRow("fraction of words") << protocolField("maxReadWords", 2.5)
+                                 << "protocol" << "'maxReadWords' must be a whole number 1..127, not 2.5";
+    QTest::newRow("probe words as a word") << Mutation([](QJsonObject &m) {
+        m["identify"] = QJsonArray{QJsonObject{{"address", "0x0000"}, {"words", "two"}, {"answers", true}}};
+    }) << "identify[0]" << "'words' must be a whole number 1..125, not two";
+    QTest::newRow("broadcast as yes") << protocolField("broadcast", "yes")
+                                 << "protocol" << "'broadcast' must be true or false, not yes";
+    QTest::newRow("reserved as yes") << Mutation([](QJsonObject &m) {
+        editEntry(m, 0, [](QJsonObject &e) { e["reserved"] = "yes"; });
+    }) << "entry 'value_a'" << "'reserved' must be true or false, not yes";
+    QTest::newRow("format as a string") << Mutation([](QJsonObject &m) { m["format"] = "1"; })
+                                        << "test.json" << "'format' must be a whole number 1..1, not 1";
+    QTest::newRow("label as a number") << Mutation([](QJsonObject &m) {
+        editEntry(m, 0, [](QJsonObject &e) { e["unit"] = 5; });
+    }) << "entry 'value_a'" << "'unit' must be a string, not 5";
+    QTest::newRow("negative processing time") << protocolField("processingTimeMaxMs", -1)
+                                 << "protocol" << "'processingTimeMaxMs' must be a number 0..1000, not -1";
+    QTest::newRow("processing time of minutes") << protocolField("processingTimeMaxMs", 100000)
+                                 << "protocol" << "'processingTimeMaxMs' must be a number 0..1000, not 100000";
+    QTest::newRow("negative turnaround") << protocolField("turnaroundMs", -10)
+                                 << "protocol" << "'turnaroundMs' must be a number 0..100, not -10";
+    QTest::newRow("baud rates zero and negative") << protocolField("baudRates", QJsonArray{0, -9600})
+                                 << "protocol" << "'baudRates' may contain only 1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200, not 0";
+    QTest::newRow("read function 5") << protocolField("readFunctions", QJsonArray{3, 5})
+                                 << "protocol" << "'readFunctions' may contain only 3, 4, not 5";
+    QTest::newRow("always answering address 999") << protocolField("alwaysAnswersAddress", 999)
+                                 << "protocol" << "'alwaysAnswersAddress' must be a whole number 1..255, not 999";
+    QTest::newRow("always answering address 250") << protocolField("alwaysAnswersAddress", 250)
+                                 << "protocol" << "'alwaysAnswersAddress' must be 1..247 or 255, not 250";
+    QTest::newRow("alias of itself") << Mutation([](QJsonObject &m) {
+        editEntry(m, 0, [](QJsonObject &e) { e["alias"] = "value_a"; });
+    }) << "entry 'value_a'" << "an entry cannot be an alias of itself";
+    QTest::newRow("enum keys 1 and 01") << Mutation([](QJsonObject &m) {
+        editEntry(m, 1, [](QJsonObject &e) { e["values"] = QJsonObject{{"0", "Off"}, {"1", "On"}, {"01", "Also on"}}; });
+    }) << "entry 'mode' (0x0002)" << "enum value '01' must be a number 0..65535 with a text";
+    QTest::newRow("exception code 02") << Mutation([](QJsonObject &m) {
+        m["exceptions"] = QJsonObject{{"02", "Invalid address"}};
+    }) << "exceptions" << "'02' is not an exception code with a text";
 }
 
 void tst_MapLoader::refusesBadMap()
@@ -217,6 +301,79 @@ void tst_MapLoader::userFolderReplacesBuiltinAndReportsBrokenFiles()
     QCOMPARE(registry.families().size(), 4);
     QCOMPARE(registry.errors().size(), 1);
     QVERIFY(registry.errors().first().contains("zz-broken.json: malformed JSON"));
+}
+
+void tst_MapLoader::twoUserFilesOfOneFamilyAreRefused()
+{
+    QTemporaryDir first;
+    QTemporaryDir second;
+    QJsonObject a = validMap();
+    a["name"] = "First";
+    QJsonObject b = validMap();
+    b["name"] = "Second";
+    for (const auto &[dir, map] : {std::make_pair(&first, a), std::make_pair(&second, b)}) {
+        QFile f(dir->filePath("testdev.json"));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(QJsonDocument(map).toJson());
+    }
+    const FamilyRegistry registry = FamilyRegistry::load({first.path(), second.path()}, true);
+    QVERIFY(!registry.family("testdev"));   // not silently the later one
+    QCOMPARE(registry.errors().size(), 1);
+    QVERIFY2(registry.errors().first().contains("family 'testdev' is defined by each of these files"),
+             qPrintable(registry.errors().first()));
+    QVERIFY(registry.errors().first().contains(first.filePath("testdev.json")));
+    QVERIFY(registry.errors().first().contains(second.filePath("testdev.json")));
+    QCOMPARE(registry.families().size(), 4);
+}
+
+void tst_MapLoader::overlapsAreReportedOncePerGroup()
+{
+    // 5000 entries at one address: one message (it used to be 12.5 million).
+    QJsonObject map = validMap();
+    QJsonArray entries = map["entries"].toArray();
+    for (int i = 0; i < 5000; ++i)
+        entries.append(QJsonObject{{"address", "0x0100"}, {"id", QStringLiteral("same_%1").arg(i)}, {"label", "Same"},
+                                   {"type", "uint16"}, {"access", "R"}, {"group", "1 Test"}});
+    map["entries"] = entries;
+    MapLoadResult r = MapLoader::loadData(QJsonDocument(map).toJson(), "many.json");
+    QVERIFY(!r.ok());
+    QCOMPARE(r.errors.size(), 1);
+    QVERIFY2(r.errors.first().contains("entry 'same_1' (0x0100): words 0x0100..0x0100 overlap entry 'same_0'"),
+             qPrintable(r.errors.first()));
+    QVERIFY2(r.errors.first().contains("and 4995 more entries"), qPrintable(r.errors.first()));
+
+    // 30 separate pairs: 20 messages and a count of the rest.
+    map = validMap();
+    entries = map["entries"].toArray();
+    for (int i = 0; i < 30; ++i) {
+        const QString address = QStringLiteral("0x%1").arg(0x1000 + i * 16, 4, 16, QLatin1Char('0'));
+        entries.append(QJsonObject{{"address", address}, {"id", QStringLiteral("a_%1").arg(i)}, {"label", "A"},
+                                   {"type", "float"}, {"access", "R"}, {"group", "1 Test"}});
+        entries.append(QJsonObject{{"address", address}, {"id", QStringLiteral("b_%1").arg(i)}, {"label", "B"},
+                                   {"type", "uint16"}, {"access", "R"}, {"group", "1 Test"}});
+    }
+    map["entries"] = entries;
+    r = MapLoader::loadData(QJsonDocument(map).toJson(), "pairs.json");
+    QCOMPARE(r.errors.size(), 21);
+    QVERIFY2(r.errors.last().contains("10 more group(s) of overlapping entries not listed"), qPrintable(r.errors.last()));
+}
+
+void tst_MapLoader::onlyRegularFilesAreRead()
+{
+    QTemporaryDir dir;
+    QVERIFY(QFile::link("/dev/zero", dir.filePath("zero.json")));   // would be read forever
+    QVERIFY(::mkfifo(QFile::encodeName(dir.filePath("fifo.json")).constData(), 0600) == 0);   // would block
+    QFile big(dir.filePath("big.json"));
+    QVERIFY(big.open(QIODevice::WriteOnly));
+    QVERIFY(big.resize(MapLoader::maxFileBytes + 1));
+    big.close();
+    const FamilyRegistry registry = FamilyRegistry::load({dir.path()}, true);
+    QCOMPARE(registry.families().size(), 4);
+    const QString errors = registry.errors().join('\n');
+    QCOMPARE(registry.errors().size(), 3);
+    QVERIFY2(errors.contains(dir.filePath("zero.json") + ": not a regular file"), qPrintable(errors));
+    QVERIFY2(errors.contains(dir.filePath("fifo.json") + ": not a regular file"), qPrintable(errors));
+    QVERIFY2(errors.contains(dir.filePath("big.json") + ": too big"), qPrintable(errors));
 }
 
 QTEST_GUILESS_MAIN(tst_MapLoader)

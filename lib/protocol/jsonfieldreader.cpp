@@ -1,0 +1,199 @@
+#include "protocol/jsonfieldreader.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QRegularExpression>
+
+#include <cmath>
+
+namespace jumo {
+
+namespace {
+
+// anchoredPattern: \A...\z. A plain "^...$" lets a trailing newline through.
+const QRegularExpression &idPattern()
+{
+    static const QRegularExpression pattern(QRegularExpression::anchoredPattern(QStringLiteral("[a-z][a-z0-9_]*")));
+    return pattern;
+}
+
+const QRegularExpression &hex16Pattern()
+{
+    static const QRegularExpression pattern(QRegularExpression::anchoredPattern(QStringLiteral("0x[0-9A-Fa-f]{4}")));
+    return pattern;
+}
+
+const QRegularExpression &decimalPattern()
+{
+    static const QRegularExpression pattern(QRegularExpression::anchoredPattern(QStringLiteral("0|[1-9][0-9]{0,8}")));
+    return pattern;
+}
+
+// A JSON value as the file spells it, for messages.
+QString shown(const QJsonValue &value)
+{
+    if (value.isString())
+        return value.toString();
+    return QString::fromUtf8(QJsonDocument(QJsonArray{value}).toJson(QJsonDocument::Compact)).mid(1).chopped(1);
+}
+
+} // namespace
+
+void JsonFieldReader::fail(const QString &where, const QString &problem)
+{
+    m_errors << (where.isEmpty() ? QStringLiteral("%1: %2").arg(m_source, problem)
+                                 : QStringLiteral("%1: %2: %3").arg(m_source, where, problem));
+}
+
+void JsonFieldReader::checkKeys(const QJsonObject &object, const QStringList &allowed, const QString &where)
+{
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        if (!allowed.contains(it.key()))
+            fail(where, tr("unknown key '%1'").arg(it.key()));
+    }
+}
+
+QString JsonFieldReader::requireString(const QJsonObject &object, const QString &key, const QString &where)
+{
+    const QJsonValue v = object.value(key);
+    if (!v.isString() || v.toString().isEmpty()) {
+        fail(where, tr("'%1' is missing or not a non-empty string").arg(key));
+        return {};
+    }
+    return v.toString();
+}
+
+QString JsonFieldReader::optionalString(const QJsonObject &object, const QString &key, const QString &where)
+{
+    const QJsonValue v = object.value(key);
+    if (v.isUndefined())
+        return {};
+    if (!v.isString()) {
+        fail(where, tr("'%1' must be a string, not %2").arg(key, shown(v)));
+        return {};
+    }
+    return v.toString();
+}
+
+QStringList JsonFieldReader::stringList(const QJsonObject &object, const QString &key, const QString &where)
+{
+    QStringList out;
+    const QJsonValue v = object.value(key);
+    if (v.isUndefined())
+        return out;
+    if (!v.isArray()) {
+        fail(where, tr("'%1' must be an array of strings").arg(key));
+        return out;
+    }
+    for (const QJsonValue &item : v.toArray()) {
+        if (item.isString())
+            out << item.toString();
+        else
+            fail(where, tr("'%1' must contain only strings, not %2").arg(key, shown(item)));
+    }
+    return out;
+}
+
+bool JsonFieldReader::optionalBool(const QJsonObject &object, const QString &key, bool defaultValue,
+                                   const QString &where)
+{
+    const QJsonValue v = object.value(key);
+    if (v.isUndefined())
+        return defaultValue;
+    if (!v.isBool()) {
+        fail(where, tr("'%1' must be true or false, not %2").arg(key, shown(v)));
+        return defaultValue;
+    }
+    return v.toBool();
+}
+
+std::optional<int> JsonFieldReader::optionalInt(const QJsonObject &object, const QString &key, int minimum,
+                                                int maximum, const QString &where)
+{
+    const QJsonValue v = object.value(key);
+    if (v.isUndefined() || v.isNull())
+        return std::nullopt;
+    const double d = v.toDouble();
+    if (!v.isDouble() || std::floor(d) != d || d < minimum || d > maximum) {
+        fail(where, tr("'%1' must be a whole number %2..%3, not %4").arg(key).arg(minimum).arg(maximum).arg(shown(v)));
+        return std::nullopt;
+    }
+    return int(d);
+}
+
+int JsonFieldReader::requireInt(const QJsonObject &object, const QString &key, int minimum, int maximum,
+                                const QString &where)
+{
+    if (!object.contains(key) || object.value(key).isNull()) {
+        fail(where, tr("'%1' is missing").arg(key));
+        return minimum;
+    }
+    return optionalInt(object, key, minimum, maximum, where).value_or(minimum);
+}
+
+std::optional<double> JsonFieldReader::optionalNumber(const QJsonObject &object, const QString &key,
+                                                      const QString &where, double minimum, double maximum)
+{
+    const QJsonValue v = object.value(key);
+    if (v.isUndefined() || v.isNull())
+        return std::nullopt;
+    if (!v.isDouble() || !std::isfinite(v.toDouble()) || v.toDouble() < minimum || v.toDouble() > maximum) {
+        if (minimum <= -1e300)
+            fail(where, tr("'%1' must be a number, not %2").arg(key, shown(v)));
+        else
+            fail(where, tr("'%1' must be a number %2..%3, not %4").arg(key).arg(minimum).arg(maximum).arg(shown(v)));
+        return std::nullopt;
+    }
+    return v.toDouble();
+}
+
+QList<int> JsonFieldReader::intList(const QJsonObject &object, const QString &key, const QList<int> &allowed,
+                                    const QString &where)
+{
+    QList<int> out;
+    const QJsonValue v = object.value(key);
+    if (!v.isArray() || v.toArray().isEmpty()) {
+        fail(where, tr("'%1' must be a non-empty array of numbers").arg(key));
+        return out;
+    }
+    QStringList allowedText;
+    for (int a : allowed)
+        allowedText << QString::number(a);
+    for (const QJsonValue &item : v.toArray()) {
+        const double d = item.toDouble();
+        if (!item.isDouble() || std::floor(d) != d || !allowed.contains(int(d)) || int(d) != d)
+            fail(where, tr("'%1' may contain only %2, not %3").arg(key, allowedText.join(QStringLiteral(", ")), shown(item)));
+        else if (out.contains(int(d)))
+            fail(where, tr("'%1' lists %2 twice").arg(key).arg(int(d)));
+        else
+            out << int(d);
+    }
+    return out;
+}
+
+std::optional<quint16> JsonFieldReader::parseHex16(const QJsonValue &value, const QString &key, const QString &where)
+{
+    const QString text = value.toString();
+    if (!value.isString() || !hex16Pattern().match(text).hasMatch()) {
+        fail(where, tr("'%1' must be 0x followed by 4 hex digits, not '%2'").arg(key, shown(value)));
+        return std::nullopt;
+    }
+    return quint16(text.mid(2).toUInt(nullptr, 16));
+}
+
+std::optional<int> JsonFieldReader::decimalKey(const QString &key, int minimum, int maximum)
+{
+    if (!decimalPattern().match(key).hasMatch())
+        return std::nullopt;
+    const int value = key.toInt();
+    if (value < minimum || value > maximum)
+        return std::nullopt;
+    return value;
+}
+
+bool JsonFieldReader::isId(const QString &text)
+{
+    return idPattern().match(text).hasMatch();
+}
+
+} // namespace jumo
