@@ -23,11 +23,11 @@ int main(int argc, char *argv[])
     QCoreApplication::setApplicationVersion(QStringLiteral(JUMO_VERSION));
     QCoreApplication::setOrganizationName(QStringLiteral("jumo"));
     jumo::installTranslations(app);
-    jumo::quitOnTerminationSignals();   // monitor runs until stopped
-
     QTextStream out(stdout);
     QTextStream err(stderr);
     jumo::CommandLineTool tool(out, err);
+    // Ctrl-C and SIGTERM end a command with 130 or 143 and what it got done.
+    jumo::onTerminationSignals([&tool](int signal) { tool.interrupt(signal); });
     if (const std::optional<int> code = tool.run(app.arguments().mid(1)))
         return *code;
     QObject::connect(&tool, &jumo::CommandLineTool::finished, &app, &QCoreApplication::exit);

@@ -308,7 +308,7 @@ Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 3; --no-identify
 </translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+59"/>
         <source>warning: refused map file: %1</source>
         <translation>Warnung: Map-Datei abgelehnt: %1</translation>
     </message>
@@ -848,9 +848,15 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::FileSaver</name>
     <message>
-        <location filename="../lib/protocol/filesaver.cpp" line="+25"/>
+        <location filename="../lib/protocol/filesaver.cpp" line="+16"/>
+        <location line="+19"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location line="-19"/>
+        <source>not a regular file</source>
+        <translation>keine reguläre Datei</translation>
     </message>
 </context>
 <context>
@@ -921,12 +927,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+56"/>
+        <location filename="../app/cli/linecommands.cpp" line="+59"/>
         <source>the audit log did not take a record: %1</source>
         <translation>das Audit-Protokoll hat einen Eintrag nicht aufgenommen: %1</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>Serial port, e.g. /dev/ttyUSB0 (required).</source>
         <translation>Serielle Schnittstelle, z. B. /dev/ttyUSB0 (erforderlich).</translation>
     </message>
@@ -963,12 +969,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <message>
         <location line="+0"/>
         <location line="+2"/>
-        <location line="+371"/>
+        <location line="+429"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-371"/>
+        <location line="-429"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
@@ -979,12 +985,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+371"/>
+        <location line="+429"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-369"/>
+        <location line="-427"/>
         <source>Never write to the line (control-room mode).</source>
         <translation>Nie auf die Leitung schreiben (Leitwarten-Modus).</translation>
     </message>
@@ -1023,8 +1029,79 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <source>device address %1 is outside 1..255</source>
         <translation>Geräteadresse %1 liegt außerhalb von 1..255</translation>
     </message>
+    <message numerus="yes">
+        <location line="+27"/>
+        <source>%n device(s) found before the scan stopped</source>
+        <translation>
+            <numerusform>%n Gerät gefunden, bevor die Suche endete</numerusform>
+            <numerusform>%n Geräte gefunden, bevor die Suche endete</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n poll cycle(s) printed</source>
+        <translation>
+            <numerusform>%n Abfragezyklus ausgegeben</numerusform>
+            <numerusform>%n Abfragezyklen ausgegeben</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+22"/>
+        <location line="+4"/>
+        <location line="+17"/>
+        <source>nothing was written</source>
+        <translation>nichts wurde geschrieben</translation>
+    </message>
+    <message numerus="yes">
+        <location line="-15"/>
+        <source>%1 of %n write(s) done</source>
+        <translation>
+            <numerusform>%1 von %n Schreibvorgang erledigt</numerusform>
+            <numerusform>%1 von %n Schreibvorgängen erledigt</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source> (%n restored and verified)</source>
+        <translation>
+            <numerusform> (%n wiederhergestellt und geprüft)</numerusform>
+            <numerusform> (%n wiederhergestellt und geprüft)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>; %1 was being written: its outcome is unknown, check the device</source>
+        <translation>; %1 wurde gerade geschrieben: das Ergebnis ist unbekannt, bitte am Gerät prüfen</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>; %n not written</source>
+        <translation>
+            <numerusform>; %n nicht geschrieben</numerusform>
+            <numerusform>; %n nicht geschrieben</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no backup saved</source>
+        <translation>keine Sicherung gespeichert</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no report written</source>
+        <translation>kein Bericht geschrieben</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>terminated: %1</source>
+        <translation>beendet: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>interrupted: %1</source>
+        <translation>abgebrochen: %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Finds devices on the line and names their family.</source>
         <translation>Sucht Geräte an der Leitung und benennt ihre Gerätefamilie.</translation>
     </message>
@@ -1099,13 +1176,13 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+351"/>
-        <location line="+130"/>
+        <location line="+354"/>
+        <location line="+142"/>
         <source>FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="-479"/>
+        <location line="-494"/>
         <source>Entry ids.</source>
         <translation>Kennungen der Einträge.</translation>
     </message>
@@ -1167,12 +1244,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>&apos;%1&apos; hat nicht die Form ID=VALUE</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+47"/>
         <source>(was %1)</source>
         <translation>(vorher %1)</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+38"/>
         <source>Polls devices continuously and prints every poll cycle.</source>
         <translation>Fragt Geräte fortlaufend ab und gibt jeden Abfragezyklus aus.</translation>
     </message>
@@ -1315,7 +1392,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+23"/>
+        <location line="+28"/>
         <source>Write %n parameter(s) to the device? [y/N] </source>
         <translation>
             <numerusform>%n Parameter auf das Gerät schreiben? [j/N] </numerusform>
@@ -1333,7 +1410,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>nichts geschrieben</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+34"/>
         <source>Writes the commissioning report of a device: identity, parameters, live values, active alarms and today&apos;s writes. FILE ending in .pdf gives PDF, else HTML.</source>
         <translation>Schreibt den Inbetriebnahmebericht eines Geräts: Identität, Parameter, Live-Werte, aktive Alarme und die heutigen Schreibvorgänge. Endet FILE auf .pdf, entsteht ein PDF, sonst HTML.</translation>
     </message>
@@ -1358,7 +1435,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Bericht von %1 in %2 geschrieben</translation>
     </message>
     <message numerus="yes">
-        <location line="+17"/>
+        <location line="+19"/>
         <source>%n parameter(s) restored and verified</source>
         <translation>
             <numerusform>%n Parameter wiederhergestellt und geprüft</numerusform>

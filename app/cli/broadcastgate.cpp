@@ -120,4 +120,10 @@ void BroadcastGate::scan(const std::function<void(const QList<quint8> &)> &next,
     m_clearance->start(m_family);
 }
 
+void BroadcastGate::cancel()
+{
+    if (m_clearance)
+        m_clearance->cancel();
+}
+
 } // namespace jumo

@@ -42,6 +42,9 @@ public:
     void pass(IdentityGate &identity, EventLog *audit, const std::function<void(const QList<quint8> &)> &next,
               const std::function<void(int)> &refused);
 
+    // Stops a check under way; neither next() nor refused() follows.
+    void cancel();
+
 private:
     void scan(const std::function<void(const QList<quint8> &)> &next, const std::function<void(int)> &refused);
 

@@ -43,6 +43,14 @@ QString CommandLineTool::usage() const
               "'jumoctl COMMAND --help' describes a command.\n");
 }
 
+void CommandLineTool::interrupt(int signal)
+{
+    if (m_lineCommands)
+        m_lineCommands->interrupt(signal);
+    else
+        emit finished(128 + signal);
+}
+
 std::optional<int> CommandLineTool::run(const QStringList &arguments)
 {
     if (arguments.isEmpty() || arguments.constFirst() == QLatin1String("--help")

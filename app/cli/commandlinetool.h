@@ -25,6 +25,8 @@ public:
     // Runs a command. Returns its exit code, or nullopt when the command works on the
     // event loop and will emit finished() later.
     std::optional<int> run(const QStringList &arguments);
+    // SIGINT or SIGTERM while a command runs: it ends with 130 or 143 and a summary.
+    void interrupt(int signal);
 
 signals:
     void finished(int exitCode);

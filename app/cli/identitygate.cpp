@@ -66,4 +66,10 @@ void IdentityGate::pass(const QList<IdentityCheck::Claim> &claims, const std::fu
     m_check->start(claims);
 }
 
+void IdentityGate::cancel()
+{
+    if (m_check)
+        m_check->cancel();
+}
+
 } // namespace jumo

@@ -41,6 +41,9 @@ public:
     void pass(const QList<IdentityCheck::Claim> &claims, const std::function<void()> &next,
               const std::function<void(int)> &refused, const std::function<void()> &whenSilent = {});
 
+    // Stops a check under way; neither next() nor refused() follows.
+    void cancel();
+
 private:
     Bus &m_bus;
     const FamilyRegistry &m_registry;

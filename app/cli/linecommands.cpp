@@ -5,6 +5,7 @@
 
 #include "broadcastgate.h"
 #include "commandparser.h"
+#include "prompt.h"
 #include "exitcodes.h"
 #include "identitygate.h"
 #include "commissioning/commissioningreport.h"
@@ -17,6 +18,8 @@
 #include "logs/writeaudit.h"
 
 #include <QDateTime>
+
+#include <csignal>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -71,6 +74,7 @@ QStringList LineCommands::commands()
 
 std::optional<int> LineCommands::run(const QString &command, const QStringList &arguments)
 {
+    m_command = command;
     if (command == QLatin1String("scan"))
         return scan(arguments);
     if (command == QLatin1String("read"))
@@ -175,11 +179,66 @@ bool LineCommands::parseDevice(const QString &text, Target &target)
     return true;
 }
 
+void LineCommands::interrupt(int signal)
+{
+    if (m_finished || m_interruptCode)
+        return;
+    m_interruptCode = signal == SIGTERM ? exitcode::Terminated : exitcode::Interrupted;
+    m_interruptSummary = progressSummary();
+    // Jobs stop asking; closing the line drops what has not gone out, and a write under
+    // way ends as unknown. Their outcomes (and audit records) arrive from the event loop:
+    // the command ends right after them.
+    m_identity->cancel();
+    m_broadcast->cancel();
+    if (m_scanner)
+        m_scanner->cancel();
+    m_bus.close();
+    QMetaObject::invokeMethod(this, [this] { finish(m_interruptCode); }, Qt::QueuedConnection);
+}
+
+QString LineCommands::progressSummary() const
+{
+    if (m_command == QLatin1String("scan"))
+        return tr("%n device(s) found before the scan stopped", nullptr, int(m_targets.size()));
+    if (m_command == QLatin1String("monitor")) {
+        int cycles = 0;
+        for (const Target &t : m_targets)
+            cycles += t.cycles;
+        return tr("%n poll cycle(s) printed", nullptr, cycles);
+    }
+    if (m_command == QLatin1String("write") || m_command == QLatin1String("restore")) {
+        if (m_writesAsked == 0)
+            return tr("nothing was written");
+        const int left = int(m_pendingWrites.size());
+        QString summary = tr("%1 of %n write(s) done", nullptr, m_writesAsked).arg(m_writesAsked - left);
+        if (m_command == QLatin1String("restore"))
+            summary += tr(" (%n restored and verified)", nullptr, m_restored);
+        const bool underWay = m_writeTicket >= 0 && left > 0;
+        if (underWay)
+            summary += tr("; %1 was being written: its outcome is unknown, check the device")
+                               .arg(m_pendingWrites.first().first);
+        if (left - underWay > 0)
+            summary += tr("; %n not written", nullptr, left - underWay);
+        return summary;
+    }
+    if (m_command == QLatin1String("backup"))
+        return tr("no backup saved");
+    if (m_command == QLatin1String("report"))
+        return tr("no report written");
+    return tr("nothing was written");
+}
+
 void LineCommands::finish(int code)
 {
     if (m_finished)
         return;
     m_finished = true;
+    if (m_interruptCode) {
+        code = m_interruptCode;
+        m_err << '\n'   // after a prompt or a progress line
+              << (code == exitcode::Terminated ? tr("terminated: %1") : tr("interrupted: %1")).arg(m_interruptSummary)
+              << Qt::endl;
+    }
     if (m_auditFailed && code == exitcode::Ok)
         code = exitcode::Failed;
     m_out.flush();
@@ -412,6 +471,7 @@ std::optional<int> LineCommands::write(const QStringList &arguments)
 
 void LineCommands::startWrites(Target target, bool broadcast, const QList<quint8> &verifyAddresses)
 {
+    m_writesAsked = int(m_pendingWrites.size());
     m_bus.setPolling(false);
     if (broadcast) {
         // The bus reads a broadcast back from every device of the family it knows.
@@ -454,6 +514,8 @@ void LineCommands::startWrites(Target target, bool broadcast, const QList<quint8
 
 void LineCommands::writeNext()
 {
+    if (m_interruptCode)
+        return;
     if (m_pendingWrites.isEmpty()) {
         finish(m_failed ? 1 : 0);
         return;
@@ -721,34 +783,46 @@ std::optional<int> LineCommands::parameters(const QString &command, const QStrin
             finish(0);
             return;
         }
-        if (!yes) {
-            // A person at a terminal confirms; a script has to say --yes.
-            m_out << tr("Write %n parameter(s) to the device? [y/N] ", nullptr, int(differences.size())) << Qt::flush;
-            QTextStream in(stdin);
-            const QString answer = in.readLine().trimmed().toLower();
-            if (answer != QLatin1String("y") && answer != tr("y") && answer != QLatin1String("yes")) {
-                m_err << tr("nothing written") << Qt::endl;
-                finish(1);
-                return;
-            }
+        if (yes) {
+            startRestore(differences);
+            return;
         }
-        // EEPROM-aware: only what differs is written, one entry at a time.
-        for (const ParameterDifference &d : differences)
-            m_pendingWrites << qMakePair(d.id, d.newValue);
-        connect(&m_bus, &Bus::writeFinished, this, [this](int ticket, const WriteOutcome &outcome) {
-            if (ticket != m_writeTicket)
-                return;
-            const QString id = m_pendingWrites.takeFirst().first;
-            (outcome.succeeded() ? m_out : m_err) << id << ": " << outcome.message << Qt::endl;
-            if (outcome.succeeded())
-                ++m_restored;
-            else
-                m_failed = true;
-            restoreNext();
-        });
-        restoreNext();
+        // A person at a terminal confirms; a script has to say --yes. The event loop runs
+        // while the question waits, so Ctrl-C ends the command at once.
+        auto *prompt = new Prompt(m_out, 0, this);
+        prompt->ask(tr("Write %n parameter(s) to the device? [y/N] ", nullptr, int(differences.size())),
+                    [this, differences](const QString &text) {
+                        const QString answer = text.toLower();
+                        if (answer != QLatin1String("y") && answer != tr("y") && answer != QLatin1String("yes")) {
+                            m_err << tr("nothing written") << Qt::endl;
+                            finish(exitcode::Failed);
+                            return;
+                        }
+                        startRestore(differences);
+                    });
     });
     return std::nullopt;
+}
+
+void LineCommands::startRestore(const QList<ParameterDifference> &differences)
+{
+    // EEPROM-aware: only what differs is written, one entry at a time.
+    for (const ParameterDifference &d : differences)
+        m_pendingWrites << qMakePair(d.id, d.newValue);
+    m_writesAsked = int(m_pendingWrites.size());
+    connect(&m_bus, &Bus::writeFinished, this, [this](int ticket, const WriteOutcome &outcome) {
+        if (ticket != m_writeTicket)
+            return;
+        m_writeTicket = -1;
+        const QString id = m_pendingWrites.takeFirst().first;
+        (outcome.succeeded() ? m_out : m_err) << id << ": " << outcome.message << Qt::endl;
+        if (outcome.succeeded())
+            ++m_restored;
+        else
+            m_failed = true;
+        restoreNext();
+    });
+    restoreNext();
 }
 
 std::optional<int> LineCommands::report(const QStringList &arguments)
@@ -826,6 +900,8 @@ QList<IdentityCheck::Claim> LineCommands::claims() const
 
 void LineCommands::restoreNext()
 {
+    if (m_interruptCode)
+        return;
     if (m_pendingWrites.isEmpty()) {
         m_out << tr("%n parameter(s) restored and verified", nullptr, m_restored) << Qt::endl;
         finish(m_failed ? 1 : 0);

@@ -34,6 +34,9 @@ public:
     static QStringList commands();
     // Starts a command; an exit code when it ended at once (help, bad arguments).
     std::optional<int> run(const QString &command, const QStringList &arguments);
+    // SIGINT or SIGTERM: stops what is under way and ends with 130 or 143 and a summary
+    // of what was done.
+    void interrupt(int signal);
 
 signals:
     void finished(int exitCode);
@@ -66,10 +69,12 @@ private:
     void readParameters(const std::function<void(const ParameterSet &, const QStringList &failed)> &done);
     void readParametersNow(const std::function<void(const ParameterSet &, const QStringList &failed)> &done);
     void printDifferences(const QList<ParameterDifference> &differences, const QString &oldName, const QString &newName);
+    void startRestore(const QList<ParameterDifference> &differences);
     void restoreNext();
     void printValues(const Target &target, const QStringList &ids);
     void writeNext();
     void finish(int code);
+    QString progressSummary() const;
 
     const FamilyRegistry &m_registry;
     QTextStream &m_out;
@@ -83,6 +88,7 @@ private:
     QStringList m_ids;
     QList<QPair<QString, QString>> m_pendingWrites;
     int m_restored = 0;
+    int m_writesAsked = 0;   // restore: writes in all
     int m_writeTicket = -1;
     bool m_failed = false;
     bool m_json = false;
@@ -90,6 +96,9 @@ private:
     int m_cyclesWanted = 0;
     bool m_finished = false;
     bool m_auditFailed = false;
+    QString m_command;
+    int m_interruptCode = 0;
+    QString m_interruptSummary;
 };
 
 } // namespace jumo

@@ -13,31 +13,36 @@ namespace {
 
 int signalPipe[2] = {-1, -1};
 
-void onSignal(int)
+void onSignal(int signal)
 {
     // Only async-signal-safe work here: wake the event loop through the socket.
-    const char byte = 1;
+    const char byte = char(signal);
     [[maybe_unused]] const ssize_t written = ::write(signalPipe[0], &byte, 1);
 }
 
 } // namespace
 
-void quitOnTerminationSignals()
+void onTerminationSignals(const std::function<void(int)> &handler)
 {
     if (signalPipe[0] >= 0 || ::socketpair(AF_UNIX, SOCK_STREAM, 0, signalPipe) != 0)
         return;
     auto *notifier = new QSocketNotifier(signalPipe[1], QSocketNotifier::Read, QCoreApplication::instance());
-    QObject::connect(notifier, &QSocketNotifier::activated, QCoreApplication::instance(), [] {
+    QObject::connect(notifier, &QSocketNotifier::activated, QCoreApplication::instance(), [handler] {
         char byte = 0;
-        [[maybe_unused]] const ssize_t read = ::read(signalPipe[1], &byte, 1);
-        QCoreApplication::quit();
+        if (::read(signalPipe[1], &byte, 1) == 1)
+            handler(int(byte));
     });
     struct sigaction action = {};
     action.sa_handler = onSignal;
     sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESTART;
+    action.sa_flags = SA_RESTART;   // nothing blocks outside the event loop (prompts included)
     ::sigaction(SIGINT, &action, nullptr);
     ::sigaction(SIGTERM, &action, nullptr);
+}
+
+void quitOnTerminationSignals()
+{
+    onTerminationSignals([](int) { QCoreApplication::quit(); });
 }
 
 } // namespace jumo

@@ -12,6 +12,7 @@
 #include <QScopeGuard>
 #include <QTest>
 
+#include <csignal>
 #include <sys/stat.h>
 
 using namespace jumo;
@@ -40,6 +41,8 @@ private slots:
     void broadcastNeedsALineOfOneFamily();
     void fullDiskKeepsThePreviousFiles();
     void auditFailureIsAFailure();
+    void signalEndsWithASummary_data();
+    void signalEndsWithASummary();
 
 private:
     QTemporaryDir m_logs;
@@ -469,6 +472,66 @@ void tst_JumoctlLine::auditFailureIsAFailure()
     QCOMPARE(r.code, 1);
     QVERIFY2(r.err.contains("not a regular file"), qPrintable(r.err));
     QVERIFY(!QFile::exists(logs.filePath("report.html")));
+}
+
+void tst_JumoctlLine::signalEndsWithASummary_data()
+{
+    QTest::addColumn<QStringList>("arguments");   // FILE: a dTRON backup, 3 parameters apart
+    QTest::addColumn<QString>("waitFor");         // on stdout, before the signal
+    QTest::addColumn<int>("signal");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QString>("summary");
+    QTest::addColumn<int>("writes");              // write frames that may reach the device
+    QTest::newRow("restore prompt, Ctrl-C") << QStringList{"restore", "dtron300@4", "FILE"} << "[y/N]" << SIGINT << 130
+                                            << "interrupted: nothing was written" << 0;
+    QTest::newRow("restore under way, Ctrl-C") << QStringList{"restore", "--yes", "dtron300@4", "FILE"}
+                                               << "confirmed by read-back" << SIGINT << 130
+                                               << " of 3 write(s) done (" << 2;
+    QTest::newRow("scan, SIGTERM") << QStringList{"scan", "--from", "1", "--to", "200"} << "dtron300@4" << SIGTERM << 143
+                                   << "terminated: 4 device(s) found before the scan stopped" << 0;
+    QTest::newRow("monitor, Ctrl-C") << QStringList{"monitor", "ipc300@1", "--jsonl"} << "ipc300@1" << SIGINT << 130
+                                     << "poll cycle(s) printed" << 0;
+}
+
+void tst_JumoctlLine::signalEndsWithASummary()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, waitFor);
+    QFETCH(int, signal);
+    QFETCH(int, exitCode);
+    QFETCH(QString, summary);
+    QFETCH(int, writes);
+    QTemporaryDir dir;
+    const QString file = dir.filePath("dtron.json");
+    SimulatedDevice *dtron = m_sim.line().device(4);
+    const QList<std::pair<const char *, double>> saved{{"setpoint_w2", 120}, {"setpoint_w3", 60}, {"ps1_pb1", 10}};
+    for (const auto &[id, value] : saved)
+        dtron->setNumber(id, value);
+    QCOMPARE(run(QStringList{"backup"} + port() + QStringList{"dtron300@4", file}).code, 0);
+    for (const auto &[id, value] : saved)
+        dtron->setNumber(id, value + 1);
+    arguments.replaceInStrings(QRegularExpression("^FILE$"), file);
+    // Slow replies, so the command is still at work when the signal comes.
+    m_sim.line().setProcessingDelayMs(150);
+    const auto restoreDelay = qScopeGuard([&] { m_sim.line().setProcessingDelayMs(2); });
+
+    const int writesBefore = m_sim.writeFrames();
+    QProcess p;
+    QSignalSpy finished(&p, &QProcess::finished);
+    p.start(QStringLiteral(JUMOCTL_PATH), arguments + port());   // stdin stays open: nobody answers
+    QString out;
+    // The simulator lives in this process: keep its event loop running meanwhile.
+    QTRY_VERIFY2_WITH_TIMEOUT((out += QString::fromLocal8Bit(p.readAllStandardOutput())).contains(waitFor),
+                              qPrintable(out + p.readAllStandardError()), 30000);
+    ::kill(pid_t(p.processId()), signal);
+    QVERIFY2(finished.wait(30000), "the command did not end after the signal");
+    const QString err = QString::fromLocal8Bit(p.readAllStandardError());
+    QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(p.exitCode(), exitCode);
+    QVERIFY2(err.contains(summary), qPrintable(err));
+    QVERIFY2(m_sim.writeFrames() - writesBefore <= writes, qPrintable(QString::number(m_sim.writeFrames() - writesBefore)));
+    QTest::qWait(500);   // nothing more goes out after the end
+    QVERIFY(m_sim.writeFrames() - writesBefore <= writes);
 }
 
 QTEST_GUILESS_MAIN(tst_JumoctlLine)

@@ -6,6 +6,7 @@
 #include "protocol/regularfile.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -23,6 +24,7 @@ private slots:
     void saveReplacesTheWholeFile();
     void failedSaveKeepsThePreviousFile();
     void folderInTheWayIsNamed();
+    void fifoOrDeviceIsNotReplaced();
     void regularFileIsRead();
     void fifoIsRefusedWithoutBlocking();
     void deviceIsRefused();
@@ -91,6 +93,20 @@ void tst_Files::folderInTheWayIsNamed()
     QVERIFY2(error.startsWith("cannot write " + path + ": "), qPrintable(error));
     QVERIFY(!FileSaver::save(m_dir.filePath("missing/report.html"), "report", &error));
     QVERIFY2(error.contains("missing/report.html"), qPrintable(error));
+}
+
+void tst_Files::fifoOrDeviceIsNotReplaced()
+{
+    const QString fifo = m_dir.filePath("report.fifo");
+    QVERIFY(::mkfifo(QFile::encodeName(fifo).constData(), 0600) == 0);
+    QString error;
+    QVERIFY(!FileSaver::save(fifo, "report", &error));
+    QCOMPARE(error, "cannot write " + fifo + ": not a regular file");
+    QVERIFY(QFileInfo(fifo).exists() && !QFileInfo(fifo).isFile());   // still the FIFO
+    const QString device = m_dir.filePath("null.html");   // a link to a device: its target counts
+    QVERIFY(QFile::link("/dev/null", device));
+    QVERIFY(!FileSaver::save(device, "report", &error));
+    QVERIFY(QFileInfo(device).isSymLink());
 }
 
 void tst_Files::regularFileIsRead()
