@@ -62,9 +62,17 @@ int main(int argc, char *argv[])
     const jumo::FamilyRegistry registry = jumo::FamilyRegistry::loadDefault();
     for (const QString &e : registry.errors())
         err << QCoreApplication::translate("main", "refused map file: %1").arg(e) << Qt::endl;
+    bool delayOk = false;
+    bool minResponseOk = false;
+    const int delay = parser.value(QStringLiteral("delay")).toInt(&delayOk);
+    const int minResponse = parser.value(QStringLiteral("min-response")).toInt(&minResponseOk);
+    if (!delayOk || delay < 0 || delay > 10000 || !minResponseOk || minResponse < 0 || minResponse > 500) {
+        err << QCoreApplication::translate("main", "--delay must be 0..10000 ms and --min-response 0..500 ms") << Qt::endl;
+        return 2;
+    }
     jumo::SimulatorLine line;
-    line.setProcessingDelayMs(parser.value(QStringLiteral("delay")).toInt());
-    line.setMinimumResponseTimeMs(parser.value(QStringLiteral("min-response")).toInt());
+    line.setProcessingDelayMs(delay);
+    line.setMinimumResponseTimeMs(minResponse);
     line.setPacing(parser.isSet(QStringLiteral("pace")));
     line.setTickInterval(100);
     if (parser.positionalArguments().isEmpty()) {

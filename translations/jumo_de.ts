@@ -308,7 +308,7 @@ Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 3; --no-identify
 </translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+60"/>
         <source>warning: refused map file: %1</source>
         <translation>Warnung: Map-Datei abgelehnt: %1</translation>
     </message>
@@ -332,7 +332,7 @@ Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 3; --no-identify
     </message>
     <message>
         <location line="+1"/>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>Try &apos;jumoctl %1 --help&apos;.</source>
         <translation>Siehe &apos;jumoctl %1 --help&apos;.</translation>
     </message>
@@ -927,7 +927,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+59"/>
+        <location filename="../app/cli/linecommands.cpp" line="+62"/>
         <source>the audit log did not take a record: %1</source>
         <translation>das Audit-Protokoll hat einen Eintrag nicht aufgenommen: %1</translation>
     </message>
@@ -969,12 +969,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <message>
         <location line="+0"/>
         <location line="+2"/>
-        <location line="+429"/>
+        <location line="+460"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-429"/>
+        <location line="-460"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
@@ -985,12 +985,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+429"/>
+        <location line="+460"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-427"/>
+        <location line="-458"/>
         <source>Never write to the line (control-room mode).</source>
         <translation>Nie auf die Leitung schreiben (Leitwarten-Modus).</translation>
     </message>
@@ -1000,7 +1000,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>--port ist erforderlich</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
         <source>unsupported baud rate or data format: %1 %2</source>
         <translation>Baudrate oder Datenformat nicht unterstützt: %1 %2</translation>
     </message>
@@ -1020,7 +1020,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>--retries muss 0..10 sein</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+31"/>
         <source>&apos;%1&apos; is not a device: use FAMILY@ADDRESS, e.g. ipc300@1 (families: %2)</source>
         <translation>&apos;%1&apos; ist kein Gerät: FAMILY@ADDRESS verwenden, z. B. ipc300@1 (Gerätefamilien: %2)</translation>
     </message>
@@ -1029,8 +1029,13 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <source>device address %1 is outside 1..255</source>
         <translation>Geräteadresse %1 liegt außerhalb von 1..255</translation>
     </message>
+    <message>
+        <location line="+5"/>
+        <source>a %1 cannot have address %2: its addresses are %3..%4</source>
+        <translation>ein %1 kann nicht Adresse %2 haben: seine Adressen sind %3..%4</translation>
+    </message>
     <message numerus="yes">
-        <location line="+27"/>
+        <location line="+32"/>
         <source>%n device(s) found before the scan stopped</source>
         <translation>
             <numerusform>%n Gerät gefunden, bevor die Suche endete</numerusform>
@@ -1132,7 +1137,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Adresse %1 wird abgefragt (%2 von %3)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+6"/>
+        <source>address %1 answers as %2, which every %2 does whatever its own address: not listed</source>
+        <translation>Adresse %1 antwortet als %2, wie es jeder %2 unabhängig von seiner eigenen Adresse tut: nicht aufgeführt</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>address %1 answers, but matches no known family</source>
         <translation>Adresse %1 antwortet, passt aber zu keiner bekannten Gerätefamilie</translation>
     </message>
@@ -1176,13 +1186,13 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+354"/>
-        <location line="+142"/>
+        <location line="+358"/>
+        <location line="+150"/>
         <source>FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="-494"/>
+        <location line="-506"/>
         <source>Entry ids.</source>
         <translation>Kennungen der Einträge.</translation>
     </message>
@@ -1244,7 +1254,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>&apos;%1&apos; hat nicht die Form ID=VALUE</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+11"/>
+        <source>&apos;%1&apos; is given twice</source>
+        <translation>&apos;%1&apos; ist zweimal angegeben</translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>(was %1)</source>
         <translation>(vorher %1)</translation>
     </message>
@@ -1368,7 +1383,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>die Dateien gehören zu verschiedenen oder unbekannten Gerätefamilien: %1, %2</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+25"/>
         <location line="+36"/>
         <source>refused: %1</source>
         <translation>abgelehnt: %1</translation>
@@ -1831,7 +1846,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::MapCommands</name>
     <message>
-        <location filename="../app/cli/mapcommands.cpp" line="+125"/>
+        <location filename="../app/cli/mapcommands.cpp" line="+126"/>
         <source>unknown family &apos;%1&apos; (known: %2)</source>
         <translation>unbekannte Gerätefamilie &apos;%1&apos; (bekannt: %2)</translation>
     </message>
@@ -1939,12 +1954,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
         <source>&apos;%1&apos; is not a 16-bit hex word</source>
         <translation>&apos;%1&apos; ist kein 16-Bit-Hexwort</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>&apos;%1&apos; takes %2 words, %3 given</source>
         <translation>&apos;%1&apos; benötigt %2 Wörter, %3 angegeben</translation>
     </message>
@@ -2387,7 +2402,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ParameterSet</name>
     <message>
-        <location filename="../lib/commissioning/parameterset.cpp" line="+57"/>
+        <location filename="../lib/commissioning/parameterset.cpp" line="+72"/>
         <source>not a parameter file: %1 at byte %2</source>
         <translation>keine Parameterdatei: %1 bei Byte %2</translation>
     </message>
@@ -2952,7 +2967,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ValueCodec</name>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="+88"/>
+        <location filename="../lib/protocol/valuecodec.cpp" line="+96"/>
         <source>Underrange</source>
         <translation>Unterlauf</translation>
     </message>
@@ -6698,7 +6713,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Map-Datei abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
+        <source>--delay must be 0..10000 ms and --min-response 0..500 ms</source>
+        <translation>--delay muss 0..10000 ms und --min-response 0..500 ms sein</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>name at least one device, e.g. ipc300@1</source>
         <translation>mindestens ein Gerät angeben, z. B. ipc300@1</translation>
     </message>

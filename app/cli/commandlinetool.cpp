@@ -53,8 +53,9 @@ void CommandLineTool::interrupt(int signal)
 
 std::optional<int> CommandLineTool::run(const QStringList &arguments)
 {
-    if (arguments.isEmpty() || arguments.constFirst() == QLatin1String("--help")
-        || arguments.constFirst() == QLatin1String("-h") || arguments.constFirst() == QLatin1String("help")) {
+    static const QStringList helpWords{QStringLiteral("--help"), QStringLiteral("--help-all"), QStringLiteral("-h"),
+                                       QStringLiteral("help")};
+    if (arguments.isEmpty() || helpWords.contains(arguments.constFirst())) {
         (arguments.isEmpty() ? m_err : m_out) << usage();
         m_out.flush();
         m_err.flush();

@@ -20,7 +20,8 @@ std::optional<int> CommandParser::parseArguments(const QStringList &arguments, Q
             << tr("Try 'jumoctl %1 --help'.").arg(m_command) << Qt::endl;
         return 2;
     }
-    if (isSet(QStringLiteral("help"))) {
+    // --help-all (Qt's options as well) is --help here: the commands take no Qt options.
+    if (isSet(QStringLiteral("help")) || isSet(QStringLiteral("help-all"))) {
         // helpText() names the program only; the command belongs right after it.
         QString help = helpText();
         const qsizetype programStart = help.indexOf(QLatin1Char(' ')) + 1;

@@ -13,11 +13,14 @@
 #include "logs/eventlog.h"
 #include "protocol/familyregistry.h"
 #include "protocol/filesaver.h"
+#include "protocol/printable.h"
 #include "protocol/regularfile.h"
 #include "reportwriter.h"
 #include "logs/writeaudit.h"
 
 #include <QDateTime>
+#include <QFileInfo>
+#include <QRegularExpression>
 
 #include <csignal>
 #include <QJsonArray>
@@ -117,6 +120,9 @@ std::optional<int> LineCommands::openLine(CommandParser &parser)
         m_err << tr("--port is required") << Qt::endl;
         return 2;
     }
+    // A path is a path: Qt would put /dev/ in front of a relative one ("line/master").
+    if (settings.portName.contains(QLatin1Char('/')) && !settings.portName.startsWith(QLatin1Char('/')))
+        settings.portName = QFileInfo(settings.portName).absoluteFilePath();
     bool ok = false;
     const int baud = parser.value(QStringLiteral("baud")).toInt(&ok);
     const std::optional<LineFormat> format = LineFormat::parse(ok ? baud : 0, parser.value(QStringLiteral("format")));
@@ -159,13 +165,19 @@ std::optional<int> LineCommands::openLine(CommandParser &parser)
     return std::nullopt;
 }
 
+bool LineCommands::isDeviceName(const QString &text)
+{
+    static const QRegularExpression pattern(QRegularExpression::anchoredPattern(QStringLiteral("[a-z][a-z0-9_]*@[0-9]{1,3}")));
+    return pattern.match(text).hasMatch();
+}
+
 bool LineCommands::parseDevice(const QString &text, Target &target)
 {
     const QString family = text.section(QLatin1Char('@'), 0, 0);
     bool ok = false;
     const int address = text.section(QLatin1Char('@'), 1).toInt(&ok);
     target.map = m_registry.family(family);
-    if (!target.map || !ok || !text.contains(QLatin1Char('@'))) {
+    if (!target.map || !ok || !isDeviceName(text)) {
         m_err << tr("'%1' is not a device: use FAMILY@ADDRESS, e.g. ipc300@1 (families: %2)")
                          .arg(text, m_registry.familyIds().join(QStringLiteral(", ")))
               << Qt::endl;
@@ -173,6 +185,16 @@ bool LineCommands::parseDevice(const QString &text, Target &target)
     }
     if (address < 1 || address > 255) {
         m_err << tr("device address %1 is outside 1..255").arg(address) << Qt::endl;
+        return false;
+    }
+    const ProtocolInfo &p = target.map->protocol;
+    if ((address < p.addressMin || address > p.addressMax) && address != p.alwaysAnswersAddress.value_or(0)) {
+        m_err << tr("a %1 cannot have address %2: its addresses are %3..%4")
+                         .arg(target.map->family)
+                         .arg(address)
+                         .arg(p.addressMin)
+                         .arg(p.addressMax)
+              << Qt::endl;
         return false;
     }
     target.address = quint8(address);
@@ -271,6 +293,14 @@ std::optional<int> LineCommands::scan(const QStringList &arguments)
     });
     connect(m_scanner.get(), &DeviceScanner::found, this, [this](int address, std::shared_ptr<const RegisterMap> map) {
         m_err << '\r' << QString(40, QLatin1Char(' ')) << '\r';
+        if (address == map->protocol.alwaysAnswersAddress) {
+            // Every device of the family answers there, whatever its own address.
+            m_err << tr("address %1 answers as %2, which every %2 does whatever its own address: not listed")
+                             .arg(address)
+                             .arg(map->family)
+                  << Qt::endl;
+            return;
+        }
         m_out << deviceName(*map, quint8(address)) << '\t' << map->name << Qt::endl;
         m_targets << Target{map, quint8(address), 0, 0};
     });
@@ -318,7 +348,7 @@ void LineCommands::printValues(const Target &target, const QStringList &ids)
                     : s && s->error == ReadError::NotAvailable ? tr("not available on this device (exception 2)")
                                                                  : tr("no answer");
         } else {
-            shown = s->value.display;
+            shown = printable(s->value.display);
             if (s->value.isOk() && !e->unit.isEmpty())
                 shown += QLatin1Char(' ') + e->unit;
         }
@@ -451,6 +481,10 @@ std::optional<int> LineCommands::write(const QStringList &arguments)
         const EncodeResult encoded = ValueCodec::encode(*e, *target.map, assignment.mid(eq + 1));
         if (!encoded.ok()) {
             m_err << encoded.error << Qt::endl;
+            return 2;
+        }
+        if (std::any_of(m_pendingWrites.cbegin(), m_pendingWrites.cend(), [&](const auto &w) { return w.first == id; })) {
+            m_err << tr("'%1' is given twice").arg(id) << Qt::endl;
             return 2;
         }
         m_pendingWrites << qMakePair(id, assignment.mid(eq + 1));
@@ -668,8 +702,8 @@ void LineCommands::printDifferences(const QList<ParameterDifference> &difference
     }
     m_out << tr("%n parameter(s) differ (%1 -> %2):", nullptr, int(differences.size())).arg(oldName, newName) << Qt::endl;
     for (const ParameterDifference &d : differences) {
-        m_out << "  " << d.id << " (" << d.label << "): " << (d.oldValue.isNull() ? tr("(missing)") : d.oldDisplay)
-              << " -> " << (d.newValue.isNull() ? tr("(missing)") : d.newDisplay);
+        m_out << "  " << d.id << " (" << d.label << "): " << (d.oldValue.isNull() ? tr("(missing)") : printable(d.oldDisplay))
+              << " -> " << (d.newValue.isNull() ? tr("(missing)") : printable(d.newDisplay));
         if (!d.unit.isEmpty())
             m_out << ' ' << d.unit;
         m_out << Qt::endl;
@@ -709,7 +743,7 @@ std::optional<int> LineCommands::parameters(const QString &command, const QStrin
         return set;
     };
 
-    if (command == QLatin1String("diff") && !first.contains(QLatin1Char('@'))) {
+    if (command == QLatin1String("diff") && !isDeviceName(first)) {
         const std::optional<ParameterSet> a = load(first);
         const std::optional<ParameterSet> b = load(path);
         if (!a || !b)
@@ -718,6 +752,14 @@ std::optional<int> LineCommands::parameters(const QString &command, const QStrin
         if (!map || a->family != b->family) {
             m_err << tr("the files are for different or unknown families: %1, %2").arg(a->family, b->family) << Qt::endl;
             return 2;
+        }
+        // Checked as a file compared with a device is: ids, parameters, values.
+        for (const auto &[set, name] : {std::make_pair(&*a, first), std::make_pair(&*b, path)}) {
+            const QString problem = set->incompatibility(*map, QString());
+            if (!problem.isEmpty()) {
+                m_err << name << ": " << problem << Qt::endl;
+                return 2;
+            }
         }
         const QList<ParameterDifference> d = a->differences(*b, *map);
         printDifferences(d, first, path);

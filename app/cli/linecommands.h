@@ -52,6 +52,8 @@ private:
 
     void addLineOptions(CommandParser &parser, bool namesDevices = true);
     std::optional<int> openLine(CommandParser &parser);
+    // FAMILY@ADDRESS as a whole; anything else (a file name with an '@') is not a device.
+    static bool isDeviceName(const QString &text);
     bool parseDevice(const QString &text, Target &target);
     std::optional<int> scan(const QStringList &arguments);
     std::optional<int> read(const QStringList &arguments, bool dump);

@@ -9,6 +9,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 
 namespace jumo {
 
@@ -273,16 +274,15 @@ int MapCommands::decode(const QStringList &arguments)
         return 1;
     }
     QList<quint16> words;
-    for (QString text : std::as_const(args)) {
-        if (text.startsWith(QLatin1String("0x"), Qt::CaseInsensitive))
-            text = text.mid(2);
-        bool ok = false;
-        const uint w = text.toUInt(&ok, 16);
-        if (!ok || text.size() > 4) {
+    static const QRegularExpression hexWord(
+            QRegularExpression::anchoredPattern(QStringLiteral("(0[xX])?[0-9A-Fa-f]{1,4}")));
+    for (const QString &text : std::as_const(args)) {
+        if (!hexWord.match(text).hasMatch()) {
             m_err << tr("'%1' is not a 16-bit hex word").arg(text) << Qt::endl;
             return 2;
         }
-        words << quint16(w);
+        const bool prefixed = text.startsWith(QLatin1String("0x"), Qt::CaseInsensitive);
+        words << quint16((prefixed ? text.mid(2) : text).toUInt(nullptr, 16));
     }
     if (words.size() != entry->wordCount()) {
         m_err << tr("'%1' takes %2 words, %3 given").arg(id).arg(entry->wordCount()).arg(words.size()) << Qt::endl;

@@ -7,6 +7,21 @@
 
 namespace jumo {
 
+namespace {
+
+// As the device stores them, except that 0 and -0 are one value (0.0 == -0.0).
+bool sameValue(const RegisterEntry &e, const RegisterMap &map, const QList<quint16> &a, const QList<quint16> &b)
+{
+    if (a == b)
+        return true;
+    if (e.type != ValueType::Float)
+        return false;
+    const WordOrder order = map.protocol.floatWordOrder;
+    return ValueCodec::decodeFloat(a[0], a[1], order) == ValueCodec::decodeFloat(b[0], b[1], order);
+}
+
+} // namespace
+
 bool ParameterSet::isParameter(const RegisterEntry &e)
 {
     static const QStringList processControls{"command", "override", "binary_outputs", "digital_output",
@@ -113,7 +128,7 @@ QList<ParameterDifference> ParameterSet::differences(const ParameterSet &other, 
         if (same) {
             const EncodeResult a = ValueCodec::encode(*e, map, values.value(id));
             const EncodeResult b = ValueCodec::encode(*e, map, other.values.value(id));
-            same = a.ok() && b.ok() ? a.words == b.words : values.value(id) == other.values.value(id);
+            same = a.ok() && b.ok() ? sameValue(*e, map, a.words, b.words) : values.value(id) == other.values.value(id);
         }
         if (same)
             continue;

@@ -1,5 +1,5 @@
 // CSV quoting shared by every CSV the tools write (map, monitor, logs, exports): a field
-// with a comma, quote or line break is quoted, its quotes doubled.
+// with a comma, quote or line break (CR or LF) is quoted, its quotes doubled.
 #pragma once
 
 #include <QString>
@@ -8,7 +8,8 @@ namespace jumo {
 
 inline QString csvField(QString text)
 {
-    if (text.contains(QLatin1Char(',')) || text.contains(QLatin1Char('"')) || text.contains(QLatin1Char('\n'))) {
+    if (text.contains(QLatin1Char(',')) || text.contains(QLatin1Char('"')) || text.contains(QLatin1Char('\n'))
+        || text.contains(QLatin1Char('\r'))) {
         text.replace(QLatin1String("\""), QLatin1String("\"\""));
         return QLatin1Char('"') + text + QLatin1Char('"');
     }

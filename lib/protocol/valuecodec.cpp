@@ -1,5 +1,6 @@
 #include "protocol/valuecodec.h"
 
+#include <QRegularExpression>
 #include <QStringList>
 
 #include <bit>
@@ -18,17 +19,24 @@ constexpr int wirePositions[4][4] = {
     {3, 2, 1, 0},   // DCBA
 };
 
+// "42", "-7", "+3" or "0x1F": the whole text, nothing Qt's own parsers let through
+// besides ("0x-1", "0x0x7F", signs after the 0x).
 std::optional<qint64> parseInteger(const QString &text)
 {
+    static const QRegularExpression decimal(QRegularExpression::anchoredPattern(QStringLiteral("[+-]?[0-9]{1,18}")));
+    static const QRegularExpression hex(QRegularExpression::anchoredPattern(QStringLiteral("0[xX][0-9A-Fa-f]{1,15}")));
     const QString t = text.trimmed();
-    bool ok = false;
-    qint64 v = 0;
-    if (t.startsWith(QLatin1String("0x"), Qt::CaseInsensitive))
-        v = t.mid(2).toLongLong(&ok, 16);
-    else
-        v = t.toLongLong(&ok, 10);
-    return ok ? std::optional<qint64>(v) : std::nullopt;
+    if (hex.match(t).hasMatch())
+        return t.mid(2).toLongLong(nullptr, 16);
+    if (decimal.match(t).hasMatch())
+        return t.toLongLong();
+    return std::nullopt;
 }
+
+// The largest magnitude that still rounds to a finite float: FLT_MAX and half a unit
+// in its last place. What exactText() writes for FLT_MAX (3.40282347e+38) lies above
+// FLT_MAX as a double, and must come back as FLT_MAX.
+const double floatLimit = double(std::numeric_limits<float>::max()) + std::ldexp(1.0, 103);
 
 } // namespace
 
@@ -270,7 +278,7 @@ EncodeResult ValueCodec::encode(const RegisterEntry &entry, const RegisterMap &m
             r.error = tr("'%1' is not a number").arg(t);
             break;
         }
-        if (std::fabs(v) > double(std::numeric_limits<float>::max())) {
+        if (std::fabs(v) >= floatLimit) {
             r.error = tr("%1 is too large for a float").arg(t);
             break;
         }
@@ -332,7 +340,7 @@ EncodeResult ValueCodec::encode(const RegisterEntry &entry, const RegisterMap &m
             }
             value = quint32(*v);
         } else {
-            for (const QString &part : t.split(QLatin1Char('+'), Qt::SkipEmptyParts)) {
+            for (const QString &part : t.split(QLatin1Char('+'))) {
                 const BitDefinition *b = entry.bitById(part.trimmed());
                 if (!b || b->reserved) {
                     r.error = tr("'%1' is not a bit of '%2'").arg(part.trimmed(), entry.id);

@@ -43,6 +43,10 @@ private slots:
     void auditFailureIsAFailure();
     void signalEndsWithASummary_data();
     void signalEndsWithASummary();
+    void largestFloatRoundTrips();
+    void deviceTextsCannotDriveTheTerminal();
+    void alwaysAnsweringAddressIsNoDevice();
+    void relativePortIsAPath();
 
 private:
     QTemporaryDir m_logs;
@@ -532,6 +536,59 @@ void tst_JumoctlLine::signalEndsWithASummary()
     QVERIFY2(m_sim.writeFrames() - writesBefore <= writes, qPrintable(QString::number(m_sim.writeFrames() - writesBefore)));
     QTest::qWait(500);   // nothing more goes out after the end
     QVERIFY(m_sim.writeFrames() - writesBefore <= writes);
+}
+
+void tst_JumoctlLine::largestFloatRoundTrips()
+{
+    SimulatedDevice *dtron = m_sim.line().device(4);
+    const double w2 = dtron->number("setpoint_w2");
+    const auto restore = qScopeGuard([&] { dtron->setNumber("setpoint_w2", w2); });
+    QVERIFY(dtron->setNumber("setpoint_w2", double(std::numeric_limits<float>::max())));
+    QTemporaryDir dir;
+    const QString file = dir.filePath("dtron.json");
+    QCOMPARE(run(QStringList{"backup"} + port() + QStringList{"dtron300@4", file}).code, 0);
+    Run r = run(QStringList{"diff"} + port() + QStringList{"dtron300@4", file});
+    QVERIFY2(r.code == 0 && r.out.contains("no differences"), qPrintable(r.out + r.err));
+    const int writesBefore = m_sim.writeFrames();
+    r = run(QStringList{"restore", "--yes"} + port() + QStringList{"dtron300@4", file});
+    QCOMPARE(r.code, 0);
+    QCOMPARE(m_sim.writeFrames(), writesBefore);
+}
+
+void tst_JumoctlLine::deviceTextsCannotDriveTheTerminal()
+{
+    SimulatedDevice *ipc = m_sim.line().device(1);
+    QVERIFY(ipc->setText("device_name", "IPC\x1b[2J\r"));
+    const auto restore = qScopeGuard([&] { ipc->setText("device_name", "IPC300  "); });
+    Run r = run(QStringList{"read"} + port() + QStringList{"ipc300@1", "device_name"});
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.contains("device_name = IPC\\x1b[2J\\x0d  [ok]"), qPrintable(r.out));
+    QVERIFY(!r.out.contains(QChar(0x1b)));
+    r = run(QStringList{"monitor"} + port() + QStringList{"ipc300@1", "--ids", "device_name", "--cycles", "1", "--csv"});
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.contains(",ipc300@1,device_name,\"IPC\x1b[2J\r\","), qPrintable(r.out));   // data as it is, quoted
+}
+
+void tst_JumoctlLine::alwaysAnsweringAddressIsNoDevice()
+{
+    // The IPC 300 at address 1 also answers at 255, as every IPC 300 does.
+    const Run r = run(QStringList{"scan"} + port() + QStringList{"--from", "253", "--to", "255"});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(!r.out.contains("@255"), qPrintable(r.out));
+    QVERIFY2(r.err.contains("address 255 answers as ipc300, which every ipc300 does whatever its own address"),
+             qPrintable(r.err));
+}
+
+void tst_JumoctlLine::relativePortIsAPath()
+{
+    // "line/master", as a user types it in the folder above: no "./" in front.
+    const QFileInfo master(m_line.masterEnd());
+    const QString before = QDir::currentPath();
+    QVERIFY(QDir::setCurrent(master.dir().absolutePath() + "/.."));
+    const auto back = qScopeGuard([&] { QDir::setCurrent(before); });
+    const QString relative = master.dir().dirName() + "/" + master.fileName();
+    const Run r = run({"read", "--port", relative, "--baud", "19200", "dtron300@4", "setpoint"});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
 }
 
 QTEST_GUILESS_MAIN(tst_JumoctlLine)

@@ -1,6 +1,8 @@
 // jumoctl's map commands, run in-process and as the real executable: the CSV contract
 // scripts rely on, --help for every command, and non-zero exits with a reason on stderr.
 #include "clirun.h"
+#include "commissioning/parameterset.h"
+#include "protocol/filesaver.h"
 #include "protocol/familyregistry.h"
 #include "mapcommands.h"
 
@@ -57,6 +59,11 @@ private slots:
     void badArguments_data();
     void badArguments();
     void realExecutableExitCodes();
+    void helpAllIsHelp_data();
+    void helpAllIsHelp();
+    void diffOfTwoFilesChecksBoth_data();
+    void diffOfTwoFilesChecksBoth();
+    void simulatorRefusesBadNumbers();
 };
 
 void tst_Jumoctl::initTestCase()
@@ -172,6 +179,21 @@ void tst_Jumoctl::badArguments_data()
                                        << "'load_currant' is not an entry of ipc300";
     QTest::newRow("plan of unknown id") << QStringList{"plan", "quantrol", "nothing"} << 1 << "'nothing' is not an entry";
     QTest::newRow("plan of write-only") << QStringList{"plan", "quantrol", "controller_functions"} << 1 << "write-only";
+    QTest::newRow("decode hex prefix twice") << QStringList{"decode", "quantrol", "controller_status", "0x0x7F"} << 2
+                                             << "'0x0x7F' is not a 16-bit hex word";
+    // Refused before any line is opened (the port does not exist).
+    const QStringList noLine{"--port", "/nonexistent/tty"};
+    QTest::newRow("address outside the family") << QStringList{"read", "dtron300@255", "setpoint"} + noLine << 2
+                                                << "a dtron300 cannot have address 255: its addresses are 1..254";
+    QTest::newRow("one id written twice") << QStringList{"write", "dtron300@4", "setpoint_w2=1", "setpoint_w2=2"} + noLine
+                                          << 2 << "'setpoint_w2' is given twice";
+    QTest::newRow("bits of nothing") << QStringList{"write", "dtron300@4", "controller_functions=+"} + noLine << 2
+                                     << "is not a bit of";
+    QTest::newRow("hex with a sign") << QStringList{"write", "dtron300@4", "manual_output=0x-1"} + noLine << 2
+                                     << "'0x-1' is not a whole number";
+    QTest::newRow("broadcast without a clear line") << QStringList{"write", "dtron300@0", "setpoint_w2=1", "--verify", "4"}
+                                                           + noLine
+                                                    << 2 << "give --scan-first";
 }
 
 void tst_Jumoctl::badArguments()
@@ -196,6 +218,74 @@ void tst_Jumoctl::realExecutableExitCodes()
     QVERIFY(p.waitForFinished(30000));
     QCOMPARE(p.exitCode(), 1);
     QVERIFY(p.readAllStandardError().contains("unknown family 'nope'"));
+}
+
+void tst_Jumoctl::helpAllIsHelp_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("start");
+    QTest::newRow("jumoctl") << QStringList{"--help-all"} << "Usage: jumoctl COMMAND";
+    QTest::newRow("read") << QStringList{"read", "--help-all"} << "Usage: jumoctl read [options]";
+    QTest::newRow("map") << QStringList{"map", "--help-all"} << "Usage: jumoctl map [options]";
+}
+
+void tst_Jumoctl::helpAllIsHelp()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QString, start);
+    const Run r = run(args);
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.startsWith(start), qPrintable(r.out + r.err));
+}
+
+void tst_Jumoctl::diffOfTwoFilesChecksBoth_data()
+{
+    QTest::addColumn<QString>("id");
+    QTest::addColumn<QString>("value");
+    QTest::addColumn<int>("code");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("the same") << "setpoint_w2" << "120" << 0 << "no differences";
+    QTest::newRow("zero and negative zero") << "setpoint_w3" << "-0" << 0 << "no differences";
+    QTest::newRow("a difference") << "setpoint_w2" << "121" << 1 << "1 parameter(s) differ";
+    QTest::newRow("unknown id") << "setpoint_w9" << "1" << 2 << "'setpoint_w9' in the file is no parameter of dtron300";
+    QTest::newRow("not a parameter") << "filtered_process_value" << "1" << 2
+                                     << "'filtered_process_value' in the file is no parameter of dtron300";
+    QTest::newRow("not a value") << "setpoint_w2" << "abc" << 2 << "'setpoint_w2' in the file: 'abc' is not a number";
+    QTest::newRow("largest float") << "setpoint_w2" << "3.40282347e+38" << 1 << "1 parameter(s) differ";
+}
+
+void tst_Jumoctl::diffOfTwoFilesChecksBoth()
+{
+    QFETCH(QString, id);
+    QFETCH(QString, value);
+    QFETCH(int, code);
+    QFETCH(QString, message);
+    // A file name with an '@' in it is still a file.
+    QTemporaryDir dir;
+    const QString first = dir.filePath("oven@line1.json");
+    const QString second = dir.filePath("oven@line2.json");
+    ParameterSet set;
+    set.family = "dtron300";
+    set.address = 4;
+    set.values = {{"setpoint_w2", "120"}, {"setpoint_w3", "0"}};
+    QString error;
+    QVERIFY(FileSaver::save(first, set.toJson(), &error));
+    set.values.insert(id, value);
+    QVERIFY(FileSaver::save(second, set.toJson(), &error));
+    for (const QStringList &order : {QStringList{first, second}, QStringList{second, first}}) {
+        const Run r = run(QStringList{"diff"} + order);
+        QCOMPARE(r.code, code);
+        QVERIFY2((r.out + r.err).contains(message), qPrintable(r.out + r.err));
+    }
+}
+
+void tst_Jumoctl::simulatorRefusesBadNumbers()
+{
+    QProcess p;
+    p.start(QStringLiteral(JUMO_SIM_PATH), {"--delay", "abc", "--pty", QDir::tempPath(), "ipc300@1"});
+    QVERIFY(p.waitForFinished(30000));
+    QCOMPARE(p.exitCode(), 2);
+    QVERIFY(p.readAllStandardError().contains("--delay must be 0..10000 ms"));
 }
 
 QTEST_GUILESS_MAIN(tst_Jumoctl)

@@ -27,6 +27,7 @@ private slots:
     void refusesBadFiles();
     void incompatibility();
     void differencesCompareStoredWords();
+    void zeroAndNegativeZeroAreEqual();
 };
 
 void tst_ParameterSet::holdsParametersNotCommandsOrOutputs()
@@ -118,6 +119,20 @@ void tst_ParameterSet::differencesCompareStoredWords()
     QCOMPARE(d[0].id, QString("setpoint_sp1"));
     QCOMPARE(d[0].oldDisplay, QString("25"));
     QCOMPARE(d[0].newDisplay, QString("26"));
+}
+
+void tst_ParameterSet::zeroAndNegativeZeroAreEqual()
+{
+    ParameterSet a;
+    a.family = "dtron300";
+    a.values.insert("setpoint_w2", "0");
+    a.values.insert("setpoint_w3", "-0");
+    ParameterSet b = a;
+    b.values.insert("setpoint_w2", "-0");
+    b.values.insert("setpoint_w3", "0.0");
+    QCOMPARE(a.differences(b, map("dtron300")).size(), 0);
+    b.values.insert("setpoint_w3", "1e-45");   // the smallest float is no zero
+    QCOMPARE(a.differences(b, map("dtron300")).size(), 1);
 }
 
 QTEST_GUILESS_MAIN(tst_ParameterSet)

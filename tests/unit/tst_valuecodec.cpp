@@ -40,6 +40,8 @@ private slots:
     void encodeCommandWordsAddActivation();
     void overrideAcceptsRestoreValue();
     void decodeRefusesWrongWordCount();
+    void floatExtremesRoundTrip_data();
+    void floatExtremesRoundTrip();
 };
 
 void tst_ValueCodec::wordOrders_data()
@@ -191,6 +193,14 @@ void tst_ValueCodec::encodeRefusesBadInput_data()
     QTest::newRow("int16 overflow") << "quantrol" << "controller_y0" << "40000" << "does not fit";
     QTest::newRow("unknown bit") << "quantrol" << "binary_output_control" << "output_k9" << "is not a bit of";
     QTest::newRow("override below -1999") << "quantrol" << "ram_controller_setpoint" << "-2000" << "outside the range";
+    // Integers as a whole text: Qt's own parsers took these.
+    QTest::newRow("hex with a sign") << "dtron300" << "manual_output" << "0x-1" << "is not a whole number";
+    QTest::newRow("hex prefix twice") << "dtron300" << "manual_output" << "0x0x7F" << "is not a whole number";
+    QTest::newRow("sign after a sign") << "dtron300" << "manual_output" << "+-1" << "is not a whole number";
+    QTest::newRow("no bit between the plus signs") << "dtron300" << "controller_functions" << "+" << "is not a bit of";
+    QTest::newRow("an empty bit") << "dtron300" << "controller_functions" << "automatic_mode++controller_off"
+                                  << "is not a bit of";
+    QTest::newRow("beyond the largest float") << "dtron300" << "setpoint" << "3.4028236e38" << "too large for a float";
 }
 
 void tst_ValueCodec::encodeRefusesBadInput()
@@ -238,6 +248,29 @@ void tst_ValueCodec::decodeRefusesWrongWordCount()
     const DecodedValue v = ValueCodec::decode(*m.entry("load_current"), m, words({0x70A3}));
     QCOMPARE(v.status, ValueStatus::DecodeError);
     QVERIFY(!v.value.isValid());
+}
+
+void tst_ValueCodec::floatExtremesRoundTrip_data()
+{
+    QTest::addColumn<float>("value");
+    QTest::newRow("largest") << std::numeric_limits<float>::max();
+    QTest::newRow("largest negative") << -std::numeric_limits<float>::max();
+    QTest::newRow("smallest normal") << std::numeric_limits<float>::min();
+    QTest::newRow("smallest denormal") << std::numeric_limits<float>::denorm_min();
+    QTest::newRow("a third") << 1.0f / 3.0f;
+}
+
+void tst_ValueCodec::floatExtremesRoundTrip()
+{
+    // What a device reports is saved as exactText() and must encode to the same words.
+    QFETCH(float, value);
+    const RegisterMap &d = family("dtron300");
+    const RegisterEntry &setpoint = *d.entry("setpoint");   // a float without a range
+    const QList<quint16> reported = ValueCodec::encodeFloat(value, d.protocol.floatWordOrder);
+    const QString saved = ValueCodec::exactText(setpoint, d, reported);
+    const EncodeResult back = ValueCodec::encode(setpoint, d, saved);
+    QVERIFY2(back.ok(), qPrintable(saved + ": " + back.error));
+    QCOMPARE(back.words, reported);
 }
 
 QTEST_GUILESS_MAIN(tst_ValueCodec)
