@@ -2061,6 +2061,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+4"/>
+        <source>malformed JSON at byte %1: a control character</source>
+        <translation>fehlerhaftes JSON bei Byte %1: ein Steuerzeichen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>the top level must be a JSON object</source>
         <translation>die oberste Ebene muss ein JSON-Objekt sein</translation>
     </message>
@@ -2402,9 +2407,14 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ParameterSet</name>
     <message>
-        <location filename="../lib/commissioning/parameterset.cpp" line="+72"/>
+        <location filename="../lib/commissioning/parameterset.cpp" line="+73"/>
         <source>not a parameter file: %1 at byte %2</source>
         <translation>keine Parameterdatei: %1 bei Byte %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>not a parameter file: a control character at byte %1</source>
+        <translation>keine Parameterdatei: ein Steuerzeichen bei Byte %1</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2417,12 +2427,22 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Version %1 der Parameterdatei wird nicht unterstützt (erwartet: %2)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+4"/>
         <source>the parameter file lacks &quot;family&quot; or &quot;values&quot;</source>
         <translation>der Parameterdatei fehlt &quot;family&quot; oder &quot;values&quot;</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+11"/>
+        <source>&apos;time&apos; is no ISO 8601 time: %1</source>
+        <translation>&apos;time&apos; ist keine ISO-8601-Zeit: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&apos;identity&apos; must be an object</source>
+        <translation>&apos;identity&apos; muss ein Objekt sein</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>the value of &apos;%1&apos; must be a text</source>
         <translation>der Wert von &apos;%1&apos; muss ein Text sein</translation>
     </message>

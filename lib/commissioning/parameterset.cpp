@@ -1,5 +1,6 @@
 #include "commissioning/parameterset.h"
 
+#include "protocol/jsonfieldreader.h"
 #include "protocol/valuecodec.h"
 
 #include <QJsonDocument>
@@ -70,23 +71,36 @@ std::optional<ParameterSet> ParameterSet::fromJson(const QByteArray &json, QStri
     };
     if (parseError.error != QJsonParseError::NoError)
         return fail(tr("not a parameter file: %1 at byte %2").arg(parseError.errorString()).arg(parseError.offset));
+    if (const qsizetype at = JsonFieldReader::controlCharacterAt(json); at >= 0)
+        return fail(tr("not a parameter file: a control character at byte %1").arg(at));
     const QJsonObject root = doc.object();
-    if (root.value("format").toString() != QLatin1String("jumo-parameters"))
+    if (root.value("format") != QJsonValue(QStringLiteral("jumo-parameters")))
         return fail(tr("not a parameter file (no \"format\": \"jumo-parameters\")"));
-    if (root.value("version").toInt() != formatVersion)
+    if (root.value("version") != QJsonValue(formatVersion))
         return fail(tr("parameter file version %1 is not supported (expected %2)")
-                            .arg(root.value("version").toInt())
+                            .arg(root.value("version").toVariant().toString())
                             .arg(formatVersion));
-    ParameterSet set;
-    set.family = root.value("family").toString();
-    set.address = root.value("address").toInt();
-    set.time = QDateTime::fromString(root.value("time").toString(), Qt::ISODateWithMs);
-    set.softwareVersion = root.value("softwareVersion").toString();
-    if (set.family.isEmpty() || !root.value("values").isObject())
+    if (!root.value("family").isString() || !root.value("values").isObject())
         return fail(tr("the parameter file lacks \"family\" or \"values\""));
+    // Strict like the maps: a file that was edited wrongly is refused, not half-read.
+    JsonFieldReader fields{QString()};   // no source: the caller names the file
+    fields.checkKeys(root, {"format", "version", "family", "address", "time", "softwareVersion", "identity", "values"},
+                     QString());
+    ParameterSet set;
+    set.family = fields.requireString(root, "family", QString());
+    set.address = fields.optionalInt(root, "address", 0, 255, QString()).value_or(0);
+    const QString time = fields.optionalString(root, "time", QString());
+    set.time = QDateTime::fromString(time, Qt::ISODateWithMs);
+    if (!time.isEmpty() && !set.time.isValid())
+        fields.fail(QString(), tr("'time' is no ISO 8601 time: %1").arg(time));
+    set.softwareVersion = fields.optionalString(root, "softwareVersion", QString());
+    if (root.contains("identity") && !root.value("identity").isObject())
+        fields.fail(QString(), tr("'identity' must be an object"));
     const QJsonObject identityObject = root.value("identity").toObject();
     for (auto it = identityObject.begin(); it != identityObject.end(); ++it)
-        set.identity.insert(it.key(), it.value().toString());
+        set.identity.insert(it.key(), fields.optionalString(identityObject, it.key(), QStringLiteral("identity")));
+    if (!fields.errors().isEmpty())
+        return fail(fields.errors().join(QStringLiteral("; ")));
     const QJsonObject valueObject = root.value("values").toObject();
     for (auto it = valueObject.begin(); it != valueObject.end(); ++it) {
         if (!it.value().isString())

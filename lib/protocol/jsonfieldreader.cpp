@@ -41,8 +41,8 @@ QString shown(const QJsonValue &value)
 
 void JsonFieldReader::fail(const QString &where, const QString &problem)
 {
-    m_errors << (where.isEmpty() ? QStringLiteral("%1: %2").arg(m_source, problem)
-                                 : QStringLiteral("%1: %2: %3").arg(m_source, where, problem));
+    const QString located = where.isEmpty() ? problem : QStringLiteral("%1: %2").arg(where, problem);
+    m_errors << (m_source.isEmpty() ? located : QStringLiteral("%1: %2").arg(m_source, located));
 }
 
 void JsonFieldReader::checkKeys(const QJsonObject &object, const QStringList &allowed, const QString &where)
@@ -189,6 +189,16 @@ std::optional<int> JsonFieldReader::decimalKey(const QString &key, int minimum, 
     if (value < minimum || value > maximum)
         return std::nullopt;
     return value;
+}
+
+qsizetype JsonFieldReader::controlCharacterAt(const QByteArray &json)
+{
+    for (qsizetype i = 0; i < json.size(); ++i) {
+        const auto c = uchar(json[i]);
+        if (c < 0x20 && c != '\t' && c != '\n' && c != '\r')
+            return i;
+    }
+    return -1;
 }
 
 bool JsonFieldReader::isId(const QString &text)

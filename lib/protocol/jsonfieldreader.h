@@ -18,6 +18,7 @@ class JsonFieldReader
     Q_DECLARE_TR_FUNCTIONS(jumo::MapLoader)
 
 public:
+    // Messages start with the source ("file: "), unless it is empty.
     explicit JsonFieldReader(QString source) : m_source(std::move(source)) { }
 
     const QString &source() const { return m_source; }
@@ -44,6 +45,9 @@ public:
     static std::optional<int> decimalKey(const QString &key, int minimum, int maximum);
     // Lower case letters, digits and '_', starting with a letter; the whole string.
     static bool isId(const QString &text);
+    // Where the text has a raw control character (JSON allows only tab, CR and LF
+    // between tokens, none in strings; Qt's parser lets a NUL through), or -1.
+    static qsizetype controlCharacterAt(const QByteArray &json);
 
 private:
     QString m_source;

@@ -35,6 +35,10 @@ public:
             fail(QString(), tr("malformed JSON at byte %1: %2").arg(parseError.offset).arg(parseError.errorString()));
             return finish(std::nullopt);
         }
+        if (const qsizetype at = controlCharacterAt(json); at >= 0) {
+            fail(QString(), tr("malformed JSON at byte %1: a control character").arg(at));
+            return finish(std::nullopt);
+        }
         if (!doc.isObject()) {
             fail(QString(), tr("the top level must be a JSON object"));
             return finish(std::nullopt);

@@ -77,6 +77,17 @@ void tst_ParameterSet::refusesBadFiles_data()
     QTest::newRow("number instead of text")
             << QByteArray("{\"format\": \"jumo-parameters\", \"version\": 1, \"family\": \"ipc300\", \"values\": {\"input_setpoint\": 5}}")
             << "must be a text";
+    const QByteArray head("{\"format\": \"jumo-parameters\", \"version\": 1, \"family\": \"ipc300\", \"values\": {}, ");
+    QTest::newRow("version as a text") << QByteArray("{\"format\": \"jumo-parameters\", \"version\": \"1\"}") << "version 1 is not";
+    QTest::newRow("address as a word") << head + "\"address\": \"one\"}" << "'address' must be a whole number 0..255";
+    QTest::newRow("address 300") << head + "\"address\": 300}" << "'address' must be a whole number 0..255, not 300";
+    QTest::newRow("family as a number") << QByteArray("{\"format\": \"jumo-parameters\", \"version\": 1, \"family\": 5, "
+                                                      "\"values\": {}}")
+                                        << "lacks";
+    QTest::newRow("time that is none") << head + "\"time\": \"yesterday\"}" << "'time' is no ISO 8601 time";
+    QTest::newRow("identity text as a number") << head + "\"identity\": {\"device_name\": 5}}"
+                                               << "'device_name' must be a string, not 5";
+    QTest::newRow("misspelt key") << head + "\"softwareVersoin\": \"1\"}" << "unknown key 'softwareVersoin'";
 }
 
 void tst_ParameterSet::refusesBadFiles()
