@@ -62,9 +62,52 @@ Handbuch %6: &quot;%7&quot;</translation>
     </message>
 </context>
 <context>
+    <name>jumo::BitSwitches</name>
+    <message>
+        <location filename="../ui/bitswitches.cpp" line="+42"/>
+        <source>The device does not report these bits: a write sets every bit as ticked here.</source>
+        <translation>Das Gerät meldet diese Bits nicht zurück: Ein Schreiben setzt jedes Bit so, wie es hier angekreuzt ist.</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>On</source>
+        <translation>Ein</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>unknown: the device cannot be read</source>
+        <translation>unbekannt: das Gerät kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stale</source>
+        <translation>veraltet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>on</source>
+        <translation>ein</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bit %1 of %2, %3; reported in %4</source>
+        <translation>Bit %1 von %2, %3; gemeldet in %4</translation>
+    </message>
+</context>
+<context>
     <name>jumo::BitWrite</name>
     <message>
-        <location filename="../lib/protocol/bitwrite.cpp" line="+42"/>
+        <location filename="../lib/protocol/bitwrite.cpp" line="+66"/>
         <source>&apos;%1&apos; is not a writable bit field</source>
         <translation>&apos;%1&apos; ist kein beschreibbares Bitfeld</translation>
     </message>
@@ -277,17 +320,22 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
 <context>
     <name>jumo::CommissioningReport</name>
     <message>
-        <location filename="../lib/commissioning/commissioningreport.cpp" line="+30"/>
+        <location filename="../lib/commissioning/commissioningreport.cpp" line="+34"/>
         <source>not read</source>
         <translation>nicht gelesen</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>(last read failed: %1)</source>
-        <translation>(letztes Lesen fehlgeschlagen: %1)</translation>
+        <location line="+8"/>
+        <source>(stale)</source>
+        <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+4"/>
+        <source>unknown (%1); last known: %2</source>
+        <translation>unbekannt (%1); zuletzt bekannt: %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <location line="+1"/>
         <location filename="../ui/reportwriter.cpp" line="+20"/>
         <source>Commissioning report</source>
@@ -319,12 +367,17 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
         <translation>Aktive Alarme und Warnungen</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+19"/>
         <source>bit %1</source>
         <translation>Bit %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
+        <source>Unknown: %1 could not be read</source>
+        <translation>Unbekannt: %1 konnte nicht gelesen werden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <location line="+30"/>
         <source>none</source>
         <translation>keine</translation>
@@ -457,7 +510,7 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
 <context>
     <name>jumo::ControlRow</name>
     <message>
-        <location filename="../ui/controlrow.cpp" line="+54"/>
+        <location filename="../ui/controlrow.cpp" line="+55"/>
         <source>Precondition: %1</source>
         <translation>Voraussetzung: %1</translation>
     </message>
@@ -477,7 +530,7 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
         <translation>den Befehl &quot;%1&quot; senden</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+12"/>
         <source>Off</source>
         <translation>Aus</translation>
     </message>
@@ -497,6 +550,11 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
         <translation>Schreiben</translation>
     </message>
     <message>
+        <location line="+0"/>
+        <source>Write all bits</source>
+        <translation>Alle Bits schreiben</translation>
+    </message>
+    <message>
         <location line="+6"/>
         <source>Back to the device&apos;s own value</source>
         <translation>Zurück zum geräteeigenen Wert</translation>
@@ -507,7 +565,7 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
         <translation>die Vorgabe für %1 aufheben</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+22"/>
         <source>Pending: %1</source>
         <translation>Ausstehend: %1</translation>
     </message>
@@ -522,27 +580,52 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
         <translation>Abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+5"/>
+        <source>Unknown, check the device: %1</source>
+        <translation>Unbekannt, bitte am Gerät prüfen: %1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Write-only: the lamps show the states the device reports elsewhere.</source>
+        <translation>Nur schreibbar: Die Lampen zeigen die Zustände, die das Gerät an anderer Stelle meldet.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Write-only: the device cannot report it.</source>
         <translation>Nur schreibbar: Das Gerät kann den Wert nicht melden.</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>Device: %1 %2</source>
-        <translation>Gerät: %1 %2</translation>
+        <location line="+5"/>
+        <source>Device: %1</source>
+        <translation>Gerät: %1</translation>
+    </message>
+    <message>
+        <location line="+87"/>
+        <source>switch &quot;%1&quot; on</source>
+        <translation>„%1“ einschalten</translation>
     </message>
     <message>
         <location line="+0"/>
-        <source>not read yet</source>
-        <translation>noch nicht gelesen</translation>
+        <source>switch &quot;%1&quot; off</source>
+        <translation>„%1“ ausschalten</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+2"/>
+        <source>%1 on</source>
+        <translation>%1 ein</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 off</source>
+        <translation>%1 aus</translation>
+    </message>
+    <message>
+        <location line="-72"/>
         <source>Read-only mode: nothing is written to the devices.</source>
         <translation>Nur-Lese-Modus: Es wird nichts auf die Geräte geschrieben.</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+34"/>
         <source>write %1 = %2 %3</source>
         <translation>%1 = %2 %3 schreiben</translation>
     </message>
@@ -706,7 +789,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Programm</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Trend</source>
         <translation>Trend</translation>
     </message>
@@ -714,12 +797,37 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DeviceTile</name>
     <message>
-        <location filename="../ui/devicetile.cpp" line="+22"/>
+        <location filename="../ui/devicetile.cpp" line="+24"/>
         <source>address %1</source>
         <translation>Adresse %1</translation>
     </message>
+    <message>
+        <location line="+58"/>
+        <source>(stale)</source>
+        <translation>(veraltet)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Online</source>
+        <translation>Online</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Not answering since %1</source>
+        <translation>Antwortet nicht seit %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Line lost since %1</source>
+        <translation>Leitung verloren seit %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Line disconnected</source>
+        <translation>Leitung getrennt</translation>
+    </message>
     <message numerus="yes">
-        <location line="+47"/>
+        <location line="+7"/>
         <source>%n active alarm(s)</source>
         <translation>
             <numerusform>%n aktiver Alarm</numerusform>
@@ -728,8 +836,8 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+0"/>
-        <source>not answering</source>
-        <translation>antwortet nicht</translation>
+        <source>Alarms unknown</source>
+        <translation>Alarme unbekannt</translation>
     </message>
 </context>
 <context>
@@ -1394,12 +1502,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+193"/>
+        <location line="+191"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-188"/>
+        <location line="-186"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -1444,7 +1552,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Adresse %1: %2</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+38"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -1612,7 +1720,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>keine Fehler</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+117"/>
         <source>Scan</source>
         <translation>Suchen</translation>
     </message>
@@ -2648,7 +2756,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::TrendView</name>
     <message>
-        <location filename="../ui/trendview.cpp" line="+44"/>
+        <location filename="../ui/trendview.cpp" line="+46"/>
         <source>1 minute</source>
         <translation>1 Minute</translation>
     </message>
@@ -2689,7 +2797,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location line="+162"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -2858,7 +2966,8 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::WriteCommand</name>
     <message>
-        <location filename="../lib/models/writecommand.cpp" line="+18"/>
+        <location filename="../lib/models/writecommand.cpp" line="+37"/>
+        <location line="+6"/>
         <source>Writing %1...</source>
         <translation>%1 wird geschrieben...</translation>
     </message>
