@@ -71,8 +71,7 @@ BitSwitches::BitSwitches(const Bus *bus, DeviceId device, const RegisterMap &map
         m_offButtons.insert(b->id, off);
         ++i;
     }
-    for (int c = 0; c < perLine; ++c)
-        grid->setColumnStretch(c * 4, 1);
+    grid->setColumnStretch(perLine * 4, 1);   // the switches stay by their lamps
     refresh();
 }
 

@@ -177,11 +177,13 @@ void ControlRow::refreshCurrent()
     }
     // The value only while it is current; otherwise no number, or a stale one, and why.
     const EntryState *state = m_bus->entryState(m_device, m_entry.id);
-    QString text = tr("Device: %1").arg(ValueText::value(state, m_entry));
     const bool current = state && state->isCurrent();
+    // Switches show their bits on their lamps; the word itself only says why it is not current.
+    QString text = m_switches && m_switches->switchesSingleBits() ? QString()
+                                                                  : tr("Device: %1").arg(ValueText::value(state, m_entry));
     if (!current)
         text += QStringLiteral(" (%1)").arg(ValueText::status(state, m_map, m_bus->clockMs()));
-    m_current->setText(text);
+    m_current->setText(text.trimmed());
     m_current->setStyleSheet(current ? QString() : QStringLiteral("color: gray; font-style: italic"));
 }
 
