@@ -72,6 +72,7 @@ private slots:
     void parametersBackupCompareRestore();
     void bitSwitchesKeepTheOtherBits();
     void pulledLineShowsEverywhere();
+    void tileOpensItsOwnDeviceAfterARemoval();
 
 private:
     // A window connected to the line with the IPC 300 at address 1 on its page.
@@ -455,6 +456,25 @@ void tst_Hmi::pulledLineShowsEverywhere()
     QCOMPARE(segments.first().size(), pointsAtLoss);
     QVERIFY(segments.last().first().x() - segments.first().last().x() >= outageMs - 100);
     logger.stop();
+}
+
+void tst_Hmi::tileOpensItsOwnDeviceAfterARemoval()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    QVERIFY(window->addDevice(families().family("tya200"), 2));
+    QVERIFY(window->addDevice(families().family("quantrol"), 3));
+    DeviceTile *quantrolTile = window->deviceTile("quantrol", 3);
+    // The first device goes; the tiles after it move up a place.
+    window->showDevice("ipc300", 1);
+    QTest::mouseClick(window->findChild<QPushButton *>("removeDeviceButton"), Qt::LeftButton);
+    QVERIFY(!window->deviceTile("ipc300", 1));
+    window->showOverview();
+    QTest::mouseClick(quantrolTile, Qt::LeftButton);
+    auto *pages = window->devicePage("quantrol", 3)->parentWidget();
+    QVERIFY(pages->isVisible());
+    QVERIFY(window->devicePage("quantrol", 3)->isVisible());
+    QVERIFY(!window->devicePage("tya200", 2)->isVisible());
 }
 
 QTEST_MAIN(tst_Hmi)
