@@ -79,7 +79,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>Aus</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+32"/>
         <source>unknown: the device cannot be read</source>
         <translation>unbekannt: das Gerät kann nicht gelesen werden</translation>
     </message>
@@ -145,12 +145,12 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::Bus</name>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+62"/>
+        <location filename="../lib/bus/bus.cpp" line="+59"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
     <message>
-        <location line="+242"/>
+        <location filename="../lib/bus/requestdesk.cpp" line="+13"/>
         <location line="+86"/>
         <source>read-only mode: %1 was not written</source>
         <translation>Nur-Lese-Modus: %1 wurde nicht geschrieben</translation>
@@ -173,12 +173,12 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>&apos;%1&apos; benötigt mehr Wörter, als eine Schreibanfrage umfassen darf</translation>
     </message>
     <message>
-        <location line="-262"/>
+        <location filename="../lib/bus/bus.cpp" line="+10"/>
         <source>the line was reopened</source>
         <translation>die Leitung wurde neu geöffnet</translation>
     </message>
     <message>
-        <location line="+266"/>
+        <location filename="../lib/bus/requestdesk.cpp" line="+4"/>
         <location line="+29"/>
         <location line="+53"/>
         <source>not written: the line is not connected</source>
@@ -210,7 +210,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>nur RAM-Werte können gehalten werden, &apos;%1&apos; gehört nicht dazu</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location filename="../lib/bus/bus.cpp" line="+263"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
@@ -220,7 +220,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>Nur-Lese-Modus</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+64"/>
         <source>exception %1</source>
         <translation>Exception %1</translation>
     </message>
@@ -595,12 +595,12 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
         <translation>Nur schreibbar: Das Gerät kann den Wert nicht melden.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
         <source>Device: %1</source>
         <translation>Gerät: %1</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+86"/>
         <source>switch &quot;%1&quot; on</source>
         <translation>„%1“ einschalten</translation>
     </message>
@@ -741,6 +741,11 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <name>jumo::DemoLine</name>
     <message>
         <location filename="../lib/sim/demoline.cpp" line="+20"/>
+        <source>the simulated line ended (socat stopped)</source>
+        <translation>die simulierte Leitung ist beendet (socat wurde gestoppt)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>the simulator cannot open %1: %2</source>
         <translation>der Simulator kann %1 nicht öffnen: %2</translation>
     </message>
@@ -2496,17 +2501,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::PtyPair</name>
     <message>
-        <location filename="../lib/sim/ptypair.cpp" line="+20"/>
+        <location filename="../lib/sim/ptypair.cpp" line="+21"/>
         <source>cannot start socat (is it installed?): %1</source>
         <translation>socat kann nicht gestartet werden (ist es installiert?): %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>socat ended: %1</source>
         <translation>socat beendet: %1</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+36"/>
         <source>socat did not create the pseudo-terminals</source>
         <translation>socat hat die Pseudo-Terminals nicht angelegt</translation>
     </message>
@@ -2514,7 +2519,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ReadPlanner</name>
     <message>
-        <location filename="../lib/bus/scheduler.cpp" line="+57"/>
+        <location filename="../lib/bus/devicepoll.cpp" line="+53"/>
         <location filename="../lib/protocol/readplanner.cpp" line="+32"/>
         <source>&apos;%1&apos; is not an entry of %2</source>
         <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
