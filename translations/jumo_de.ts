@@ -228,7 +228,7 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::CommandLineTool</name>
     <message>
-        <location filename="../app/cli/commandlinetool.cpp" line="+18"/>
+        <location filename="../app/cli/commandlinetool.cpp" line="+19"/>
         <source>Usage: jumoctl COMMAND [options] [arguments]
 
 Commissioning and monitoring of JUMO power and process controllers over Modbus RTU.
@@ -240,10 +240,11 @@ Commands on the register maps:
   decode FAMILY ID WORD... decode raw register words as an entry
 
 Commands on a serial line (all take --port PATH --baud N --format 8N1|8E1|8O1|8N2
---timeout MS --read-only); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1:
+--timeout MS --read-only --verbose); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1:
   scan [--from A --to B]   find devices and name their family
   read DEVICE ID...        read entries once
-  write DEVICE ID=VALUE... write entries, verified by reading them back
+  write DEVICE ID=VALUE... write entries, verified by reading them back; a bit field&apos;s
+                           ID=VALUE replaces every bit, ID.BIT=0|1 changes one bit only
   dump DEVICE [--json]     read every readable entry once
   monitor DEVICE... --jsonl|--csv [--interval MS] [--cycles N]
                            poll continuously, one record per poll cycle
@@ -266,10 +267,11 @@ Befehle auf den Registertabellen:
   decode FAMILY ID WORD... Registerwörter als Eintrag dekodieren
 
 Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8E1|8O1|8N2
---timeout MS --read-only); DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1:
+--timeout MS --read-only --verbose); DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1:
   scan [--from A --to B]   Geräte suchen und ihre Familie nennen
   read DEVICE ID...        Einträge einmal lesen
-  write DEVICE ID=VALUE... Einträge schreiben, durch Rücklesen geprüft
+  write DEVICE ID=VALUE... Einträge schreiben, durch Rücklesen geprüft; bei einem Bitfeld
+                           ersetzt ID=VALUE jedes Bit, ID.BIT=0|1 ändert nur ein Bit
   dump DEVICE [--json]     alle lesbaren Einträge einmal lesen
   monitor DEVICE... --jsonl|--csv [--interval MS] [--cycles N]
                            fortlaufend abfragen, ein Datensatz je Abfragezyklus
@@ -283,7 +285,7 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
 </translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+52"/>
         <source>warning: refused map file: %1</source>
         <translation>Warnung: Map-Datei abgelehnt: %1</translation>
     </message>
@@ -916,7 +918,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+82"/>
+        <location filename="../app/cli/linecommands.cpp" line="+84"/>
         <source>Serial port, e.g. /dev/ttyUSB0 (required).</source>
         <translation>Serielle Schnittstelle, z. B. /dev/ttyUSB0 (erforderlich).</translation>
     </message>
@@ -953,12 +955,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <message>
         <location line="+0"/>
         <location line="+2"/>
-        <location line="+344"/>
+        <location line="+381"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-344"/>
+        <location line="-381"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
@@ -969,17 +971,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+344"/>
+        <location line="+381"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-342"/>
-        <source>Never write to the line (control-room mode).</source>
-        <translation>Nie auf die Leitung schreiben (Leitwarten-Modus).</translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="-367"/>
         <source>--port is required</source>
         <translation>--port ist erforderlich</translation>
     </message>
@@ -1004,7 +1001,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>--retries muss 0..10 sein</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>&apos;%1&apos; is not a device: use FAMILY@ADDRESS, e.g. ipc300@1 (families: %2)</source>
         <translation>&apos;%1&apos; ist kein Gerät: FAMILY@ADDRESS verwenden, z. B. ipc300@1 (Gerätefamilien: %2)</translation>
     </message>
@@ -1089,24 +1086,23 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+317"/>
+        <location line="+348"/>
         <location line="+128"/>
         <source>FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="-443"/>
+        <location line="-474"/>
         <source>Entry ids.</source>
         <translation>Kennungen der Einträge.</translation>
     </message>
     <message>
         <location line="+17"/>
-        <location line="+77"/>
         <source>&apos;%1&apos; is not an entry of %2</source>
         <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
     <message>
-        <location line="-73"/>
+        <location line="+4"/>
         <source>&apos;%1&apos; is write-only</source>
         <translation>&apos;%1&apos; ist nur schreibbar</translation>
     </message>
@@ -1116,12 +1112,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>einige Einträge konnten nicht gelesen werden</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>Writes entries of a device; each write is verified by reading it back.</source>
-        <translation>Schreibt Einträge eines Geräts; jeder Schreibvorgang wird durch Rücklesen überprüft.</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+24"/>
         <source>For a broadcast (FAMILY@0): the addresses to read it back from, e.g. 1,2,5.</source>
         <translation>Bei einem Broadcast (FAMILY@0): die Adressen, von denen zurückgelesen wird, z. B. 1,2,5.</translation>
     </message>
@@ -1136,12 +1127,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>FAMILY@ADDRESS oder FAMILY@0 für einen Broadcast.</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>ID=VALUE, e.g. input_setpoint=42.5.</source>
-        <translation>ID=VALUE, z. B. input_setpoint=42.5.</translation>
-    </message>
-    <message>
-        <location line="+11"/>
+        <location line="+14"/>
         <source>&apos;%1&apos; is not a device: use FAMILY@ADDRESS</source>
         <translation>&apos;%1&apos; ist kein Gerät: FAMILY@ADDRESS verwenden</translation>
     </message>
@@ -1156,17 +1142,75 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>ein Broadcast wird nicht beantwortet: die Geräte, von denen zurückgelesen werden soll, mit --verify angeben</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>&apos;%1&apos; is not ID=VALUE</source>
-        <translation>&apos;%1&apos; hat nicht die Form ID=VALUE</translation>
+        <location line="-276"/>
+        <source>Never write to the line (control-room mode; the system configuration can set it for everyone).</source>
+        <translation>Nie auf die Leitung schreiben (Leitwarten-Modus; die Systemkonfiguration kann ihn für alle festlegen).</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+3"/>
+        <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
+        <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
+    </message>
+    <message>
+        <location line="+225"/>
+        <source>Writes entries of a device; each write is verified by reading it back.
+
+ID=VALUE writes the whole entry: for a bit field it replaces EVERY bit of
+the word. ID.BIT=0|1 (or on|off, true|false) changes that bit only and keeps
+the others as the device reports them, read just before the write; bits of
+one entry given together go out in one write.
+
+Exit code: 0 every write confirmed (or acknowledged, where nothing reads it
+back); 1 a write failed (refused by the device, read back different, not
+sent, read-only mode); 3 the outcome of a write is unknown or unverified
+(its answer was lost; a command is never sent twice): check the device;
+2 wrong arguments, nothing sent.</source>
+        <translation>Schreibt Einträge eines Geräts; jeder Schreibvorgang wird durch Rücklesen überprüft.
+
+ID=VALUE schreibt den ganzen Eintrag: bei einem Bitfeld ersetzt das JEDES Bit
+des Worts. ID.BIT=0|1 (oder on|off, true|false) ändert nur dieses Bit und
+behält die anderen so, wie das Gerät sie meldet, unmittelbar vor dem Schreiben
+gelesen; zusammen angegebene Bits eines Eintrags gehen in einem Schreibvorgang.
+
+Exit-Code: 0 jeder Schreibvorgang bestätigt (oder quittiert, wo nichts
+zurückgelesen werden kann); 1 ein Schreibvorgang ist gescheitert (vom Gerät
+abgelehnt, anders zurückgelesen, nicht gesendet, Nur-Lese-Modus); 3 der
+Ausgang eines Schreibvorgangs ist unbekannt oder ungeprüft (die Antwort ging
+verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
+2 falsche Argumente, nichts gesendet.</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>ID=VALUE, e.g. input_setpoint=42.5, or ID.BIT=0|1, e.g. binary_signal_write.digital_output=1.</source>
+        <translation>ID=VALUE, z. B. input_setpoint=42.5, oder ID.BIT=0|1, z. B. binary_signal_write.digital_output=1.</translation>
+    </message>
+    <message>
+        <location line="+85"/>
+        <source>unknown, check the device: </source>
+        <translation>unbekannt, Gerät prüfen: </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>unverified: </source>
+        <translation>ungeprüft: </translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>(was %1)</source>
         <translation>(vorher %1)</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+27"/>
+        <source>read-only mode is set by the system configuration (%1): nothing is written to the devices</source>
+        <translation>Der Nur-Lese-Modus ist durch die Systemkonfiguration festgelegt (%1): Es wird nichts auf die Geräte geschrieben</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>read-only mode (--read-only): nothing is written to the devices</source>
+        <translation>Nur-Lese-Modus (--read-only): Es wird nichts auf die Geräte geschrieben</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Polls devices continuously and prints every poll cycle.</source>
         <translation>Fragt Geräte fortlaufend ab und gibt jeden Abfragezyklus aus.</translation>
     </message>
@@ -2966,6 +3010,44 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+2"/>
         <source>Stale (%1 s old)</source>
         <translation>Veraltet (%1 s alt)</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::WriteAssignment</name>
+    <message>
+        <location filename="../app/cli/writeassignment.cpp" line="+31"/>
+        <source>&apos;%1&apos; is not ID=VALUE or ID.BIT=0|1</source>
+        <translation>&apos;%1&apos; hat nicht die Form ID=VALUE oder ID.BIT=0|1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&apos;%1&apos; is not an entry of %2</source>
+        <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&apos;%1&apos; is given both whole and by bits: give one or the other</source>
+        <translation>&apos;%1&apos; ist sowohl ganz als auch bitweise angegeben: eines von beiden angeben</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>&apos;%1&apos;: a broadcast is not answered, so the bits it should keep cannot be read; write the whole word</source>
+        <translation>&apos;%1&apos;: Ein Broadcast wird nicht beantwortet, daher können die Bits, die erhalten bleiben sollen, nicht gelesen werden; das ganze Wort schreiben</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;%1&apos; is not a bit state for &apos;%2&apos;: give 0, 1, on, off, true or false</source>
+        <translation>&apos;%1&apos; ist kein Bitzustand für &apos;%2&apos;: 0, 1, on, off, true oder false angeben</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&apos;%1&apos; is given twice, on and off</source>
+        <translation>&apos;%1&apos; ist zweimal angegeben, ein und aus</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>send a command as %1=BIT, e.g. %1=%2; it is sent once</source>
+        <translation>einen Befehl als %1=BIT senden, z. B. %1=%2; er wird einmal gesendet</translation>
     </message>
 </context>
 <context>
@@ -6442,7 +6524,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+30"/>
+        <location filename="../app/jumo-hmi.cpp" line="+31"/>
         <source>JUMO commissioning and monitoring HMI.</source>
         <translation>JUMO-HMI für Inbetriebnahme und Überwachung.</translation>
     </message>
@@ -6492,7 +6574,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Auf stderr ausgeben, wann der erste Live-Wert eintrifft.</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+2"/>
+        <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
+        <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Map files refused: %1</source>
         <translation>Map-Dateien abgelehnt: %1</translation>
     </message>

@@ -3,6 +3,7 @@
 #include "protocol/familyregistry.h"
 #include "linecommands.h"
 #include "mapcommands.h"
+#include "modbuslogging.h"
 
 namespace jumo {
 
@@ -26,10 +27,11 @@ QString CommandLineTool::usage() const
               "  decode FAMILY ID WORD... decode raw register words as an entry\n"
               "\n"
               "Commands on a serial line (all take --port PATH --baud N --format 8N1|8E1|8O1|8N2\n"
-              "--timeout MS --read-only); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1:\n"
+              "--timeout MS --read-only --verbose); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1:\n"
               "  scan [--from A --to B]   find devices and name their family\n"
               "  read DEVICE ID...        read entries once\n"
-              "  write DEVICE ID=VALUE... write entries, verified by reading them back\n"
+              "  write DEVICE ID=VALUE... write entries, verified by reading them back; a bit field's\n"
+              "                           ID=VALUE replaces every bit, ID.BIT=0|1 changes one bit only\n"
               "  dump DEVICE [--json]     read every readable entry once\n"
               "  monitor DEVICE... --jsonl|--csv [--interval MS] [--cycles N]\n"
               "                           poll continuously, one record per poll cycle\n"
@@ -44,6 +46,7 @@ QString CommandLineTool::usage() const
 
 std::optional<int> CommandLineTool::run(const QStringList &arguments)
 {
+    showModbusLogging(false);   // a line command's --verbose turns it on
     if (arguments.isEmpty() || arguments.constFirst() == QLatin1String("--help")
         || arguments.constFirst() == QLatin1String("-h") || arguments.constFirst() == QLatin1String("help")) {
         (arguments.isEmpty() ? m_err : m_out) << usage();
