@@ -3,6 +3,7 @@
 #include "connectionbar.h"
 #include "devicepage.h"
 #include "mainwindow.h"
+#include "modbuslogging.h"
 #include "quitonsignal.h"
 #include "protocol/translations.h"
 
@@ -52,7 +53,10 @@ int main(int argc, char *argv[])
                       QStringLiteral("device")});
     parser.addOption({QStringLiteral("report-startup"),
                       QApplication::translate("main", "Print on stderr when the first live value arrives.")});
+    parser.addOption({QStringLiteral("verbose"),
+                      QApplication::translate("main", "Show Qt's Modbus messages (CRC errors, timeouts, frames) on stderr.")});
     parser.process(app);
+    jumo::showModbusLogging(parser.isSet(QStringLiteral("verbose")));
 
     const jumo::FamilyRegistry registry = jumo::FamilyRegistry::loadDefault();
     jumo::MainWindow::Options options;

@@ -62,9 +62,52 @@ Handbuch %6: &quot;%7&quot;</translation>
     </message>
 </context>
 <context>
+    <name>jumo::BitSwitches</name>
+    <message>
+        <location filename="../ui/bitswitches.cpp" line="+42"/>
+        <source>The device does not report these bits: a write sets every bit as ticked here.</source>
+        <translation>Das Gerät meldet diese Bits nicht zurück: Ein Schreiben setzt jedes Bit so, wie es hier angekreuzt ist.</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>On</source>
+        <translation>Ein</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>unknown: the device cannot be read</source>
+        <translation>unbekannt: das Gerät kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stale</source>
+        <translation>veraltet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>on</source>
+        <translation>ein</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bit %1 of %2, %3; reported in %4</source>
+        <translation>Bit %1 von %2, %3; gemeldet in %4</translation>
+    </message>
+</context>
+<context>
     <name>jumo::BitWrite</name>
     <message>
-        <location filename="../lib/protocol/bitwrite.cpp" line="+42"/>
+        <location filename="../lib/protocol/bitwrite.cpp" line="+66"/>
         <source>&apos;%1&apos; is not a writable bit field</source>
         <translation>&apos;%1&apos; ist kein beschreibbares Bitfeld</translation>
     </message>
@@ -168,12 +211,12 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::Bus</name>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+62"/>
+        <location filename="../lib/bus/bus.cpp" line="+59"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
     <message>
-        <location line="+242"/>
+        <location filename="../lib/bus/requestdesk.cpp" line="+13"/>
         <location line="+86"/>
         <source>read-only mode: %1 was not written</source>
         <translation>Nur-Lese-Modus: %1 wurde nicht geschrieben</translation>
@@ -196,12 +239,12 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>&apos;%1&apos; benötigt mehr Wörter, als eine Schreibanfrage umfassen darf</translation>
     </message>
     <message>
-        <location line="-262"/>
+        <location filename="../lib/bus/bus.cpp" line="+10"/>
         <source>the line was reopened</source>
         <translation>die Leitung wurde neu geöffnet</translation>
     </message>
     <message>
-        <location line="+266"/>
+        <location filename="../lib/bus/requestdesk.cpp" line="+4"/>
         <location line="+29"/>
         <location line="+53"/>
         <source>not written: the line is not connected</source>
@@ -233,7 +276,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>nur RAM-Werte können gehalten werden, &apos;%1&apos; gehört nicht dazu</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location filename="../lib/bus/bus.cpp" line="+263"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
@@ -243,7 +286,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>Nur-Lese-Modus</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+64"/>
         <source>exception %1</source>
         <translation>Exception %1</translation>
     </message>
@@ -251,7 +294,7 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::CommandLineTool</name>
     <message>
-        <location filename="../app/cli/commandlinetool.cpp" line="+18"/>
+        <location filename="../app/cli/commandlinetool.cpp" line="+19"/>
         <source>Usage: jumoctl COMMAND [options] [arguments]
 
 Commissioning and monitoring of JUMO power and process controllers over Modbus RTU.
@@ -263,11 +306,12 @@ Commands on the register maps:
   decode FAMILY ID WORD... decode raw register words as an entry
 
 Commands on a serial line (all take --port PATH --baud N --format 8N1|8E1|8O1|8N2
---timeout MS --read-only); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1, and its
-identity registers must confirm FAMILY (exit code 3 if not; --no-identify skips it):
+--timeout MS --read-only --verbose); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1, and
+its identity registers must confirm FAMILY (exit code 4 if not; --no-identify skips it):
   scan [--from A --to B]   find devices and name their family
   read DEVICE ID...        read entries once
-  write DEVICE ID=VALUE... write entries, verified by reading them back
+  write DEVICE ID=VALUE... write entries, verified by reading them back; a bit field&apos;s
+                           ID=VALUE replaces every bit, ID.BIT=0|1 changes one bit only
   dump DEVICE [--json]     read every readable entry once
   monitor DEVICE... --jsonl|--csv [--interval MS] [--cycles N]
                            poll continuously, one record per poll cycle
@@ -290,11 +334,12 @@ Befehle auf den Registertabellen:
   decode FAMILY ID WORD... Registerwörter als Eintrag dekodieren
 
 Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8E1|8O1|8N2
---timeout MS --read-only); DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1, und seine
-Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 3; --no-identify überspringt das):
+--timeout MS --read-only --verbose); DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1, und
+seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-identify überspringt das):
   scan [--from A --to B]   Geräte suchen und ihre Familie nennen
   read DEVICE ID...        Einträge einmal lesen
-  write DEVICE ID=VALUE... Einträge schreiben, durch Rücklesen geprüft
+  write DEVICE ID=VALUE... Einträge schreiben, durch Rücklesen geprüft; bei einem Bitfeld
+                           ersetzt ID=VALUE jedes Bit, ID.BIT=0|1 ändert nur ein Bit
   dump DEVICE [--json]     alle lesbaren Einträge einmal lesen
   monitor DEVICE... --jsonl|--csv [--interval MS] [--cycles N]
                            fortlaufend abfragen, ein Datensatz je Abfragezyklus
@@ -308,7 +353,7 @@ Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 3; --no-identify
 </translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+62"/>
         <source>warning: refused map file: %1</source>
         <translation>Warnung: Map-Datei abgelehnt: %1</translation>
     </message>
@@ -345,17 +390,22 @@ Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 3; --no-identify
 <context>
     <name>jumo::CommissioningReport</name>
     <message>
-        <location filename="../lib/commissioning/commissioningreport.cpp" line="+30"/>
+        <location filename="../lib/commissioning/commissioningreport.cpp" line="+34"/>
         <source>not read</source>
         <translation>nicht gelesen</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>(last read failed: %1)</source>
-        <translation>(letztes Lesen fehlgeschlagen: %1)</translation>
+        <location line="+8"/>
+        <source>(stale)</source>
+        <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+4"/>
+        <source>unknown (%1); last known: %2</source>
+        <translation>unbekannt (%1); zuletzt bekannt: %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <location line="+1"/>
         <location filename="../ui/reportwriter.cpp" line="+26"/>
         <source>Commissioning report</source>
@@ -387,12 +437,17 @@ Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 3; --no-identify
         <translation>Aktive Alarme und Warnungen</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+19"/>
         <source>bit %1</source>
         <translation>Bit %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
+        <source>Unknown: %1 could not be read</source>
+        <translation>Unbekannt: %1 konnte nicht gelesen werden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <location line="+30"/>
         <source>none</source>
         <translation>keine</translation>
@@ -515,7 +570,7 @@ Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 3; --no-identify
 <context>
     <name>jumo::ControlRow</name>
     <message>
-        <location filename="../ui/controlrow.cpp" line="+54"/>
+        <location filename="../ui/controlrow.cpp" line="+55"/>
         <source>Precondition: %1</source>
         <translation>Voraussetzung: %1</translation>
     </message>
@@ -535,7 +590,7 @@ Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 3; --no-identify
         <translation>den Befehl &quot;%1&quot; senden</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+12"/>
         <source>Off</source>
         <translation>Aus</translation>
     </message>
@@ -555,6 +610,11 @@ Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 3; --no-identify
         <translation>Schreiben</translation>
     </message>
     <message>
+        <location line="+0"/>
+        <source>Write all bits</source>
+        <translation>Alle Bits schreiben</translation>
+    </message>
+    <message>
         <location line="+6"/>
         <source>Back to the device&apos;s own value</source>
         <translation>Zurück zum geräteeigenen Wert</translation>
@@ -565,7 +625,7 @@ Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 3; --no-identify
         <translation>die Vorgabe für %1 aufheben</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+22"/>
         <source>Pending: %1</source>
         <translation>Ausstehend: %1</translation>
     </message>
@@ -580,27 +640,52 @@ Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 3; --no-identify
         <translation>Abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+5"/>
+        <source>Unknown, check the device: %1</source>
+        <translation>Unbekannt, bitte am Gerät prüfen: %1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Write-only: the lamps show the states the device reports elsewhere.</source>
+        <translation>Nur schreibbar: Die Lampen zeigen die Zustände, die das Gerät an anderer Stelle meldet.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Write-only: the device cannot report it.</source>
         <translation>Nur schreibbar: Das Gerät kann den Wert nicht melden.</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>Device: %1 %2</source>
-        <translation>Gerät: %1 %2</translation>
+        <location line="+8"/>
+        <source>Device: %1</source>
+        <translation>Gerät: %1</translation>
+    </message>
+    <message>
+        <location line="+86"/>
+        <source>switch &quot;%1&quot; on</source>
+        <translation>„%1“ einschalten</translation>
     </message>
     <message>
         <location line="+0"/>
-        <source>not read yet</source>
-        <translation>noch nicht gelesen</translation>
+        <source>switch &quot;%1&quot; off</source>
+        <translation>„%1“ ausschalten</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+2"/>
+        <source>%1 on</source>
+        <translation>%1 ein</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 off</source>
+        <translation>%1 aus</translation>
+    </message>
+    <message>
+        <location line="-72"/>
         <source>Read-only mode: nothing is written to the devices.</source>
         <translation>Nur-Lese-Modus: Es wird nichts auf die Geräte geschrieben.</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+34"/>
         <source>write %1 = %2 %3</source>
         <translation>%1 = %2 %3 schreiben</translation>
     </message>
@@ -716,6 +801,11 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <name>jumo::DemoLine</name>
     <message>
         <location filename="../lib/sim/demoline.cpp" line="+20"/>
+        <source>the simulated line ended (socat stopped)</source>
+        <translation>die simulierte Leitung ist beendet (socat wurde gestoppt)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>the simulator cannot open %1: %2</source>
         <translation>der Simulator kann %1 nicht öffnen: %2</translation>
     </message>
@@ -764,7 +854,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Programm</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Trend</source>
         <translation>Trend</translation>
     </message>
@@ -772,12 +862,37 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DeviceTile</name>
     <message>
-        <location filename="../ui/devicetile.cpp" line="+22"/>
+        <location filename="../ui/devicetile.cpp" line="+24"/>
         <source>address %1</source>
         <translation>Adresse %1</translation>
     </message>
+    <message>
+        <location line="+58"/>
+        <source>(stale)</source>
+        <translation>(veraltet)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Online</source>
+        <translation>Online</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Not answering since %1</source>
+        <translation>Antwortet nicht seit %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Line lost since %1</source>
+        <translation>Leitung verloren seit %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Line disconnected</source>
+        <translation>Leitung getrennt</translation>
+    </message>
     <message numerus="yes">
-        <location line="+47"/>
+        <location line="+7"/>
         <source>%n active alarm(s)</source>
         <translation>
             <numerusform>%n aktiver Alarm</numerusform>
@@ -786,8 +901,8 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+0"/>
-        <source>not answering</source>
-        <translation>antwortet nicht</translation>
+        <source>Alarms unknown</source>
+        <translation>Alarme unbekannt</translation>
     </message>
 </context>
 <context>
@@ -927,7 +1042,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+62"/>
+        <location filename="../app/cli/linecommands.cpp" line="+64"/>
         <source>the audit log did not take a record: %1</source>
         <translation>das Audit-Protokoll hat einen Eintrag nicht aufgenommen: %1</translation>
     </message>
@@ -969,12 +1084,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <message>
         <location line="+0"/>
         <location line="+2"/>
-        <location line="+460"/>
+        <location line="+494"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-460"/>
+        <location line="-494"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
@@ -985,17 +1100,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+460"/>
+        <location line="+494"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-458"/>
-        <source>Never write to the line (control-room mode).</source>
-        <translation>Nie auf die Leitung schreiben (Leitwarten-Modus).</translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="-480"/>
         <source>--port is required</source>
         <translation>--port ist erforderlich</translation>
     </message>
@@ -1020,7 +1130,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>--retries muss 0..10 sein</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+33"/>
         <source>&apos;%1&apos; is not a device: use FAMILY@ADDRESS, e.g. ipc300@1 (families: %2)</source>
         <translation>&apos;%1&apos; ist kein Gerät: FAMILY@ADDRESS verwenden, z. B. ipc300@1 (Gerätefamilien: %2)</translation>
     </message>
@@ -1052,7 +1162,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>nothing was written</source>
         <translation>nichts wurde geschrieben</translation>
     </message>
@@ -1186,24 +1296,23 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+358"/>
+        <location line="+385"/>
         <location line="+150"/>
         <source>FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="-506"/>
+        <location line="-533"/>
         <source>Entry ids.</source>
         <translation>Kennungen der Einträge.</translation>
     </message>
     <message>
         <location line="+17"/>
-        <location line="+88"/>
         <source>&apos;%1&apos; is not an entry of %2</source>
         <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location line="+4"/>
         <source>&apos;%1&apos; is write-only</source>
         <translation>&apos;%1&apos; ist nur schreibbar</translation>
     </message>
@@ -1214,12 +1323,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>einige Einträge konnten nicht gelesen werden</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>Writes entries of a device; each write is verified by reading it back.</source>
-        <translation>Schreibt Einträge eines Geräts; jeder Schreibvorgang wird durch Rücklesen überprüft.</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+23"/>
         <source>For a broadcast (FAMILY@0): the addresses to read it back from, e.g. 1,2,5.</source>
         <translation>Bei einem Broadcast (FAMILY@0): die Adressen, von denen zurückgelesen wird, z. B. 1,2,5.</translation>
     </message>
@@ -1234,12 +1338,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>FAMILY@ADDRESS oder FAMILY@0 für einen Broadcast.</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>ID=VALUE, e.g. input_setpoint=42.5.</source>
-        <translation>ID=VALUE, z. B. input_setpoint=42.5.</translation>
-    </message>
-    <message>
-        <location line="+11"/>
+        <location line="+14"/>
         <source>&apos;%1&apos; is not a device: use FAMILY@ADDRESS</source>
         <translation>&apos;%1&apos; ist kein Gerät: FAMILY@ADDRESS verwenden</translation>
     </message>
@@ -1249,22 +1348,80 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>--verify erwartet Adressen 1..255, nicht &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>&apos;%1&apos; is not ID=VALUE</source>
-        <translation>&apos;%1&apos; hat nicht die Form ID=VALUE</translation>
+        <location line="+289"/>
+        <source>cannot read %1</source>
+        <translation>%1 kann nicht gelesen werden</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>&apos;%1&apos; is given twice</source>
-        <translation>&apos;%1&apos; ist zweimal angegeben</translation>
+        <location line="-658"/>
+        <source>Never write to the line (control-room mode; the system configuration can set it for everyone).</source>
+        <translation>Nie auf die Leitung schreiben (Leitwarten-Modus; die Systemkonfiguration kann ihn für alle festlegen).</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+3"/>
+        <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
+        <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
+    </message>
+    <message>
+        <location line="+323"/>
+        <source>Writes entries of a device; each write is verified by reading it back.
+
+ID=VALUE writes the whole entry: for a bit field it replaces EVERY bit of
+the word. ID.BIT=0|1 (or on|off, true|false) changes that bit only and keeps
+the others as the device reports them, read just before the write; bits of
+one entry given together go out in one write.
+
+Exit code: 0 every write confirmed (or acknowledged, where nothing reads it
+back); 1 a write failed (refused by the device, read back different, not
+sent, read-only mode); 3 the outcome of a write is unknown or unverified
+(its answer was lost; a command is never sent twice): check the device;
+2 wrong arguments, nothing sent.</source>
+        <translation>Schreibt Einträge eines Geräts; jeder Schreibvorgang wird durch Rücklesen überprüft.
+
+ID=VALUE schreibt den ganzen Eintrag: bei einem Bitfeld ersetzt das JEDES Bit
+des Worts. ID.BIT=0|1 (oder on|off, true|false) ändert nur dieses Bit und
+behält die anderen so, wie das Gerät sie meldet, unmittelbar vor dem Schreiben
+gelesen; zusammen angegebene Bits eines Eintrags gehen in einem Schreibvorgang.
+
+Exit-Code: 0 jeder Schreibvorgang bestätigt (oder quittiert, wo nichts
+zurückgelesen werden kann); 1 ein Schreibvorgang ist gescheitert (vom Gerät
+abgelehnt, anders zurückgelesen, nicht gesendet, Nur-Lese-Modus); 3 der
+Ausgang eines Schreibvorgangs ist unbekannt oder ungeprüft (die Antwort ging
+verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
+2 falsche Argumente, nichts gesendet.</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>ID=VALUE, e.g. input_setpoint=42.5, or ID.BIT=0|1, e.g. binary_signal_write.digital_output=1.</source>
+        <translation>ID=VALUE, z. B. input_setpoint=42.5, oder ID.BIT=0|1, z. B. binary_signal_write.digital_output=1.</translation>
+    </message>
+    <message>
+        <location line="+97"/>
+        <source>unknown, check the device: </source>
+        <translation>unbekannt, Gerät prüfen: </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>unverified: </source>
+        <translation>ungeprüft: </translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>(was %1)</source>
         <translation>(vorher %1)</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+29"/>
+        <source>read-only mode is set by the system configuration (%1): nothing is written to the devices</source>
+        <translation>Der Nur-Lese-Modus ist durch die Systemkonfiguration festgelegt (%1): Es wird nichts auf die Geräte geschrieben</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>read-only mode (--read-only): nothing is written to the devices</source>
+        <translation>Nur-Lese-Modus (--read-only): Es wird nichts auf die Geräte geschrieben</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Polls devices continuously and prints every poll cycle.</source>
         <translation>Fragt Geräte fortlaufend ab und gibt jeden Abfragezyklus aus.</translation>
     </message>
@@ -1373,12 +1530,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Parameterdatei (JSON).</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>cannot read %1</source>
-        <translation>%1 kann nicht gelesen werden</translation>
-    </message>
-    <message>
-        <location line="+16"/>
+        <location line="+26"/>
         <source>the files are for different or unknown families: %1, %2</source>
         <translation>die Dateien gehören zu verschiedenen oder unbekannten Gerätefamilien: %1, %2</translation>
     </message>
@@ -1605,12 +1757,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+206"/>
+        <location line="+204"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-201"/>
+        <location line="-199"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -1660,7 +1812,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Adresse %1: %2</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+38"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -1828,7 +1980,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>keine Fehler</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+117"/>
         <source>Scan</source>
         <translation>Suchen</translation>
     </message>
@@ -1967,6 +2119,21 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::MapLoader</name>
     <message>
+        <location filename="../lib/protocol/maploader.cpp" line="+35"/>
+        <source>malformed JSON at byte %1: %2</source>
+        <translation>fehlerhaftes JSON bei Byte %1: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>malformed JSON at byte %1: a control character</source>
+        <translation>fehlerhaftes JSON bei Byte %1: ein Steuerzeichen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the top level must be a JSON object</source>
+        <translation>die oberste Ebene muss ein JSON-Objekt sein</translation>
+    </message>
+    <message>
         <location filename="../lib/protocol/jsonfieldreader.cpp" line="+52"/>
         <source>unknown key &apos;%1&apos;</source>
         <translation>unbekannter Schlüssel &apos;%1&apos;</translation>
@@ -2037,40 +2204,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;%1&apos; muss ein nicht leeres Array von Zahlen sein</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/overlapcheck.cpp" line="+37"/>
-        <source>&apos;%1&apos; (%2..%3)</source>
-        <translation>&apos;%1&apos; (%2..%3)</translation>
-    </message>
-    <message>
-        <location line="+28"/>
-        <source>words %1..%2 overlap entry %3</source>
-        <translation>Wörter %1..%2 überschneiden sich mit Eintrag %3</translation>
-    </message>
-    <message numerus="yes">
-        <location line="+4"/>
-        <source> and %n more entries</source>
-        <translation>
-            <numerusform> und %n weiteren Eintrag</numerusform>
-            <numerusform> und %n weiteren Einträgen</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location filename="../lib/protocol/maploader.cpp" line="+35"/>
-        <source>malformed JSON at byte %1: %2</source>
-        <translation>fehlerhaftes JSON bei Byte %1: %2</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>malformed JSON at byte %1: a control character</source>
-        <translation>fehlerhaftes JSON bei Byte %1: ein Steuerzeichen</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>the top level must be a JSON object</source>
-        <translation>die oberste Ebene muss ein JSON-Objekt sein</translation>
-    </message>
-    <message>
-        <location line="+29"/>
+        <location filename="../lib/protocol/maploader.cpp" line="+29"/>
         <source>family id &apos;%1&apos; must be lower case letters, digits and &apos;_&apos;</source>
         <translation>Familienkennung &apos;%1&apos; darf nur aus Kleinbuchstaben, Ziffern und &apos;_&apos; bestehen</translation>
     </message>
@@ -2105,37 +2239,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;dataFormats&apos; muss mindestens ein Format enthalten</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>address range %1..%2 is empty</source>
-        <translation>Adressbereich %1..%2 ist leer</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>&apos;alwaysAnswersAddress&apos; must be 1..247 or 255, not %1</source>
-        <translation>&apos;alwaysAnswersAddress&apos; muss 1..247 oder 255 sein, nicht %1</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>&apos;processingTimeMaxMs&apos; is missing</source>
-        <translation>&apos;processingTimeMaxMs&apos; fehlt</translation>
-    </message>
-    <message>
-        <location line="+10"/>
+        <location line="+23"/>
         <source>&apos;identify&apos; must be a non-empty array of probes</source>
         <translation>&apos;identify&apos; muss ein nicht leeres Array von Prüfabfragen sein</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>a probe must be an object</source>
-        <translation>eine Probe muss ein Objekt sein</translation>
-    </message>
-    <message>
-        <location line="+22"/>
-        <source>&apos;answers&apos; can only be true</source>
-        <translation>&apos;answers&apos; kann nur true sein</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="+38"/>
         <source>a probe needs exactly one of textContains, maskNonZero, answers, exception</source>
         <translation>eine Prüfabfrage benötigt genau eines von textContains, maskNonZero, answers, exception</translation>
     </message>
@@ -2172,7 +2281,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     <message>
         <location line="+1"/>
         <location line="+294"/>
-        <location filename="../lib/protocol/overlapcheck.cpp" line="+1"/>
+        <location filename="../lib/protocol/overlapcheck.cpp" line="+70"/>
         <source>entry &apos;%1&apos; (%2)</source>
         <translation>Eintrag &apos;%1&apos; (%2)</translation>
     </message>
@@ -2212,12 +2321,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;bytes&apos; ist nur für Texte zulässig</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>&apos;words&apos; is only for reserved blocks</source>
-        <translation>&apos;words&apos; gilt nur für reservierte Blöcke</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+12"/>
         <source>&apos;min&apos; is greater than &apos;max&apos;</source>
         <translation>&apos;min&apos; ist größer als &apos;max&apos;</translation>
     </message>
@@ -2232,7 +2336,37 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>ein Bedienelement benötigt einen schreibbaren Eintrag</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-169"/>
+        <source>address range %1..%2 is empty</source>
+        <translation>Adressbereich %1..%2 ist leer</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&apos;alwaysAnswersAddress&apos; must be 1..247 or 255, not %1</source>
+        <translation>&apos;alwaysAnswersAddress&apos; muss 1..247 oder 255 sein, nicht %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&apos;processingTimeMaxMs&apos; is missing</source>
+        <translation>&apos;processingTimeMaxMs&apos; fehlt</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>a probe must be an object</source>
+        <translation>eine Probe muss ein Objekt sein</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>&apos;answers&apos; can only be true</source>
+        <translation>&apos;answers&apos; kann nur true sein</translation>
+    </message>
+    <message>
+        <location line="+106"/>
+        <source>&apos;words&apos; is only for reserved blocks</source>
+        <translation>&apos;words&apos; gilt nur für reservierte Blöcke</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>an entry cannot be an alias of itself</source>
         <translation>ein Eintrag kann kein Alias seiner selbst sein</translation>
     </message>
@@ -2377,8 +2511,26 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <source>runs past address 0xFFFF</source>
         <translation>reicht über Adresse 0xFFFF hinaus</translation>
     </message>
+    <message>
+        <location filename="../lib/protocol/overlapcheck.cpp" line="-33"/>
+        <source>&apos;%1&apos; (%2..%3)</source>
+        <translation>&apos;%1&apos; (%2..%3)</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>words %1..%2 overlap entry %3</source>
+        <translation>Wörter %1..%2 überschneiden sich mit Eintrag %3</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../lib/protocol/overlapcheck.cpp" line="+14"/>
+        <location line="+4"/>
+        <source> and %n more entries</source>
+        <translation>
+            <numerusform> und %n weiteren Eintrag</numerusform>
+            <numerusform> und %n weiteren Einträgen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+15"/>
         <source>%n more group(s) of overlapping entries not listed</source>
         <translation>
             <numerusform>%n weitere Gruppe überlappender Einträge nicht aufgeführt</numerusform>
@@ -2665,17 +2817,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::PtyPair</name>
     <message>
-        <location filename="../lib/sim/ptypair.cpp" line="+20"/>
+        <location filename="../lib/sim/ptypair.cpp" line="+21"/>
         <source>cannot start socat (is it installed?): %1</source>
         <translation>socat kann nicht gestartet werden (ist es installiert?): %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>socat ended: %1</source>
         <translation>socat beendet: %1</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+36"/>
         <source>socat did not create the pseudo-terminals</source>
         <translation>socat hat die Pseudo-Terminals nicht angelegt</translation>
     </message>
@@ -2683,7 +2835,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ReadPlanner</name>
     <message>
-        <location filename="../lib/bus/scheduler.cpp" line="+57"/>
+        <location filename="../lib/bus/devicepoll.cpp" line="+53"/>
         <location filename="../lib/protocol/readplanner.cpp" line="+32"/>
         <source>&apos;%1&apos; is not an entry of %2</source>
         <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
@@ -2943,7 +3095,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::TrendView</name>
     <message>
-        <location filename="../ui/trendview.cpp" line="+44"/>
+        <location filename="../ui/trendview.cpp" line="+46"/>
         <source>1 minute</source>
         <translation>1 Minute</translation>
     </message>
@@ -3146,9 +3298,53 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
 </context>
 <context>
+    <name>jumo::WriteAssignment</name>
+    <message>
+        <location filename="../app/cli/writeassignment.cpp" line="+31"/>
+        <source>&apos;%1&apos; is not ID=VALUE or ID.BIT=0|1</source>
+        <translation>&apos;%1&apos; hat nicht die Form ID=VALUE oder ID.BIT=0|1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&apos;%1&apos; is not an entry of %2</source>
+        <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&apos;%1&apos; is given both whole and by bits: give one or the other</source>
+        <translation>&apos;%1&apos; ist sowohl ganz als auch bitweise angegeben: eines von beiden angeben</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&apos;%1&apos; is given twice</source>
+        <translation>&apos;%1&apos; ist zweimal angegeben</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&apos;%1&apos;: a broadcast is not answered, so the bits it should keep cannot be read; write the whole word</source>
+        <translation>&apos;%1&apos;: Ein Broadcast wird nicht beantwortet, daher können die Bits, die erhalten bleiben sollen, nicht gelesen werden; das ganze Wort schreiben</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;%1&apos; is not a bit state for &apos;%2&apos;: give 0, 1, on, off, true or false</source>
+        <translation>&apos;%1&apos; ist kein Bitzustand für &apos;%2&apos;: 0, 1, on, off, true oder false angeben</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&apos;%1&apos; is given twice, on and off</source>
+        <translation>&apos;%1&apos; ist zweimal angegeben, ein und aus</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>send a command as %1=BIT, e.g. %1=%2; it is sent once</source>
+        <translation>einen Befehl als %1=BIT senden, z. B. %1=%2; er wird einmal gesendet</translation>
+    </message>
+</context>
+<context>
     <name>jumo::WriteCommand</name>
     <message>
-        <location filename="../lib/models/writecommand.cpp" line="+18"/>
+        <location filename="../lib/models/writecommand.cpp" line="+37"/>
+        <location line="+6"/>
         <source>Writing %1...</source>
         <translation>%1 wird geschrieben...</translation>
     </message>
@@ -6618,7 +6814,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+30"/>
+        <location filename="../app/jumo-hmi.cpp" line="+31"/>
         <source>JUMO commissioning and monitoring HMI.</source>
         <translation>JUMO-HMI für Inbetriebnahme und Überwachung.</translation>
     </message>
@@ -6668,7 +6864,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Auf stderr ausgeben, wann der erste Live-Wert eintrifft.</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+2"/>
+        <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
+        <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Map files refused: %1</source>
         <translation>Map-Dateien abgelehnt: %1</translation>
     </message>

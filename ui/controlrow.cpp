@@ -1,11 +1,12 @@
 #include "controlrow.h"
 
+#include "bitswitches.h"
 #include "bus/bus.h"
 #include "models/livevaluesmodel.h"
-#include "protocol/valuecodec.h"
+#include "models/valuetext.h"
 #include "models/writecommand.h"
+#include "protocol/valuecodec.h"
 
-#include <QCheckBox>
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDoubleValidator>
@@ -29,7 +30,7 @@ QString translatedLabel(const QString &label)
 bool changesOutputs(const RegisterEntry &e)
 {
     static const QStringList controls{"analog_output", "digital_output", "external_input", "binary_outputs",
-                                      "command", "override", "alpha"};
+                                      "switches", "command", "override", "alpha"};
     return controls.contains(e.control);
 }
 
@@ -37,7 +38,7 @@ bool changesOutputs(const RegisterEntry &e)
 
 ControlRow::ControlRow(Bus *bus, int device, const RegisterMap &map, const RegisterEntry &entry, LiveValuesModel *values,
                        QWidget *parent)
-    : QWidget(parent), m_map(map), m_entry(entry), m_values(values),
+    : QWidget(parent), m_bus(bus), m_device(device), m_map(map), m_entry(entry), m_values(values),
       m_command(new WriteCommand(bus, device, entry.id, this)), m_current(new QLabel(this)), m_state(new QLabel(this))
 {
     setObjectName(QStringLiteral("control_") + entry.id);
@@ -77,14 +78,9 @@ ControlRow::ControlRow(Bus *bus, int device, const RegisterMap &map, const Regis
             m_buttons << button;
         }
     } else if (entry.type == ValueType::Bitfield) {
-        for (const BitDefinition &b : entry.bits) {
-            if (b.reserved || (entry.activationMask && b.mask() == *entry.activationMask) || b.width != 1)
-                continue;
-            auto *box = new QCheckBox(translatedLabel(b.label), this);
-            box->setProperty("bitId", b.id);
-            inputs->addWidget(box);
-            m_bits << box;
-        }
+        m_switches = new BitSwitches(bus, device, map, entry, this);
+        connect(m_switches, &BitSwitches::switchRequested, this, &ControlRow::switchBit);
+        inputs->addWidget(m_switches, 1);
     } else if (entry.type == ValueType::Bool || entry.type == ValueType::Enum) {
         m_choice = new QComboBox(this);
         if (entry.type == ValueType::Bool) {
@@ -108,8 +104,8 @@ ControlRow::ControlRow(Bus *bus, int device, const RegisterMap &map, const Regis
         auto *unit = new QLabel(entry.unit, this);
         inputs->addWidget(unit);
     }
-    if (m_buttons.isEmpty()) {
-        m_writeButton = new QPushButton(tr("Write"), this);
+    if (m_buttons.isEmpty() && !(m_switches && m_switches->switchesSingleBits())) {
+        m_writeButton = new QPushButton(m_switches ? tr("Write all bits") : tr("Write"), this);
         m_writeButton->setObjectName(QStringLiteral("write_") + entry.id);
         connect(m_writeButton, &QPushButton::clicked, this, &ControlRow::writeInput);
         inputs->addWidget(m_writeButton);
@@ -127,29 +123,40 @@ ControlRow::ControlRow(Bus *bus, int device, const RegisterMap &map, const Regis
     layout->addWidget(m_current, 3, 0);
     layout->addWidget(m_state, 3, 1, 1, 2);
 
-    connect(m_command, &WriteCommand::stateChanged, this, [this](WriteCommand::State state, const QString &message) {
-        switch (state) {
-        case WriteCommand::State::Pending:
-            m_state->setStyleSheet(QStringLiteral("color: #806000"));
-            m_state->setText(tr("Pending: %1").arg(message));
-            break;
-        case WriteCommand::State::Confirmed:
-            m_state->setStyleSheet(QStringLiteral("color: #207020"));
-            m_state->setText(tr("Confirmed: %1").arg(message));
-            break;
-        case WriteCommand::State::Refused:
-            m_state->setStyleSheet(QStringLiteral("color: #b00000"));
-            m_state->setText(tr("Refused: %1").arg(message));
-            break;
-        case WriteCommand::State::Idle:
-            m_state->clear();
-            break;
-        }
-    });
+    connect(m_command, &WriteCommand::stateChanged, this,
+            [this](WriteCommand::State state, const QString &message) { showWriteState(int(state), message); });
     if (m_values) {
         connect(m_values, &QAbstractItemModel::dataChanged, this, &ControlRow::refreshCurrent);
         refreshCurrent();
     }
+}
+
+void ControlRow::showWriteState(int state, const QString &message)
+{
+    switch (WriteCommand::State(state)) {
+    case WriteCommand::State::Pending:
+        m_state->setStyleSheet(QStringLiteral("color: #806000"));
+        m_state->setText(tr("Pending: %1").arg(message));
+        break;
+    case WriteCommand::State::Confirmed:
+        m_state->setStyleSheet(QStringLiteral("color: #207020"));
+        m_state->setText(tr("Confirmed: %1").arg(message));
+        break;
+    case WriteCommand::State::Refused:
+        m_state->setStyleSheet(QStringLiteral("color: #b00000"));
+        m_state->setText(tr("Refused: %1").arg(message));
+        break;
+    case WriteCommand::State::Unknown:
+        // Neither done nor refused: only the device can tell, and nothing is resent.
+        m_state->setStyleSheet(QStringLiteral("color: #b05000; font-weight: bold"));
+        m_state->setText(tr("Unknown, check the device: %1").arg(message));
+        break;
+    case WriteCommand::State::Idle:
+        m_state->clear();
+        break;
+    }
+    if (m_switches)
+        m_switches->setBusy(WriteCommand::State(state) == WriteCommand::State::Pending);
 }
 
 void ControlRow::refreshCurrent()
@@ -159,23 +166,36 @@ void ControlRow::refreshCurrent()
         return;
     }
     m_dirty = false;
-    const int row = m_values->rowOf(m_entry.id);
-    if (row < 0) {
-        m_current->setText(m_entry.isReadable() ? QString() : tr("Write-only: the device cannot report it."));
+    if (m_switches)
+        m_switches->refresh();
+    if (m_values->rowOf(m_entry.id) < 0) {
+        if (m_switches && m_switches->switchesSingleBits())
+            m_current->setText(tr("Write-only: the lamps show the states the device reports elsewhere."));
+        else
+            m_current->setText(m_entry.isReadable() ? QString() : tr("Write-only: the device cannot report it."));
         return;
     }
-    const QString value = m_values->index(row, LiveValuesModel::ValueColumn).data().toString();
-    m_current->setText(tr("Device: %1 %2").arg(value.isEmpty() ? tr("not read yet") : value, m_entry.unit));
+    // The value only while it is current; otherwise no number, or a stale one, and why.
+    const EntryState *state = m_bus->entryState(m_device, m_entry.id);
+    const bool current = state && state->isCurrent();
+    // Switches show their bits on their lamps; the word itself only says why it is not current.
+    QString text = m_switches && m_switches->switchesSingleBits() ? QString()
+                                                                  : tr("Device: %1").arg(ValueText::value(state, m_entry));
+    if (!current)
+        text += QStringLiteral(" (%1)").arg(ValueText::status(state, m_map, m_bus->clockMs()));
+    m_current->setText(text.trimmed());
+    m_current->setStyleSheet(current ? QString() : QStringLiteral("color: gray; font-style: italic"));
 }
 
 void ControlRow::setReadOnly(bool readOnly)
 {
     m_readOnly = readOnly;
     for (QWidget *w : findChildren<QWidget *>()) {
-        if (qobject_cast<QLineEdit *>(w) || qobject_cast<QComboBox *>(w) || qobject_cast<QCheckBox *>(w)
-            || qobject_cast<QPushButton *>(w))
+        if (qobject_cast<QLineEdit *>(w) || qobject_cast<QComboBox *>(w) || qobject_cast<QPushButton *>(w))
             w->setEnabled(!readOnly);
     }
+    if (m_switches)
+        m_switches->setReadOnly(readOnly);
     setToolTip(readOnly ? tr("Read-only mode: nothing is written to the devices.") : QString());
 }
 
@@ -185,12 +205,9 @@ QString ControlRow::inputValue() const
         return m_edit->text().trimmed();
     if (m_choice)
         return m_choice->currentData().toString();
-    QStringList on;
-    for (QCheckBox *box : m_bits) {
-        if (box->isChecked())
-            on << box->property("bitId").toString();
-    }
-    return on.isEmpty() ? QStringLiteral("0") : on.join(QLatin1Char('+'));
+    if (m_switches && !m_switches->switchesSingleBits())
+        return m_switches->tickedValue();
+    return {};
 }
 
 void ControlRow::setInputValue(const QString &value)
@@ -199,8 +216,8 @@ void ControlRow::setInputValue(const QString &value)
         m_edit->setText(value);
     if (m_choice)
         m_choice->setCurrentIndex(std::max(0, m_choice->findData(value)));
-    for (QCheckBox *box : m_bits)
-        box->setChecked(value.split(QLatin1Char('+')).contains(box->property("bitId").toString()));
+    if (m_switches)
+        m_switches->setTicked(value);
 }
 
 QString ControlRow::stateText() const
@@ -240,6 +257,18 @@ void ControlRow::write(const QString &value, const QString &description)
     if (!m_readOnly && !confirm(description))
         return;
     m_command->write(value);
+}
+
+void ControlRow::switchBit(const QString &bitId, bool on)
+{
+    const BitDefinition *bit = m_entry.bitById(bitId);
+    if (!bit)
+        return;
+    const QString label = translatedLabel(bit->label);
+    if (!m_readOnly
+        && !confirm(on ? tr("switch \"%1\" on").arg(label) : tr("switch \"%1\" off").arg(label)))
+        return;
+    m_command->writeBits({{bitId, on}}, on ? tr("%1 on").arg(label) : tr("%1 off").arg(label));
 }
 
 void ControlRow::showEvent(QShowEvent *event)

@@ -8,11 +8,11 @@
 class QLabel;
 class QLineEdit;
 class QComboBox;
-class QCheckBox;
 class QPushButton;
 
 namespace jumo {
 
+class BitSwitches;
 class Bus;
 class LiveValuesModel;
 class WriteCommand;
@@ -34,6 +34,8 @@ public:
     // Writes the input's value, after a confirmation where the write changes outputs.
     void writeInput();
     QString stateText() const;
+    // The on/off switches of a bit field's bits, or null.
+    BitSwitches *switches() const { return m_switches; }
 
 protected:
     void showEvent(QShowEvent *event) override;
@@ -41,16 +43,20 @@ protected:
 private:
     bool m_dirty = true;
     void write(const QString &value, const QString &description);
+    void switchBit(const QString &bitId, bool on);
     bool confirm(const QString &description) const;
     void refreshCurrent();
+    void showWriteState(int state, const QString &message);
 
+    Bus *m_bus;
+    int m_device;
     const RegisterMap &m_map;
     const RegisterEntry &m_entry;
     LiveValuesModel *m_values;
     WriteCommand *m_command;
     QLineEdit *m_edit = nullptr;
     QComboBox *m_choice = nullptr;
-    QList<QCheckBox *> m_bits;
+    BitSwitches *m_switches = nullptr;
     QList<QPushButton *> m_buttons;
     QPushButton *m_writeButton = nullptr;
     QPushButton *m_restoreButton = nullptr;

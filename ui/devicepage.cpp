@@ -44,7 +44,7 @@ DevicePage::DevicePage(Bus *bus, int device, LiveValuesModel *values, AlarmBitsM
 
     m_controls = new ControlsPanel(bus, device, map,
                                    {"setpoint", "analog_output", "digital_output", "external_input", "alpha",
-                                    "setpoint_select", "parameter_set_select", "binary_outputs", "command", "override"},
+                                    "setpoint_select", "parameter_set_select", "binary_outputs", "switches", "command", "override"},
                                    m_values, this);
     m_tabs->addTab(m_controls, tr("Controls"));
     m_parameters = new ControlsPanel(bus, device, map, {"parameter"}, m_values, this);
@@ -56,7 +56,8 @@ DevicePage::DevicePage(Bus *bus, int device, LiveValuesModel *values, AlarmBitsM
         m_program = program;
         m_tabs->addTab(m_program, tr("Program"));
     }
-    m_tabs->addTab(new TrendView(m_values, this), tr("Trend"));
+    m_trend = new TrendView(m_values, this);
+    m_tabs->addTab(m_trend, tr("Trend"));
 
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_readOnlyBanner);

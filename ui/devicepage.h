@@ -34,6 +34,7 @@ public:
     ControlsPanel *controls() const { return m_controls; }
     ControlsPanel *parameters() const { return m_parameters; }
     QTabWidget *tabs() const { return m_tabs; }
+    TrendView *trend() const { return m_trend; }
 
 private:
     int m_device;
@@ -45,6 +46,7 @@ private:
     ControlsPanel *m_controls;
     ControlsPanel *m_parameters;
     ControlsPanel *m_program = nullptr;
+    TrendView *m_trend;
     QLabel *m_readOnlyBanner;
 };
 

@@ -2,18 +2,20 @@
 
 #include "models/alarmbitsmodel.h"
 #include "models/livevaluesmodel.h"
+#include "models/valuetext.h"
 #include "protocol/registermap.h"
 
 #include <QCoreApplication>
 #include <QLabel>
+#include <QLocale>
 #include <QVBoxLayout>
 
 namespace jumo {
 
-DeviceTile::DeviceTile(const RegisterMap &map, quint8 address, LiveValuesModel *values, AlarmBitsModel *alarms,
-                       QWidget *parent)
-    : QFrame(parent), m_map(map), m_values(values), m_alarms(alarms), m_title(new QLabel(this)),
-      m_keyValues(new QLabel(this)), m_alarmLabel(new QLabel(this))
+DeviceTile::DeviceTile(DeviceId device, const RegisterMap &map, quint8 address, LiveValuesModel *values,
+                       AlarmBitsModel *alarms, QWidget *parent)
+    : QFrame(parent), m_device(device), m_map(map), m_values(values), m_alarms(alarms), m_title(new QLabel(this)),
+      m_state(new QLabel(this)), m_keyValues(new QLabel(this)), m_alarmLabel(new QLabel(this))
 {
     setObjectName(QStringLiteral("tile_%1_%2").arg(map.family).arg(address));
     setFrameShape(QFrame::StyledPanel);
@@ -21,27 +23,40 @@ DeviceTile::DeviceTile(const RegisterMap &map, quint8 address, LiveValuesModel *
     setMinimumWidth(260);
     m_title->setText(QStringLiteral("<b>%1</b><br>%2").arg(map.name.toHtmlEscaped(), tr("address %1").arg(address)));
     m_title->setWordWrap(true);
+    m_state->setObjectName(QStringLiteral("deviceState"));
     m_keyValues->setObjectName(QStringLiteral("keyValues"));
     m_alarmLabel->setObjectName(QStringLiteral("alarmCount"));
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_title);
+    layout->addWidget(m_state);
     layout->addWidget(m_keyValues);
     layout->addWidget(m_alarmLabel);
     layout->addStretch();
     connect(m_values, &QAbstractItemModel::dataChanged, this, &DeviceTile::refresh);
     connect(m_alarms, &AlarmBitsModel::activeAlarmsChanged, this, &DeviceTile::refresh);
+    connect(m_alarms, &AlarmBitsModel::alarmsKnownChanged, this, &DeviceTile::refresh);
     refresh();
 }
 
-void DeviceTile::setOnline(bool online)
+void DeviceTile::setCondition(const DeviceCondition &condition)
 {
-    m_online = online;
+    m_condition = condition;
     refresh();
 }
 
 QString DeviceTile::valuesText() const
 {
     return m_keyValues->text();
+}
+
+QString DeviceTile::stateText() const
+{
+    return m_stateText;
+}
+
+QString DeviceTile::alarmText() const
+{
+    return m_alarmLabel->text();
 }
 
 void DeviceTile::refresh()
@@ -51,25 +66,63 @@ void DeviceTile::refresh()
         return;
     }
     m_dirty = false;
+    // Each key value as the live table shows it: no number when unknown, marked when stale.
     QStringList lines;
     for (const QString &id : m_map.overview) {
         const int row = m_values->rowOf(id);
         if (row < 0)
             continue;
         const RegisterEntry *e = m_map.entry(id);
-        const QString value = m_values->index(row, LiveValuesModel::ValueColumn).data().toString();
-        lines << QStringLiteral("%1: %2 %3")
-                         .arg(QCoreApplication::translate("jumo::maps", e->label.toUtf8().constData()),
-                              value.isEmpty() ? QStringLiteral("-") : value, e->unit);
+        const QModelIndex index = m_values->index(row, LiveValuesModel::ValueColumn);
+        const auto validity = Validity(index.data(LiveValuesModel::ValidityRole).toInt());
+        QString value = index.data().toString();
+        if (validity != Validity::Unknown && !e->unit.isEmpty())
+            value += QLatin1Char(' ') + e->unit;
+        if (validity == Validity::Stale)
+            value += QLatin1Char(' ') + tr("(stale)");
+        lines << QStringLiteral("%1: %2").arg(QCoreApplication::translate("jumo::maps", e->label.toUtf8().constData()),
+                                              value);
     }
     const QString text = lines.join(QLatin1Char('\n'));
     if (m_keyValues->text() != text)
         m_keyValues->setText(text);
+
+    const QString since = m_condition.since.isValid() ? QLocale().toString(m_condition.since.time(), QStringLiteral("HH:mm:ss"))
+                                                      : QString();
+    QString state;
+    QString colour;
+    switch (m_condition.state) {
+    case DeviceCondition::State::Online:
+        state = tr("Online");
+        break;
+    case DeviceCondition::State::Offline:
+        state = tr("Not answering since %1").arg(since);
+        colour = QStringLiteral("#d9d9d9");
+        break;
+    case DeviceCondition::State::LineLost:
+        state = tr("Line lost since %1").arg(since);
+        colour = QStringLiteral("#d9d9d9");
+        break;
+    case DeviceCondition::State::Disconnected:
+        state = tr("Line disconnected");
+        colour = QStringLiteral("#ececec");
+        break;
+    }
+    // "No alarm" only when every alarm word is known; otherwise nobody can say.
     const int alarms = m_alarms->activeAlarms();
-    QString state = m_online ? tr("%n active alarm(s)", nullptr, alarms) : tr("not answering");
-    if (m_alarmLabel->text() != state)
-        m_alarmLabel->setText(state);
-    const QString colour = !m_online ? QStringLiteral("#e0e0e0") : alarms ? QStringLiteral("#ffd8d8") : QStringLiteral("#e3f4e3");
+    const bool known = m_alarms->alarmsKnown() && m_condition.isOnline();
+    const QString alarmText = known ? tr("%n active alarm(s)", nullptr, alarms) : tr("Alarms unknown");
+    if (colour.isEmpty())
+        colour = !known ? QStringLiteral("#fff3cf") : alarms ? QStringLiteral("#ffd8d8") : QStringLiteral("#e3f4e3");
+    const QString stateHtml = m_condition.isOnline() ? state.toHtmlEscaped()
+                                                     : QStringLiteral("<b>%1</b>").arg(state.toHtmlEscaped());
+    m_stateText = state;
+    if (m_state->text() != stateHtml)
+        m_state->setText(stateHtml);
+    if (m_alarmLabel->text() != alarmText)
+        m_alarmLabel->setText(alarmText);
+    // An unanswering device's values are greyed as well as blanked.
+    m_keyValues->setEnabled(m_condition.isOnline());
     const QString sheet = QStringLiteral("jumo--DeviceTile { background: %1; }").arg(colour);
     if (styleSheet() != sheet)   // re-styling is costly: only when the colour changes
         setStyleSheet(sheet);
@@ -78,7 +131,7 @@ void DeviceTile::refresh()
 void DeviceTile::mouseReleaseEvent(QMouseEvent *event)
 {
     QFrame::mouseReleaseEvent(event);
-    emit activated();
+    emit activated(m_device);
 }
 
 void DeviceTile::showEvent(QShowEvent *event)

@@ -1,6 +1,9 @@
-// A tile of the overview: a device's name and address, its key values, its alarm count
-// and whether it answers; clicking it opens the device's page.
+// A tile of the overview: a device's name and address, whether it answers (online,
+// offline since, line lost), its key values with their validity and its alarms;
+// clicking it opens the device's page.
 #pragma once
+
+#include "bus/bus.h"
 
 #include <QFrame>
 
@@ -17,14 +20,17 @@ class DeviceTile : public QFrame
     Q_OBJECT
 
 public:
-    DeviceTile(const RegisterMap &map, quint8 address, LiveValuesModel *values, AlarmBitsModel *alarms,
-               QWidget *parent = nullptr);
+    DeviceTile(DeviceId device, const RegisterMap &map, quint8 address, LiveValuesModel *values,
+               AlarmBitsModel *alarms, QWidget *parent = nullptr);
 
-    void setOnline(bool online);
+    DeviceId device() const { return m_device; }
+    void setCondition(const DeviceCondition &condition);
     QString valuesText() const;
+    QString stateText() const;
+    QString alarmText() const;
 
 signals:
-    void activated();
+    void activated(jumo::DeviceId device);
 
 protected:
     void showEvent(QShowEvent *event) override;
@@ -34,13 +40,16 @@ private:
     bool m_dirty = true;
     void refresh();
 
+    DeviceId m_device;
     const RegisterMap &m_map;
     LiveValuesModel *m_values;
     AlarmBitsModel *m_alarms;
     QLabel *m_title;
+    QLabel *m_state;
     QLabel *m_keyValues;
     QLabel *m_alarmLabel;
-    bool m_online = true;
+    DeviceCondition m_condition;
+    QString m_stateText;
 };
 
 } // namespace jumo

@@ -164,11 +164,9 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
         if (!record.error.isEmpty())
             m_lastError = tr("address %1: %2").arg(record.slave).arg(record.error);
     });
-    connect(&m_bus, &Bus::onlineChanged, this, [this](DeviceId id, bool online) {
-        for (const DeviceEntry &d : std::as_const(m_devices)) {
-            if (d.id == id)
-                d.tile->setOnline(online);
-        }
+    connect(&m_bus, &Bus::conditionChanged, this, [this](DeviceId id, const DeviceCondition &condition) {
+        if (const int index = indexOf(id); index >= 0)
+            m_devices[index].tile->setCondition(condition);
     });
     auto *statusTimer = new QTimer(this);
     connect(statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
@@ -354,13 +352,30 @@ bool MainWindow::addDevice(std::shared_ptr<const RegisterMap> map, quint8 addres
     const DeviceId id = m_bus.addDevice(map, address);
     auto *values = new LiveValuesModel(&m_bus, id, this);
     auto *alarms = new AlarmBitsModel(&m_bus, id, this);
-    auto *tile = new DeviceTile(*map, address, values, alarms, m_overview);
+    auto *tile = new DeviceTile(id, *map, address, values, alarms, m_overview);
+    tile->setCondition(m_bus.condition(id));
     m_overview->addTile(tile);
     m_navigation->addItem(QStringLiteral("%1 @ %2").arg(map->name).arg(address));
     m_devices << DeviceEntry{id, values, alarms, tile, nullptr, nullptr};
-    const int index = int(m_devices.size()) - 1;
-    connect(tile, &DeviceTile::activated, this, [this, index] { m_navigation->setCurrentRow(firstDeviceRow + index); });
+    connect(tile, &DeviceTile::activated, this, [this](DeviceId device) {
+        if (const int index = indexOf(device); index >= 0)
+            m_navigation->setCurrentRow(firstDeviceRow + index);
+    });
     return true;
+}
+
+void MainWindow::showOverview()
+{
+    m_navigation->setCurrentRow(overviewRow);
+}
+
+int MainWindow::indexOf(DeviceId id) const
+{
+    for (int i = 0; i < m_devices.size(); ++i) {
+        if (m_devices[i].id == id)
+            return i;
+    }
+    return -1;
 }
 
 void MainWindow::showDevice(const QString &family, quint8 address)

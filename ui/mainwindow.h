@@ -63,6 +63,7 @@ public:
     bool addDevice(std::shared_ptr<const RegisterMap> map, quint8 address);
     void showDevice(DevicePage *page);
     void showDevice(const QString &family, quint8 address);
+    void showOverview();
     void openScanDialog();
     // The commissioning report of a device, with the writes since this window opened.
     bool writeReport(const QString &family, quint8 address, const QString &path, QString *error);
@@ -86,6 +87,9 @@ private:
         DataLogger *logger;   // made when logging is first asked for
     };
     DevicePage *ensurePage(int index) const;
+    // The position of a device in m_devices (and in the navigation after its first
+    // rows), -1 when it is gone. Tiles and callbacks keep ids, never positions.
+    int indexOf(DeviceId id) const;
     void onNavigation(int row);
 
     void buildMenus();

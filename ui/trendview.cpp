@@ -11,6 +11,8 @@
 #include <QDateTimeAxis>
 #include <QFileDialog>
 #include <QHBoxLayout>
+#include <QLegend>
+#include <QLegendMarker>
 #include <QLineSeries>
 #include <QListWidget>
 #include <QMessageBox>
@@ -78,47 +80,106 @@ TrendView::TrendView(LiveValuesModel *values, QWidget *parent)
     split->setStretchFactor(1, 3);
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(split);
-    connect(m_values, &QAbstractItemModel::dataChanged, this,
-            [this](const QModelIndex &first, const QModelIndex &last) { onDataChanged(first.row(), last.row()); });
+    // New readings and validity changes; the once-a-second age refresh (status and age
+    // columns only) adds no point.
+    connect(m_values, &QAbstractItemModel::dataChanged, this, [this](const QModelIndex &first, const QModelIndex &last) {
+        if (first.column() <= LiveValuesModel::ValueColumn)
+            onDataChanged(first.row(), last.row());
+    });
     rescale();
 }
 
 void TrendView::setSelected(int row, bool on)
 {
     if (!on) {
-        if (QLineSeries *s = m_series.take(row)) {
+        const Trace trace = m_traces.take(row);
+        for (QLineSeries *s : trace.segments) {
             m_chart->removeSeries(s);
             delete s;
         }
         return;
     }
-    if (m_series.contains(row))
+    if (m_traces.contains(row))
         return;
+    Trace &trace = m_traces[row];
+    trace.broken = true;
+    addSegment(row, trace);
+}
+
+void TrendView::select(const QString &entryId, bool on)
+{
+    const int row = m_values->rowOf(entryId);
+    for (int i = 0; i < m_choice->count(); ++i) {
+        if (m_choice->item(i)->data(Qt::UserRole).toInt() == row)
+            m_choice->item(i)->setCheckState(on ? Qt::Checked : Qt::Unchecked);
+    }
+}
+
+QList<QList<QPointF>> TrendView::segments(const QString &entryId) const
+{
+    QList<QList<QPointF>> out;
+    for (const QLineSeries *s : m_traces.value(m_values->rowOf(entryId)).segments) {
+        if (s->count() > 0)
+            out << s->points();
+    }
+    return out;
+}
+
+QLineSeries *TrendView::addSegment(int row, Trace &trace)
+{
     auto *series = new QLineSeries;
-    series->setName(m_values->index(row, LiveValuesModel::LabelColumn).data().toString() + QStringLiteral(" [")
-                    + m_values->index(row, LiveValuesModel::UnitColumn).data().toString() + QLatin1Char(']'));
     m_chart->addSeries(series);
     series->attachAxis(m_timeAxis);
     series->attachAxis(m_valueAxis);
-    m_series.insert(row, series);
+    if (trace.segments.isEmpty()) {
+        series->setName(m_values->index(row, LiveValuesModel::LabelColumn).data().toString() + QStringLiteral(" [")
+                        + m_values->index(row, LiveValuesModel::UnitColumn).data().toString() + QLatin1Char(']'));
+    } else {
+        // A continuation: the same colour, one legend entry for the whole trace.
+        series->setPen(trace.segments.first()->pen());
+        for (QLegendMarker *marker : m_chart->legend()->markers(series))
+            marker->setVisible(false);
+    }
+    trace.segments << series;
+    return series;
 }
 
 void TrendView::onDataChanged(int first, int last)
 {
-    if (m_paused || m_series.isEmpty())
+    if (m_paused || m_traces.isEmpty())
         return;
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     const qint64 keepFrom = now - 3600 * 1000;
     bool added = false;
-    for (auto it = m_series.begin(); it != m_series.end(); ++it) {
+    for (auto it = m_traces.begin(); it != m_traces.end(); ++it) {
         if (it.key() < first || it.key() > last)
             continue;
+        Trace &trace = it.value();
+        // Only a current good number is a point; anything else (stale, unknown, an error
+        // value) ends the line here.
         const QVariant v = m_values->index(it.key(), 0).data(LiveValuesModel::NumericRole);
-        if (!v.isValid())
-            continue;   // error values and failed reads leave a gap, never a false point
-        it.value()->append(double(now), v.toDouble());
-        while (it.value()->count() > 0 && it.value()->at(0).x() < keepFrom)
-            it.value()->remove(0);
+        if (!v.isValid()) {
+            trace.broken = true;
+            continue;
+        }
+        QLineSeries *series = trace.segments.last();
+        if (trace.broken && series->count() > 0)
+            series = addSegment(it.key(), trace);
+        trace.broken = false;
+        series->append(double(now), v.toDouble());
+        // An hour is kept; segments that fell out of it entirely go.
+        for (QLineSeries *s : std::as_const(trace.segments)) {
+            while (s->count() > 0 && s->at(0).x() < keepFrom)
+                s->remove(0);
+        }
+        while (trace.segments.size() > 1 && trace.segments.first()->count() == 0) {
+            QLineSeries *gone = trace.segments.takeFirst();
+            trace.segments.first()->setName(gone->name());
+            for (QLegendMarker *marker : m_chart->legend()->markers(trace.segments.first()))
+                marker->setVisible(true);
+            m_chart->removeSeries(gone);
+            delete gone;
+        }
         added = true;
     }
     if (added)
@@ -132,11 +193,13 @@ void TrendView::rescale()
     m_timeAxis->setRange(QDateTime::fromMSecsSinceEpoch(now - span), QDateTime::fromMSecsSinceEpoch(now));
     double lo = std::numeric_limits<double>::max();
     double hi = std::numeric_limits<double>::lowest();
-    for (QLineSeries *s : std::as_const(m_series)) {
-        for (const QPointF &p : s->points()) {
-            if (p.x() >= now - span) {
-                lo = std::min(lo, p.y());
-                hi = std::max(hi, p.y());
+    for (const Trace &trace : std::as_const(m_traces)) {
+        for (const QLineSeries *s : trace.segments) {
+            for (const QPointF &p : s->points()) {
+                if (p.x() >= now - span) {
+                    lo = std::min(lo, p.y());
+                    hi = std::max(hi, p.y());
+                }
             }
         }
     }
@@ -151,12 +214,14 @@ bool TrendView::exportCsv(const QString &path, QString *error) const
     QString csv;
     QTextStream out(&csv);
     out << "time,entry,value,unit\n";
-    for (auto it = m_series.cbegin(); it != m_series.cend(); ++it) {
+    for (auto it = m_traces.cbegin(); it != m_traces.cend(); ++it) {
         const QString id = m_values->entryId(it.key());
         const QString unit = m_values->index(it.key(), LiveValuesModel::UnitColumn).data().toString();
-        for (const QPointF &p : it.value()->points())
-            out << QDateTime::fromMSecsSinceEpoch(qint64(p.x()), Qt::UTC).toString(Qt::ISODateWithMs) << ',' << id << ','
-                << QString::number(p.y(), 'g', 7) << ',' << unit << '\n';
+        for (const QLineSeries *s : it.value().segments) {
+            for (const QPointF &p : s->points())
+                out << QDateTime::fromMSecsSinceEpoch(qint64(p.x()), Qt::UTC).toString(Qt::ISODateWithMs) << ',' << id
+                    << ',' << QString::number(p.y(), 'g', 9) << ',' << unit << '\n';
+        }
     }
     out.flush();
     return FileSaver::save(path, csv.toUtf8(), error);

@@ -3,6 +3,7 @@
 #include "protocol/familyregistry.h"
 #include "linecommands.h"
 #include "mapcommands.h"
+#include "modbuslogging.h"
 
 namespace jumo {
 
@@ -26,11 +27,12 @@ QString CommandLineTool::usage() const
               "  decode FAMILY ID WORD... decode raw register words as an entry\n"
               "\n"
               "Commands on a serial line (all take --port PATH --baud N --format 8N1|8E1|8O1|8N2\n"
-              "--timeout MS --read-only); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1, and its\n"
-              "identity registers must confirm FAMILY (exit code 3 if not; --no-identify skips it):\n"
+              "--timeout MS --read-only --verbose); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1, and\n"
+              "its identity registers must confirm FAMILY (exit code 4 if not; --no-identify skips it):\n"
               "  scan [--from A --to B]   find devices and name their family\n"
               "  read DEVICE ID...        read entries once\n"
-              "  write DEVICE ID=VALUE... write entries, verified by reading them back\n"
+              "  write DEVICE ID=VALUE... write entries, verified by reading them back; a bit field's\n"
+              "                           ID=VALUE replaces every bit, ID.BIT=0|1 changes one bit only\n"
               "  dump DEVICE [--json]     read every readable entry once\n"
               "  monitor DEVICE... --jsonl|--csv [--interval MS] [--cycles N]\n"
               "                           poll continuously, one record per poll cycle\n"
@@ -53,6 +55,7 @@ void CommandLineTool::interrupt(int signal)
 
 std::optional<int> CommandLineTool::run(const QStringList &arguments)
 {
+    showModbusLogging(false);   // a line command's --verbose turns it on
     static const QStringList helpWords{QStringLiteral("--help"), QStringLiteral("--help-all"), QStringLiteral("-h"),
                                        QStringLiteral("help")};
     if (arguments.isEmpty() || helpWords.contains(arguments.constFirst())) {

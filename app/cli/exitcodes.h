@@ -6,7 +6,8 @@ namespace jumo::exitcode {
 constexpr int Ok = 0;
 constexpr int Failed = 1;        // timeouts, exceptions, refused writes, files not written
 constexpr int Usage = 2;         // wrong arguments or input files
-constexpr int WrongDevice = 3;   // the device at the address is not of the named family
+constexpr int Uncertain = 3;     // write: an outcome is unknown or unverified, check the device
+constexpr int WrongDevice = 4;   // the device at the address is not of the named family
 constexpr int Interrupted = 130; // SIGINT (128 + 2)
 constexpr int Terminated = 143;  // SIGTERM (128 + 15)
 

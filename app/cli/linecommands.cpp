@@ -17,6 +17,8 @@
 #include "protocol/regularfile.h"
 #include "reportwriter.h"
 #include "logs/writeaudit.h"
+#include "modbuslogging.h"
+#include "systemsettings.h"
 
 #include <QDateTime>
 #include <QFileInfo>
@@ -109,7 +111,11 @@ void LineCommands::addLineOptions(CommandParser &parser, bool namesDevices)
                       QStringLiteral("0")});
     parser.addOption({QStringLiteral("retries"), tr("Retries after a lost reply (default 2)."), tr("n"),
                       QStringLiteral("2")});
-    parser.addOption({QStringLiteral("read-only"), tr("Never write to the line (control-room mode).")});
+    parser.addOption({QStringLiteral("read-only"),
+                      tr("Never write to the line (control-room mode; the system configuration can set it for "
+                         "everyone).")});
+    parser.addOption({QStringLiteral("verbose"),
+                      tr("Show Qt's Modbus messages (CRC errors, timeouts, frames) on stderr.")});
 }
 
 std::optional<int> LineCommands::openLine(CommandParser &parser)
@@ -150,7 +156,9 @@ std::optional<int> LineCommands::openLine(CommandParser &parser)
         m_err << tr("--retries must be 0..10") << Qt::endl;
         return 2;
     }
-    settings.readOnly = parser.isSet(QStringLiteral("read-only"));
+    showModbusLogging(parser.isSet(QStringLiteral("verbose")));
+    // As in the HMI: the system configuration can make every tool read-only.
+    settings.readOnly = parser.isSet(QStringLiteral("read-only")) || SystemSettings::readOnly();
     m_identity->configure(parser);
     m_bus.setSettings(settings);
     if (!m_bus.open()) {
@@ -231,14 +239,15 @@ QString LineCommands::progressSummary() const
     if (m_command == QLatin1String("write") || m_command == QLatin1String("restore")) {
         if (m_writesAsked == 0)
             return tr("nothing was written");
-        const int left = int(m_pendingWrites.size());
+        const bool restore = m_command == QLatin1String("restore");
+        const int left = int(restore ? m_pendingWrites.size() : m_assignments.size());
         QString summary = tr("%1 of %n write(s) done", nullptr, m_writesAsked).arg(m_writesAsked - left);
-        if (m_command == QLatin1String("restore"))
+        if (restore)
             summary += tr(" (%n restored and verified)", nullptr, m_restored);
         const bool underWay = m_writeTicket >= 0 && left > 0;
         if (underWay)
             summary += tr("; %1 was being written: its outcome is unknown, check the device")
-                               .arg(m_pendingWrites.first().first);
+                               .arg(restore ? m_pendingWrites.first().first : m_assignments.first().entryId);
         if (left - underWay > 0)
             summary += tr("; %n not written", nullptr, left - underWay);
         return summary;
@@ -429,15 +438,28 @@ void LineCommands::readOnce(bool dump)
 std::optional<int> LineCommands::write(const QStringList &arguments)
 {
     CommandParser parser(QStringLiteral("write"),
-                         tr("Writes entries of a device; each write is verified by reading it back."));
+                         tr("Writes entries of a device; each write is verified by reading it back.\n"
+                            "\n"
+                            "ID=VALUE writes the whole entry: for a bit field it replaces EVERY bit of\n"
+                            "the word. ID.BIT=0|1 (or on|off, true|false) changes that bit only and keeps\n"
+                            "the others as the device reports them, read just before the write; bits of\n"
+                            "one entry given together go out in one write.\n"
+                            "\n"
+                            "Exit code: 0 every write confirmed (or acknowledged, where nothing reads it\n"
+                            "back); 1 a write failed (refused by the device, read back different, not\n"
+                            "sent, read-only mode); 3 the outcome of a write is unknown or unverified\n"
+                            "(its answer was lost; a command is never sent twice): check the device;\n"
+                            "2 wrong arguments, nothing sent."));
     addLineOptions(parser);
     parser.addOption({QStringLiteral("verify"),
                       tr("For a broadcast (FAMILY@0): the addresses to read it back from, e.g. 1,2,5."),
                       tr("addresses")});
     BroadcastGate::addOptions(parser);
     parser.addPositionalArgument(QStringLiteral("device"), tr("FAMILY@ADDRESS, or FAMILY@0 for a broadcast."));
-    parser.addPositionalArgument(QStringLiteral("assignment"), tr("ID=VALUE, e.g. input_setpoint=42.5."),
-                                 QStringLiteral("id=value..."));
+    parser.addPositionalArgument(QStringLiteral("assignment"),
+                                 tr("ID=VALUE, e.g. input_setpoint=42.5, or ID.BIT=0|1, e.g. "
+                                    "binary_signal_write.digital_output=1."),
+                                 QStringLiteral("id=value|id.bit=0|1..."));
     if (const auto stop = parser.parseArguments(arguments, m_out, m_err, 2))
         return stop;
     QStringList args = parser.positionalArguments();
@@ -464,31 +486,21 @@ std::optional<int> LineCommands::write(const QStringList &arguments)
             }
             verifyAddresses << quint8(address);
         }
+    }
+    // Everything is checked before the line is opened: nothing is sent for a typo.
+    QString error;
+    const std::optional<QList<WriteAssignment>> assignments = WriteAssignment::parse(*target.map, args, broadcast, &error);
+    if (!assignments) {
+        m_err << error << Qt::endl;
+        return 2;
+    }
+    m_assignments = *assignments;
+    if (broadcast) {
         if (const auto stop = m_broadcast->configure(parser, target.map, verifyAddresses))
             return stop;
     }
-    for (const QString &assignment : std::as_const(args)) {
-        const qsizetype eq = assignment.indexOf(QLatin1Char('='));
-        const QString id = assignment.left(eq);
-        const RegisterEntry *e = eq > 0 ? target.map->entry(id) : nullptr;
-        if (!e) {
-            m_err << (eq > 0 ? tr("'%1' is not an entry of %2").arg(id, target.map->family)
-                             : tr("'%1' is not ID=VALUE").arg(assignment))
-                  << Qt::endl;
-            return 2;
-        }
-        // Refuse a bad value before opening the line: nothing is sent for a typo.
-        const EncodeResult encoded = ValueCodec::encode(*e, *target.map, assignment.mid(eq + 1));
-        if (!encoded.ok()) {
-            m_err << encoded.error << Qt::endl;
-            return 2;
-        }
-        if (std::any_of(m_pendingWrites.cbegin(), m_pendingWrites.cend(), [&](const auto &w) { return w.first == id; })) {
-            m_err << tr("'%1' is given twice").arg(id) << Qt::endl;
-            return 2;
-        }
-        m_pendingWrites << qMakePair(id, assignment.mid(eq + 1));
-    }
+    if (const QString note = readOnlyNote(parser); !note.isEmpty())
+        m_err << note << Qt::endl;
     if (const auto stop = openLine(parser))
         return stop;
     m_identity->recordSkipsIn(m_audit);
@@ -505,7 +517,7 @@ std::optional<int> LineCommands::write(const QStringList &arguments)
 
 void LineCommands::startWrites(Target target, bool broadcast, const QList<quint8> &verifyAddresses)
 {
-    m_writesAsked = int(m_pendingWrites.size());
+    m_writesAsked = int(m_assignments.size());
     m_bus.setPolling(false);
     if (broadcast) {
         // The bus reads a broadcast back from every device of the family it knows.
@@ -519,22 +531,14 @@ void LineCommands::startWrites(Target target, bool broadcast, const QList<quint8
     connect(&m_bus, &Bus::writeFinished, this, [this](int ticket, const WriteOutcome &outcome) {
         if (ticket != m_writeTicket)
             return;
-        const QString id = m_pendingWrites.first().first;
-        m_pendingWrites.removeFirst();
-        const EntryState *old = m_targets.first().address ? m_bus.entryState(m_targets.first().id, id) : nullptr;
-        (outcome.succeeded() ? m_out : m_err) << id << ": " << outcome.message;
-        if (outcome.succeeded() && old && old->hasValue())
-            (outcome.succeeded() ? m_out : m_err) << ' ' << tr("(was %1)").arg(old->value.display);
-        (outcome.succeeded() ? m_out : m_err) << Qt::endl;
-        if (!outcome.succeeded())
-            m_failed = true;
+        reportWrite(m_assignments.takeFirst().entryId, outcome);
         writeNext();
     });
     // Read what is readable first, so the output and the audit log show the old values.
     QStringList readable;
-    for (const auto &[id, value] : std::as_const(m_pendingWrites)) {
-        if (!broadcast && target.map->entry(id)->isReadable())
-            readable << id;
+    for (const WriteAssignment &a : std::as_const(m_assignments)) {
+        if (!broadcast && target.map->entry(a.entryId)->isReadable())
+            readable << a.entryId;
     }
     if (readable.isEmpty()) {
         writeNext();
@@ -546,18 +550,52 @@ void LineCommands::startWrites(Target target, bool broadcast, const QList<quint8
     m_bus.requestCycle(target.id);
 }
 
+void LineCommands::reportWrite(const QString &id, const WriteOutcome &outcome)
+{
+    QTextStream &stream = outcome.succeeded() ? m_out : m_err;
+    stream << id << ": ";
+    // These messages do not name their result: the word a script and a person look for.
+    if (outcome.result == WriteOutcome::Result::Unknown)
+        stream << tr("unknown, check the device: ");
+    else if (outcome.result == WriteOutcome::Result::Unverified)
+        stream << tr("unverified: ");
+    stream << outcome.message;
+    const EntryState *old = m_targets.first().address ? m_bus.entryState(m_targets.first().id, id) : nullptr;
+    if (outcome.succeeded() && old && old->hasValue())
+        stream << ' ' << tr("(was %1)").arg(old->value.display);
+    stream << Qt::endl;
+    const bool uncertain = outcome.result == WriteOutcome::Result::Unknown
+            || outcome.result == WriteOutcome::Result::Unverified;
+    m_uncertain |= uncertain;
+    m_failed |= !outcome.succeeded() && !uncertain;
+}
+
 void LineCommands::writeNext()
 {
     if (m_interruptCode)
         return;
-    if (m_pendingWrites.isEmpty()) {
-        finish(m_failed ? 1 : 0);
+    if (m_assignments.isEmpty()) {
+        // An unknown outcome outweighs a failure: the device has to be looked at.
+        finish(m_uncertain ? exitcode::Uncertain : m_failed ? 1 : 0);
         return;
     }
     const Target &target = m_targets.first();
-    const auto &[id, value] = m_pendingWrites.first();
-    m_writeTicket = target.address == 0 ? m_bus.writeBroadcast(target.map->family, id, value)
-                                        : m_bus.write(target.id, id, value);
+    const WriteAssignment &next = m_assignments.first();
+    if (next.isBitChange())
+        m_writeTicket = m_bus.writeBits(target.id, next.entryId, next.bits);
+    else
+        m_writeTicket = target.address == 0 ? m_bus.writeBroadcast(target.map->family, next.entryId, next.value)
+                                            : m_bus.write(target.id, next.entryId, next.value);
+}
+
+QString LineCommands::readOnlyNote(const CommandParser &parser) const
+{
+    if (SystemSettings::readOnly())
+        return tr("read-only mode is set by the system configuration (%1): nothing is written to the devices")
+                .arg(SystemSettings::fileName());
+    if (parser.isSet(QStringLiteral("read-only")))
+        return tr("read-only mode (--read-only): nothing is written to the devices");
+    return {};
 }
 
 std::optional<int> LineCommands::monitor(const QStringList &arguments)
@@ -779,8 +817,8 @@ std::optional<int> LineCommands::parameters(const QString &command, const QStrin
             return 1;
         }
     }
-    if (restore && parser.isSet(QStringLiteral("read-only"))) {
-        m_err << tr("read-only mode: nothing would be restored") << Qt::endl;
+    if (const QString note = restore ? readOnlyNote(parser) : QString(); !note.isEmpty()) {
+        m_err << note << Qt::endl << tr("read-only mode: nothing would be restored") << Qt::endl;
         return 1;
     }
     if (const auto stop = openLine(parser))

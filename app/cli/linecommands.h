@@ -5,6 +5,7 @@
 #include "bus/bus.h"
 #include "bus/identitycheck.h"
 #include "commissioning/parameterset.h"
+#include "writeassignment.h"
 
 #include <QObject>
 #include <QStringList>
@@ -75,6 +76,9 @@ private:
     void restoreNext();
     void printValues(const Target &target, const QStringList &ids);
     void writeNext();
+    void reportWrite(const QString &id, const WriteOutcome &outcome);
+    // Why nothing will be written (the system configuration or --read-only), or empty.
+    QString readOnlyNote(const CommandParser &parser) const;
     void finish(int code);
     QString progressSummary() const;
 
@@ -89,10 +93,12 @@ private:
     QList<Target> m_targets;
     QStringList m_ids;
     QList<QPair<QString, QString>> m_pendingWrites;
+    QList<WriteAssignment> m_assignments;
     int m_restored = 0;
     int m_writesAsked = 0;   // restore: writes in all
     int m_writeTicket = -1;
     bool m_failed = false;
+    bool m_uncertain = false;   // a write ended unknown or unverified
     bool m_json = false;
     bool m_csv = false;
     int m_cyclesWanted = 0;

@@ -1,9 +1,6 @@
 #include "bus/bus.h"
 
 #include "bus/linetiming.h"
-#include "bus/readtransaction.h"
-#include "bus/writetransaction.h"
-#include "protocol/bitwrite.h"
 #include "protocol/rtuframe.h"
 
 #include <QLoggingCategory>
@@ -274,8 +271,7 @@ void Bus::updateAllowance(DeviceId id)
 
 double Bus::interFrameDelayMs() const
 {
-    // QModbusRtuSerialClient waits 3.5 characters before each request, at least 2 ms.
-    return std::max(2.0, m_settings.format.frameGapMs());
+    return LineTiming::interFrameDelayMs(m_settings.format);
 }
 
 int Bus::requestTimeoutMs(const ProtocolInfo &protocol, int requestBytes, int replyBytes) const
@@ -298,232 +294,34 @@ void Bus::refuseLater(int ticket, WriteOutcome::Result result, const QString &me
     finishLater(ticket, outcome);
 }
 
-bool Bus::mayWrite(int ticket, const RegisterMap *map, const QString &entryId)
-{
-    if (m_settings.readOnly) {
-        refuseLater(ticket, WriteOutcome::Result::ReadOnlyMode, tr("read-only mode: %1 was not written").arg(entryId));
-        return false;
-    }
-    if (!map) {
-        refuseLater(ticket, WriteOutcome::Result::Invalid, tr("unknown device"));
-        return false;
-    }
-    if (!map->entry(entryId)) {
-        refuseLater(ticket, WriteOutcome::Result::Invalid, tr("'%1' is not an entry of %2").arg(entryId, map->family));
-        return false;
-    }
-    return true;
-}
-
 int Bus::write(DeviceId id, const QString &entryId, const QString &value, bool verify, Lane lane)
 {
-    const int ticket = nextTicket();
-    const EntryState *previous = entryState(id, entryId);
-    emit writeRequested(ticket, deviceName(id), entryId, value,
-                        previous && previous->hasValue() ? previous->value.display : QString());
-    const std::shared_ptr<const RegisterMap> map = deviceMap(id);
-    if (!mayWrite(ticket, map.get(), entryId))
-        return ticket;
-    const RegisterEntry &entry = *map->entry(entryId);
-    const EncodeResult encoded = ValueCodec::encode(entry, *map, value);
-    if (!encoded.ok()) {
-        refuseLater(ticket, WriteOutcome::Result::Invalid, encoded.error);
-        return ticket;
-    }
-    if (encoded.words.size() > map->protocol.effectiveMaxWriteWords()) {
-        refuseLater(ticket, WriteOutcome::Result::Invalid, tr("'%1' needs more words than one write may carry").arg(entryId));
-        return ticket;
-    }
-    if (state() != LineState::Connected) {
-        refuseLater(ticket, WriteOutcome::Result::NotSent, tr("not written: the line is not connected"));
-        return ticket;
-    }
-    m_scheduler.enqueue(WriteTransaction::value(ticket, lane, {id, deviceAddress(id)}, map, entry, encoded.words, verify,
-                                                [this, ticket](const WriteOutcome &o) { finishLater(ticket, o); }));
-    schedule(now());
-    return ticket;
+    return m_requests.write(id, entryId, value, verify, lane);
 }
 
 int Bus::writeBits(DeviceId id, const QString &entryId, const QHash<QString, bool> &bits, Lane lane)
 {
-    const int ticket = nextTicket();
-    const std::shared_ptr<const RegisterMap> map = deviceMap(id);
-    QStringList asked;
-    for (auto it = bits.cbegin(); it != bits.cend(); ++it)
-        asked << QStringLiteral("%1.%2=%3").arg(entryId, it.key()).arg(*it ? 1 : 0);
-    asked.sort();
-    const EntryState *previous = entryState(id, entryId);
-    emit writeRequested(ticket, deviceName(id), entryId, asked.join(QLatin1Char(' ')),
-                        previous && previous->hasValue() ? previous->value.display : QString());
-    if (!mayWrite(ticket, map.get(), entryId))
-        return ticket;
-    QString error;
-    const std::optional<BitWrite> change = BitWrite::make(*map, *map->entry(entryId), bits, &error);
-    if (!change) {
-        refuseLater(ticket, WriteOutcome::Result::Invalid, error);
-        return ticket;
-    }
-    if (state() != LineState::Connected) {
-        refuseLater(ticket, WriteOutcome::Result::NotSent, tr("not written: the line is not connected"));
-        return ticket;
-    }
-    m_scheduler.enqueue(WriteTransaction::bits(ticket, lane, {id, deviceAddress(id)}, map, *change,
-                                               [this, ticket](const WriteOutcome &o) { finishLater(ticket, o); }));
-    schedule(now());
-    return ticket;
+    return m_requests.writeBits(id, entryId, bits, lane);
 }
 
 int Bus::writeBroadcast(const QString &family, const QString &entryId, const QString &value)
 {
-    const int ticket = nextTicket();
-    emit writeRequested(ticket, QStringLiteral("%1@0").arg(family), entryId, value, QString());
-    std::shared_ptr<const RegisterMap> map;
-    QList<WriteTransaction::Target> targets;
-    for (DeviceId id : m_scheduler.devices()) {
-        const Scheduler::DeviceInfo *d = m_scheduler.device(id);
-        if (d->map->family == family) {
-            map = d->map;
-            targets << WriteTransaction::Target{id, d->address};
-        }
-    }
-    if (m_settings.readOnly) {
-        refuseLater(ticket, WriteOutcome::Result::ReadOnlyMode, tr("read-only mode: %1 was not written").arg(entryId));
-        return ticket;
-    }
-    for (DeviceId id : m_scheduler.devices()) {
-        const Scheduler::DeviceInfo *d = m_scheduler.device(id);
-        if (d->map->family != family) {
-            // Address 0 reaches every device: the same address means something else to
-            // another family (a command word, perhaps).
-            refuseLater(ticket, WriteOutcome::Result::Invalid,
-                        tr("not broadcast: the line also has a %1 device at address %2, which would take the same "
-                           "words as something else")
-                                .arg(d->map->family)
-                                .arg(d->address));
-            return ticket;
-        }
-    }
-    if (!map || !map->protocol.broadcast) {
-        refuseLater(ticket, WriteOutcome::Result::Invalid,
-                    tr("no %1 device on this line to read a broadcast back from").arg(family));
-        return ticket;
-    }
-    if (!mayWrite(ticket, map.get(), entryId))
-        return ticket;
-    const RegisterEntry &entry = *map->entry(entryId);
-    const EncodeResult encoded = ValueCodec::encode(entry, *map, value);
-    if (!encoded.ok()) {
-        refuseLater(ticket, WriteOutcome::Result::Invalid, encoded.error);
-        return ticket;
-    }
-    if (state() != LineState::Connected) {
-        refuseLater(ticket, WriteOutcome::Result::NotSent, tr("not written: the line is not connected"));
-        return ticket;
-    }
-    m_scheduler.enqueue(WriteTransaction::broadcast(ticket, map, entry, encoded.words, targets,
-                                                    [this, ticket](const WriteOutcome &o) { finishLater(ticket, o); }));
-    schedule(now());
-    return ticket;
+    return m_requests.writeBroadcast(family, entryId, value);
 }
 
 QString Bus::setHold(DeviceId id, const QString &entryId, const QString &value, int intervalMs)
 {
-    if (m_settings.readOnly)
-        return tr("read-only mode: nothing is written");
-    const std::shared_ptr<const RegisterMap> map = deviceMap(id);
-    if (!map)
-        return tr("unknown device");
-    if (value.isEmpty()) {
-        m_scheduler.clearHold(id, entryId);
-        return {};
-    }
-    const RegisterEntry *entry = map->entry(entryId);
-    if (!entry)
-        return tr("'%1' is not an entry of %2").arg(entryId, map->family);
-    if (entry->storage == Storage::Eeprom)
-        return tr("'%1' is stored in EEPROM, which wears out after about 10,000 writes: it is never rewritten "
-                  "cyclically").arg(entryId);
-    if (entry->storage != Storage::Ram || entry->isAction())
-        return tr("only RAM values can be held, '%1' is not one").arg(entryId);
-    const EncodeResult encoded = ValueCodec::encode(*entry, *map, value);
-    if (!encoded.ok())
-        return encoded.error;
-    m_scheduler.setHold(id, entryId, encoded.words, intervalMs);
-    schedule(now());
-    return {};
+    return m_requests.setHold(id, entryId, value, intervalMs);
 }
 
 int Bus::probe(quint8 slave, quint16 address, quint16 count, const ProtocolInfo &timing)
 {
-    const int ticket = nextTicket();
-    auto report = [this, ticket](const ModbusResult &r) {
-        m_clock->callSoon(this, [this, ticket, r] {
-            emit probeFinished(ticket, r.words, !r.answered(), r.status == ModbusResult::Status::Exception ? r.exceptionCode : 0);
-        });
-    };
-    if (state() != LineState::Connected) {
-        report(ModbusResult{});
-        return ticket;
-    }
-    // Repeated once: a single lost reply must not hide a device.
-    m_scheduler.enqueue(std::make_unique<ReadTransaction>(ticket, Lane::Job, -1, ModbusRequest::read(slave, address, count),
-                                                          timing, 2, report));
-    schedule(now());
-    return ticket;
+    return m_requests.probe(slave, address, count, timing);
 }
 
 int Bus::readEntries(DeviceId id, const QStringList &entryIds)
 {
-    const int ticket = nextTicket();
-    const std::shared_ptr<const RegisterMap> map = deviceMap(id);
-    struct Progress
-    {
-        int remaining = 0;
-        QStringList failed;
-    };
-    auto progress = std::make_shared<Progress>();
-    auto done = [this, ticket, progress] {
-        m_clock->callSoon(this, [this, ticket, progress] { emit entriesRead(ticket, progress->failed); });
-    };
-    if (!map || state() != LineState::Connected) {
-        progress->failed = entryIds;
-        done();
-        return ticket;
-    }
-    const ReadPlan plan = ReadPlanner::plan(*map, entryIds);
-    for (const QString &e : entryIds) {
-        const RegisterEntry *entry = map->entry(e);
-        if (!entry || !entry->isReadable())
-            progress->failed << e;
-    }
-    progress->remaining = int(plan.blocks.size());
-    if (plan.blocks.isEmpty())
-        done();
-    for (const ReadBlock &block : plan.blocks) {
-        auto finished = [this, id, block, progress, done](const ModbusResult &r) {
-            const qint64 t = now();
-            QStringList changed;
-            if (r.status == ModbusResult::Status::Ok) {
-                changed = m_store.store(id, block.entries, block.start, r.words, t);
-            } else {
-                const ReadError error = r.status == ModbusResult::Status::Exception ? ReadError::Exception
-                        : r.status == ModbusResult::Status::LineDown               ? ReadError::LineLost
-                                                                                    : ReadError::Timeout;
-                changed = m_store.fail(id, block.entries, error, r.exceptionCode, t);
-                for (const RegisterEntry *e : block.entries)
-                    progress->failed << e->id;
-            }
-            if (!changed.isEmpty())
-                emit entriesUpdated(id, changed);
-            if (--progress->remaining == 0)
-                done();
-        };
-        m_scheduler.enqueue(std::make_unique<ReadTransaction>(ticket, Lane::Job, id,
-                                                              ModbusRequest::read(deviceAddress(id), block.start, block.count),
-                                                              map->protocol, m_settings.retries + 1, finished));
-    }
-    schedule(now());
-    return ticket;
+    return m_requests.readEntries(id, entryIds);
 }
 
 void Bus::cancel(int ticket)
@@ -586,7 +384,7 @@ void Bus::onResult(const ModbusResult &result)
     m_inFlight.reset();
     const qint64 t = now();
     const double roundTrip = double(t - flight.sentMs);
-    countResult(flight.turn.device, result, roundTrip);
+    m_store.count(flight.turn.device, result, roundTrip);
     recordTraffic(flight, result, roundTrip);
     setQuietAfter(flight, result, t);
 
@@ -616,32 +414,6 @@ void Bus::onResult(const ModbusResult &result)
     schedule(t);
 }
 
-void Bus::countResult(DeviceId device, const ModbusResult &result, double roundTripMs)
-{
-    DeviceStatistics *s = m_store.statistics(device);
-    if (!s)
-        return;
-    s->crcErrors += result.crcErrors;
-    s->mismatches += result.mismatches;
-    switch (result.status) {
-    case ModbusResult::Status::Ok:
-        s->addRoundTrip(roundTripMs);
-        break;
-    case ModbusResult::Status::Exception:
-        ++s->exceptions[result.exceptionCode];
-        s->addRoundTrip(roundTripMs);
-        break;
-    case ModbusResult::Status::Timeout:
-        ++s->timeouts;
-        break;
-    case ModbusResult::Status::BadReply:
-        ++s->mismatches;
-        break;
-    case ModbusResult::Status::LineDown:
-        break;
-    }
-}
-
 void Bus::recordTraffic(const InFlight &flight, const ModbusResult &result, double roundTripMs)
 {
     TrafficRecord record;
@@ -659,24 +431,8 @@ void Bus::recordTraffic(const InFlight &flight, const ModbusResult &result, doub
 
 void Bus::setQuietAfter(const InFlight &flight, const ModbusResult &result, qint64 now)
 {
-    const ModbusRequest &r = flight.turn.request;
-    qint64 quiet = 0;
-    if (result.status == ModbusResult::Status::Timeout || result.status == ModbusResult::Status::BadReply) {
-        // After a lost reply, wait as long again as the timeout, so a late answer cannot
-        // be taken for the next request's (Qt clears its buffer right before each send).
-        quiet = now + std::max(r.timeoutMs, LineTiming::timeoutMs(m_settings.format, r.requestBytes(), r.replyBytes(),
-                                                                   flight.turn.timing, m_settings.minimumResponseTimeMs));
-    } else {
-        // After a reply the other devices need the family's turnaround time.
-        quiet = now + qint64(std::max(0.0, flight.turn.timing.turnaroundMs - interFrameDelayMs()) + 0.5);
-    }
-    if (r.isBroadcast() && result.status == ModbusResult::Status::Ok) {
-        // Qt calls a broadcast done when its bytes reach the driver, not the wire; the
-        // devices then need their time before anyone may talk again.
-        const double wire = m_settings.format.wireTimeMs(r.requestBytes());
-        quiet = now + qint64(wire + std::max(100.0, flight.turn.timing.processingTimeMaxMs + m_settings.minimumResponseTimeMs));
-    }
-    m_scheduler.setQuietUntil(quiet);
+    m_scheduler.setQuietUntil(now + LineTiming::quietAfterMs(m_settings.format, flight.turn.request, result,
+                                                             flight.turn.timing, m_settings.minimumResponseTimeMs));
 }
 
 void Bus::applyPoll(const Scheduler::Turn &turn, const ModbusResult &result, qint64 now)

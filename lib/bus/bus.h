@@ -11,6 +11,7 @@
 #include "bus/devicestatistics.h"
 #include "bus/entrystate.h"
 #include "bus/lineconnection.h"
+#include "bus/requestdesk.h"
 #include "bus/scheduler.h"
 #include "bus/transaction.h"
 #include "bus/valuestore.h"
@@ -151,6 +152,8 @@ signals:
     void traffic(const jumo::TrafficRecord &record);
 
 private:
+    friend class RequestDesk;
+
     struct InFlight
     {
         Scheduler::Turn turn;
@@ -165,7 +168,6 @@ private:
     void dispatch();
     void sweep();
     void applyPoll(const Scheduler::Turn &turn, const ModbusResult &result, qint64 now);
-    void countResult(DeviceId device, const ModbusResult &result, double roundTripMs);
     void recordTraffic(const InFlight &flight, const ModbusResult &result, double roundTripMs);
     void setQuietAfter(const InFlight &flight, const ModbusResult &result, qint64 now);
     void invalidateAll(ReadError reason);
@@ -175,8 +177,6 @@ private:
     void updateAllowance(DeviceId id);
     void finishLater(int ticket, const WriteOutcome &outcome);
     void refuseLater(int ticket, WriteOutcome::Result result, const QString &message);
-    // The checks every write passes before it may be queued; a refusal is reported.
-    bool mayWrite(int ticket, const RegisterMap *map, const QString &entryId);
     int nextTicket() { return m_nextTicket++; }
     qint64 now() const { return m_clock->nowMs(); }
 
@@ -186,6 +186,7 @@ private:
     LineConnection m_line;
     Scheduler m_scheduler;
     ValueStore m_store;
+    RequestDesk m_requests{*this};
     QHash<DeviceId, QDateTime> m_offlineSince;
     QDateTime m_lineSince;
     std::optional<InFlight> m_inFlight;

@@ -3,6 +3,7 @@
 // minimum response time. Used for timeouts and by the bus benchmark.
 #pragma once
 
+#include "bus/modbusrequest.h"
 #include "protocol/lineformat.h"
 #include "protocol/registermap.h"
 
@@ -25,5 +26,14 @@ double deviceMs(const ProtocolInfo &protocol, int minimumResponseTimeMs);
 // for USB adapters and the operating system.
 int timeoutMs(const LineFormat &format, int requestBytes, int replyBytes, const ProtocolInfo &protocol,
               int minimumResponseTimeMs);
+
+// The wait QModbusRtuSerialClient keeps before each request: 3.5 characters, at least 2 ms.
+double interFrameDelayMs(const LineFormat &format);
+// How long nobody may talk after a request ended so: after a lost or garbled reply as
+// long again as the timeout, so a late answer cannot be taken for the next request's (Qt
+// clears its buffer right before each send); after a reply the family's turnaround; after
+// a broadcast the devices' time to carry it out.
+qint64 quietAfterMs(const LineFormat &format, const ModbusRequest &request, const ModbusResult &result,
+                    const ProtocolInfo &protocol, int minimumResponseTimeMs);
 
 } // namespace jumo::LineTiming

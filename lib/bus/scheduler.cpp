@@ -4,12 +4,6 @@
 
 namespace jumo {
 
-namespace {
-
-constexpr int illegalDataAddress = 2;
-
-} // namespace
-
 int Scheduler::keepaliveMs(const RegisterMap &map)
 {
     return map.protocol.busErrorTimeoutMs ? *map.protocol.busErrorTimeoutMs / 2 : 0;
@@ -17,11 +11,7 @@ int Scheduler::keepaliveMs(const RegisterMap &map)
 
 void Scheduler::addDevice(DeviceId id, std::shared_ptr<const RegisterMap> map, quint8 address, qint64 now)
 {
-    Device &d = m_devices[id];
-    d.map = std::move(map);
-    d.address = address;
-    d.nextDueMs = now;
-    replan(d);
+    m_devices[id].poll = DevicePoll(std::move(map), address, now);
 }
 
 void Scheduler::removeDevice(DeviceId id)
@@ -32,69 +22,38 @@ void Scheduler::removeDevice(DeviceId id)
 const Scheduler::DeviceInfo *Scheduler::device(DeviceId id) const
 {
     const auto it = m_devices.constFind(id);
-    return it == m_devices.cend() ? nullptr : &*it;
-}
-
-void Scheduler::replan(Device &d)
-{
-    QList<const RegisterEntry *> wanted;
-    QStringList missing;
-    if (d.pollIds.isEmpty()) {
-        for (const RegisterEntry &e : d.map->entries()) {
-            if (e.isReadable() && e.alias.isEmpty() && !d.unavailable.contains(e.id))
-                wanted << &e;
-        }
-    } else {
-        for (const QString &id : std::as_const(d.pollIds)) {
-            if (const RegisterEntry *e = d.map->entry(id); e && !d.unavailable.contains(id))
-                wanted << e;
-            else if (!e)
-                missing << id;
-        }
-    }
-    d.plan = ReadPlanner::plan(*d.map, wanted);
-    for (const QString &id : std::as_const(missing))
-        d.plan.errors.prepend(ReadPlanner::tr("'%1' is not an entry of %2").arg(id, d.map->family));
-    d.blockIndex = -1;
-    d.blockAttempts = 0;
+    return it == m_devices.cend() ? nullptr : &it->poll.info();
 }
 
 void Scheduler::setPollEntries(DeviceId id, const QStringList &ids)
 {
-    if (const auto it = m_devices.find(id); it != m_devices.end()) {
-        it->pollIds = ids;
-        replan(*it);
-    }
+    if (const auto it = m_devices.find(id); it != m_devices.end())
+        it->poll.setPollEntries(ids);
 }
 
 QStringList Scheduler::pollEntries(DeviceId id) const
 {
-    return m_devices.value(id).pollIds;
+    return m_devices.value(id).poll.pollEntries();
 }
 
 void Scheduler::setPollInterval(DeviceId id, int ms)
 {
     if (const auto it = m_devices.find(id); it != m_devices.end())
-        it->intervalMs = std::max(0, ms);
+        it->poll.setInterval(ms);
 }
 
 bool Scheduler::requestCycle(DeviceId id, qint64 now)
 {
     const auto it = m_devices.find(id);
-    if (it == m_devices.end() || it->plan.blocks.isEmpty())
-        return false;
-    it->cycleRequested = true;
-    if (it->online)
-        it->nextDueMs = std::min(it->nextDueMs, now);
-    return true;
+    return it != m_devices.end() && it->poll.requestCycle(now);
 }
 
 QList<const RegisterEntry *> Scheduler::blockEntries(DeviceId id, int block) const
 {
     const auto it = m_devices.constFind(id);
-    if (it == m_devices.cend() || block < 0 || block >= it->plan.blocks.size())
+    if (it == m_devices.cend() || block < 0 || block >= it->poll.info().plan.blocks.size())
         return {};
-    return it->plan.blocks.at(block).entries;
+    return it->poll.info().plan.blocks.at(block).entries;
 }
 
 void Scheduler::setHold(DeviceId id, const QString &entryId, const QList<quint16> &words, int intervalMs)
@@ -186,7 +145,7 @@ void Scheduler::sent(const ModbusRequest &request, qint64 now)
     if (request.isBroadcast()) {
         // A broadcast is a telegram for every device.
         for (Device &d : m_devices)
-            m_lastAddressedMs.insert(d.address, now);
+            m_lastAddressedMs.insert(d.poll.address(), now);
         return;
     }
     m_lastAddressedMs.insert(request.slave, now);
@@ -194,51 +153,21 @@ void Scheduler::sent(const ModbusRequest &request, qint64 now)
 
 void Scheduler::restart(qint64 now)
 {
-    for (Device &d : m_devices) {
-        d.blockIndex = -1;
-        d.blockAttempts = 0;
-        d.nextDueMs = now;
-        d.consecutiveFailures = 0;
-    }
+    for (Device &d : m_devices)
+        d.poll.restart(now);
     m_lastAddressedMs.clear();
     m_quietUntilMs = 0;
 }
 
-bool Scheduler::pollReady(const Device &d, qint64 now) const
-{
-    if (d.plan.blocks.isEmpty())
-        return false;
-    if (d.blockIndex >= 0)
-        return true;   // a cycle is running: its next block
-    if (!d.online)
-        return now >= d.nextDueMs;   // a probe at the end of the back-off
-    return (m_polling || d.cycleRequested) && now >= d.nextDueMs;
-}
-
-qint64 Scheduler::pollDueMs(const Device &d) const
-{
-    if (d.plan.blocks.isEmpty())
-        return -1;
-    if (d.blockIndex >= 0)
-        return 0;
-    if (!d.online || m_polling || d.cycleRequested)
-        return d.nextDueMs;
-    return -1;
-}
-
 Scheduler::Turn Scheduler::devicePollTurn(DeviceId id, Device &d, qint64 now)
 {
-    if (d.blockIndex < 0) {
-        d.blockIndex = 0;
-        d.cycleStartMs = now;
-    }
-    const ReadBlock &block = d.plan.blocks.at(d.blockIndex);
+    const auto [block, request] = d.poll.nextBlock(now);
     Turn turn;
     turn.kind = Turn::Kind::Poll;
     turn.device = id;
-    turn.block = d.blockIndex;
-    turn.request = ModbusRequest::read(d.address, block.start, block.count);
-    turn.timing = d.map->protocol;
+    turn.block = block;
+    turn.request = request;
+    turn.timing = d.poll.map().protocol;
     return turn;
 }
 
@@ -253,7 +182,7 @@ std::optional<Scheduler::Turn> Scheduler::pollTurn(qint64 now)
     std::rotate(order.begin(), split, order.end());
     for (DeviceId id : std::as_const(order)) {
         Device &d = m_devices[id];
-        if (!pollReady(d, now))
+        if (!d.poll.ready(now, m_polling))
             continue;
         m_roundRobin = id;
         return devicePollTurn(id, d, now);
@@ -268,10 +197,10 @@ std::optional<Scheduler::Turn> Scheduler::keepaliveTurn(qint64 now)
     DeviceId chosen = -1;
     qint64 oldest = 0;
     for (auto it = m_devices.begin(); it != m_devices.end(); ++it) {
-        const int keepalive = keepaliveMs(*it->map);
-        if (keepalive <= 0 || !it->online)
+        const int keepalive = keepaliveMs(it->poll.map());
+        if (keepalive <= 0 || !it->poll.isOnline())
             continue;
-        const qint64 last = m_lastAddressedMs.value(it->address, -1);
+        const qint64 last = m_lastAddressedMs.value(it->poll.address(), -1);
         if (last >= 0 && now - last < keepalive - keepaliveMarginMs)
             continue;
         if (chosen < 0 || last < oldest) {
@@ -284,15 +213,15 @@ std::optional<Scheduler::Turn> Scheduler::keepaliveTurn(qint64 now)
     Device &d = m_devices[chosen];
     // Its next poll block when one is due: no extra request. Otherwise (a long poll
     // interval, polling off) the smallest read of anything readable keeps it talking.
-    if (pollReady(d, now))
+    if (d.poll.ready(now, m_polling))
         return devicePollTurn(chosen, d, now);
-    for (const RegisterEntry &e : d.map->entries()) {
-        if (e.isReadable() && e.alias.isEmpty() && !d.unavailable.contains(e.id)) {
+    for (const RegisterEntry &e : d.poll.map().entries()) {
+        if (e.isReadable() && e.alias.isEmpty() && d.poll.isAvailable(e.id)) {
             Turn turn;
             turn.kind = Turn::Kind::Keepalive;
             turn.device = chosen;
-            turn.request = ModbusRequest::read(d.address, e.address, quint16(e.wordCount()));
-            turn.timing = d.map->protocol;
+            turn.request = ModbusRequest::read(d.poll.address(), e.address, quint16(e.wordCount()));
+            turn.timing = d.poll.map().protocol;
             return turn;
         }
     }
@@ -305,7 +234,7 @@ std::optional<Scheduler::Turn> Scheduler::holdTurn(qint64 now)
         for (auto h = it->holds.begin(); h != it->holds.end(); ++h) {
             if (h->lastSentMs >= 0 && now - h->lastSentMs < h->intervalMs)
                 continue;
-            const RegisterEntry *entry = it->map->entry(h.key());
+            const RegisterEntry *entry = it->poll.map().entry(h.key());
             if (!entry)
                 continue;
             h->lastSentMs = now;
@@ -313,8 +242,8 @@ std::optional<Scheduler::Turn> Scheduler::holdTurn(qint64 now)
             turn.kind = Turn::Kind::Hold;
             turn.device = it.key();
             turn.holdEntry = h.key();
-            turn.request = ModbusRequest::write(it->address, entry->address, h->words);
-            turn.timing = it->map->protocol;
+            turn.request = ModbusRequest::write(it->poll.address(), entry->address, h->words);
+            turn.timing = it->poll.map().protocol;
             return turn;
         }
     }
@@ -386,12 +315,12 @@ Scheduler::Turn Scheduler::next(qint64 now)
             wake = wake < 0 ? due : std::min(wake, due);
     };
     for (const Device &d : std::as_const(m_devices)) {
-        consider(pollDueMs(d));
+        consider(d.poll.dueMs(m_polling));
         for (const Hold &h : d.holds)
             consider(h.lastSentMs + h.intervalMs);
-        const int keepalive = keepaliveMs(*d.map);
-        if (keepalive > 0 && d.online)
-            consider(m_lastAddressedMs.value(d.address, now) + keepalive - keepaliveMarginMs);
+        const int keepalive = keepaliveMs(d.poll.map());
+        if (keepalive > 0 && d.poll.isOnline())
+            consider(m_lastAddressedMs.value(d.poll.address(), now) + keepalive - keepaliveMarginMs);
     }
     idle.wakeAtMs = wake < 0 ? -1 : std::max(wake, now + 1);
     return idle;
@@ -399,128 +328,11 @@ Scheduler::Turn Scheduler::next(qint64 now)
 
 Scheduler::PollOutcome Scheduler::pollFinished(const Turn &turn, const ModbusResult &result, int maxRetries, qint64 now)
 {
-    PollOutcome out;
     const auto it = m_devices.find(turn.device);
-    if (it == m_devices.end())
-        return out;
-    Device &d = *it;
-    if (turn.kind == Turn::Kind::Keepalive) {
-        // Only to keep the device talking; a poll or a probe tells whether it is there.
-        return out;
-    }
-    if (turn.block < 0 || turn.block >= d.plan.blocks.size() || d.blockIndex != turn.block)
-        return out;   // the plan changed while the block was under way
-    const ReadBlock block = d.plan.blocks.at(turn.block);
-    out.entries = block.entries;
-
-    if (result.status == ModbusResult::Status::Ok) {
-        d.blockAttempts = 0;
-        out.store = true;
-        markSuccess(d, out);
-    } else if (result.status == ModbusResult::Status::Exception && result.exceptionCode == illegalDataAddress) {
-        // A smaller model lacks an address of the block: halve it until the one entry is
-        // found; the rest is read, that entry leaves the plan for the session.
-        markSuccess(d, out);
-        if (block.entries.size() > 1) {
-            d.blockAttempts = 0;
-            const qsizetype half = block.entries.size() / 2;
-            auto makeBlock = [](QList<const RegisterEntry *> entries) {
-                ReadBlock b;
-                b.start = entries.first()->address;
-                int last = b.start;
-                for (const RegisterEntry *e : entries)
-                    last = std::max<int>(last, e->lastAddress());
-                b.count = quint16(last - b.start + 1);
-                b.entries = std::move(entries);
-                return b;
-            };
-            d.plan.blocks[turn.block] = makeBlock(block.entries.mid(0, half));
-            d.plan.blocks.insert(turn.block + 1, makeBlock(block.entries.mid(half)));
-            out.entries.clear();
-            out.retry = true;
-            return out;
-        }
-        // One entry left: asked once more, so a single garbled answer never hides it.
-        if (++d.blockAttempts <= 1) {
-            out.entries.clear();
-            out.retry = true;
-            return out;
-        }
-        d.blockAttempts = 0;
-        d.unavailable.insert(block.entries.first()->id);
-        out.unavailable = block.entries;
-        out.entries.clear();
-        d.plan.blocks.removeAt(turn.block);
-        if (d.blockIndex >= d.plan.blocks.size())
-            finishCycle(d, now, out);
-        return out;
-    } else if (result.status == ModbusResult::Status::Exception) {
-        // It answered: it is there; the block is refused.
-        const bool busy = result.exceptionCode == 6 && d.map->exceptions.contains(6);
-        if (busy && ++d.blockAttempts <= maxRetries) {
-            out.retry = true;
-            return out;
-        }
-        d.blockAttempts = 0;
-        markSuccess(d, out);
-        out.failure = ReadError::Exception;
-        out.exceptionCode = result.exceptionCode;
-    } else if (result.status == ModbusResult::Status::LineDown) {
-        // The bus invalidates everything; the cycle starts again when the line is back.
-        d.blockIndex = -1;
-        d.blockAttempts = 0;
-        return out;
-    } else {
-        if (d.online && ++d.blockAttempts <= maxRetries) {
-            out.retry = true;   // the device's next turn repeats the block
-            return out;
-        }
-        d.blockAttempts = 0;
-        out.failure = result.status == ModbusResult::Status::BadReply ? ReadError::Mismatch : ReadError::Timeout;
-        markFailure(d, out);
-        if (!d.online) {
-            if (d.blockIndex >= 0)
-                finishCycle(d, now, out);
-            d.nextDueMs = now + d.backoffMs;
-            return out;
-        }
-    }
-    if (++d.blockIndex >= d.plan.blocks.size())
-        finishCycle(d, now, out);
-    return out;
-}
-
-void Scheduler::finishCycle(Device &d, qint64 now, PollOutcome &outcome)
-{
-    const double cycleMs = double(now - d.cycleStartMs);
-    d.blockIndex = -1;
-    d.cycleRequested = false;
-    d.lastCycleMs = cycleMs;
-    outcome.cycleMs = cycleMs;
-    if (d.online)
-        d.nextDueMs = std::max(d.cycleStartMs + d.intervalMs, now);
-}
-
-void Scheduler::markFailure(Device &d, PollOutcome &outcome)
-{
-    ++d.consecutiveFailures;
-    if (d.online && d.consecutiveFailures >= failuresBeforeOffline) {
-        d.online = false;
-        d.backoffMs = firstBackoffMs;
-        outcome.online = false;
-    } else if (!d.online) {
-        d.backoffMs = std::min(maximumBackoffMs, d.backoffMs * 2);
-    }
-}
-
-void Scheduler::markSuccess(Device &d, PollOutcome &outcome)
-{
-    d.consecutiveFailures = 0;
-    if (!d.online) {
-        d.online = true;
-        d.backoffMs = 0;
-        outcome.online = true;
-    }
+    // A keepalive only keeps the device talking; a poll or a probe tells whether it is there.
+    if (it == m_devices.end() || turn.kind == Turn::Kind::Keepalive)
+        return {};
+    return it->poll.finished(turn.block, result, maxRetries, now);
 }
 
 } // namespace jumo

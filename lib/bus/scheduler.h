@@ -9,17 +9,13 @@
 //  5. job work (scan, backup, restore, report) and polls alternate while both wait;
 //     either runs alone when the other has nothing to do;
 // and nothing goes before the quiet time the bus sets after a lost answer, a turnaround
-// or a broadcast. Polls run each device's read plan round-robin, one block per turn;
-// failed blocks are repeated by the device's next turn; a device that keeps failing goes
-// offline and is probed with back-off; a block answered with exception 02 is split until
-// the one address the device does not have is isolated, and that entry leaves the plan
-// for the session. Pure logic: no timers, no transport, the time is given.
+// or a broadcast. Polls go round-robin over the devices, one block per turn; what each
+// device's turn reads is its DevicePoll's business (plan, repeats, exception 02, back-off).
+// Pure logic: no timers, no transport, the time is given.
 #pragma once
 
-#include "bus/entrystate.h"
-#include "bus/modbusrequest.h"
+#include "bus/devicepoll.h"
 #include "bus/transaction.h"
-#include "protocol/readplanner.h"
 
 #include <QHash>
 #include <QMap>
@@ -48,34 +44,9 @@ public:
         qint64 wakeAtMs = -1;                     // Idle: when to ask again, -1 = when told
     };
 
-    // What became of a poll turn, for the bus to carry out.
-    struct PollOutcome
-    {
-        QList<const RegisterEntry *> entries;     // the entries of the block
-        bool store = false;                       // the words are good: store the entries
-        bool retry = false;                       // the block is repeated; nothing to report yet
-        std::optional<ReadError> failure;         // the entries failed for this reason
-        int exceptionCode = 0;
-        QList<const RegisterEntry *> unavailable; // isolated by exception 02: not on this device
-        std::optional<bool> online;               // the device went on- or offline
-        std::optional<double> cycleMs;            // a cycle of the device finished
-    };
+    using PollOutcome = jumo::PollOutcome;
+    using DeviceInfo = jumo::DeviceInfo;
 
-    struct DeviceInfo
-    {
-        std::shared_ptr<const RegisterMap> map;
-        quint8 address = 0;
-        ReadPlan plan;
-        int intervalMs = 0;
-        bool online = true;
-        int backoffMs = 0;
-        double lastCycleMs = 0;
-        qint64 lastAddressedMs = -1;
-    };
-
-    static constexpr int failuresBeforeOffline = 2;   // blocks failed after all their retries
-    static constexpr int firstBackoffMs = 1000;
-    static constexpr int maximumBackoffMs = 30000;
     // How long before its keepalive interval ends a device's request becomes urgent.
     static constexpr int keepaliveMarginMs = 1000;
 
@@ -133,30 +104,17 @@ private:
         qint64 lastSentMs = -1;
     };
 
-    struct Device : DeviceInfo
+    struct Device
     {
-        QStringList pollIds;
-        QSet<QString> unavailable;   // entries this model does not have
-        int blockIndex = -1;         // -1: no cycle running
-        int blockAttempts = 0;
-        qint64 cycleStartMs = -1;
-        qint64 nextDueMs = 0;
-        bool cycleRequested = false;
-        int consecutiveFailures = 0;
+        DevicePoll poll;
         QMap<QString, Hold> holds;
     };
 
-    void replan(Device &device);
-    bool pollReady(const Device &device, qint64 now) const;
-    qint64 pollDueMs(const Device &device) const;
     std::optional<Turn> pollTurn(qint64 now);
     std::optional<Turn> keepaliveTurn(qint64 now);
     std::optional<Turn> holdTurn(qint64 now);
     std::optional<Turn> transactionTurn(std::deque<std::unique_ptr<Transaction>> &lane);
     Turn devicePollTurn(DeviceId id, Device &device, qint64 now);
-    void finishCycle(Device &device, qint64 now, PollOutcome &outcome);
-    void markFailure(Device &device, PollOutcome &outcome);
-    void markSuccess(Device &device, PollOutcome &outcome);
     void prune(std::deque<std::unique_ptr<Transaction>> &lane);
 
     QMap<DeviceId, Device> m_devices;

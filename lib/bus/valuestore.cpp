@@ -140,4 +140,30 @@ qint64 ValueStore::nextStaleMs(DeviceId id) const
     return next;
 }
 
+void ValueStore::count(DeviceId device, const ModbusResult &result, double roundTripMs)
+{
+    DeviceStatistics *s = statistics(device);
+    if (!s)
+        return;
+    s->crcErrors += result.crcErrors;
+    s->mismatches += result.mismatches;
+    switch (result.status) {
+    case ModbusResult::Status::Ok:
+        s->addRoundTrip(roundTripMs);
+        break;
+    case ModbusResult::Status::Exception:
+        ++s->exceptions[result.exceptionCode];
+        s->addRoundTrip(roundTripMs);
+        break;
+    case ModbusResult::Status::Timeout:
+        ++s->timeouts;
+        break;
+    case ModbusResult::Status::BadReply:
+        ++s->mismatches;
+        break;
+    case ModbusResult::Status::LineDown:
+        break;
+    }
+}
+
 } // namespace jumo

@@ -6,6 +6,7 @@
 
 #include "bus/devicestatistics.h"
 #include "bus/entrystate.h"
+#include "bus/modbusrequest.h"
 #include "protocol/registermap.h"
 
 #include <QHash>
@@ -27,6 +28,8 @@ public:
     const EntryState *state(DeviceId id, const QString &entryId) const;
     const DeviceStatistics *statistics(DeviceId id) const;
     DeviceStatistics *statistics(DeviceId id);
+    // A request to the device ended so: its statistics count it.
+    void count(DeviceId device, const ModbusResult &result, double roundTripMs);
 
     // How long a value stays current after it was read (the device's cycle, generously).
     void setAllowance(DeviceId id, qint64 ms);

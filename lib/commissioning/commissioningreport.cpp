@@ -2,6 +2,8 @@
 
 #include "commissioning/parameterset.h"
 
+#include <algorithm>
+
 namespace jumo {
 
 namespace {
@@ -25,15 +27,23 @@ CommissioningReport::CommissioningReport(const RegisterMap &map, quint8 address,
 
 QString CommissioningReport::valueText(const RegisterEntry &entry) const
 {
+    // Validity as the HMI shows it: a current value as it is, a stale one marked, an
+    // unknown one as no value with the reason and the last value known.
     const EntryState *s = m_states(entry.id);
     if (!s || !s->hasValue())
         return tr("not read");
     QString text = s->value.display;
     if (s->value.isOk() && !entry.unit.isEmpty())
         text += QLatin1Char(' ') + entry.unit;
-    if (!s->isCurrent())
-        text += QLatin1Char(' ') + tr("(last read failed: %1)").arg(s->statusName());
-    return text;
+    switch (s->validity) {
+    case Validity::Current:
+        return text;
+    case Validity::Stale:
+        return text + QLatin1Char(' ') + tr("(stale)");
+    case Validity::Unknown:
+        break;
+    }
+    return tr("unknown (%1); last known: %2").arg(s->statusName(), text);
 }
 
 QString CommissioningReport::html() const
@@ -60,12 +70,18 @@ QString CommissioningReport::html() const
 
     h += QStringLiteral("<h2>%1</h2><table border=\"1\" cellspacing=\"0\">").arg(tr("Active alarms and warnings").toHtmlEscaped());
     int active = 0;
+    QStringList unknownWords;
     for (const RegisterEntry &e : m_map.entries()) {
-        if (e.type != ValueType::Bitfield || !e.isReadable() || e.isCommand())
+        if (e.type != ValueType::Bitfield || !e.isReadable() || e.isCommand()
+            || std::none_of(e.bits.cbegin(), e.bits.cend(), [](const BitDefinition &b) {
+                   return !b.reserved && (b.kind == BitKind::Alarm || b.kind == BitKind::Warning);
+               }))
             continue;
         const EntryState *s = m_states(e.id);
-        if (!s || !s->hasValue())
+        if (!s || !s->hasValue() || s->validity == Validity::Unknown) {
+            unknownWords << formatAddress(e.address);
             continue;
+        }
         for (const BitDefinition &b : e.bits) {
             if (b.reserved || b.width != 1 || (b.kind != BitKind::Alarm && b.kind != BitKind::Warning))
                 continue;
@@ -76,7 +92,10 @@ QString CommissioningReport::html() const
             }
         }
     }
-    if (active == 0)
+    if (!unknownWords.isEmpty())
+        h += QStringLiteral("<tr><td colspan=\"4\"><b>%1</b></td></tr>")
+                     .arg(tr("Unknown: %1 could not be read").arg(unknownWords.join(QStringLiteral(", "))).toHtmlEscaped());
+    else if (active == 0)
         h += QStringLiteral("<tr><td>%1</td></tr>").arg(tr("none").toHtmlEscaped());
     h += QStringLiteral("</table>");
 

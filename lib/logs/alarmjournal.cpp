@@ -5,6 +5,35 @@ namespace jumo {
 AlarmJournal::AlarmJournal(Bus *bus, EventLog *log, QObject *parent) : QObject(parent), m_bus(bus), m_log(log)
 {
     connect(m_bus, &Bus::entriesUpdated, this, &AlarmJournal::onEntriesUpdated);
+    connect(m_bus, &Bus::conditionChanged, this, &AlarmJournal::onConditionChanged);
+}
+
+void AlarmJournal::onConditionChanged(DeviceId device, const DeviceCondition &condition)
+{
+    const auto map = m_bus->deviceMap(device);
+    if (!map)
+        return;
+    using State = DeviceCondition::State;
+    const State before = m_condition.value(device, State::Disconnected);
+    m_condition.insert(device, condition.state);
+    QString state;
+    if (condition.state == State::Offline && before != State::Offline)
+        state = QStringLiteral("lost: device not answering");
+    else if (condition.state == State::LineLost && before != State::LineLost)
+        state = QStringLiteral("lost: line lost");
+    else if (condition.state == State::Online && (before == State::Offline || before == State::LineLost))
+        state = QStringLiteral("restored");
+    else if (condition.state == State::Disconnected && before == State::Online)
+        state = QStringLiteral("stopped: line closed");
+    if (state.isEmpty())
+        return;
+    m_log->append(QJsonObject{{"device", QStringLiteral("%1@%2").arg(map->family).arg(m_bus->deviceAddress(device))},
+                              {"register", QString()},
+                              {"bit", QString()},
+                              {"id", QStringLiteral("communication")},
+                              {"label", QStringLiteral("Communication")},
+                              {"kind", QStringLiteral("communication")},
+                              {"state", state}});
 }
 
 QStringList AlarmJournal::columns()

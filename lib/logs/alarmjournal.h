@@ -1,5 +1,6 @@
 // The alarm journal: every alarm, warning and status bit of every polled device that
-// sets or clears, with time and device, in an EventLog that survives restarts.
+// sets or clears, and every loss and return of communication with a device, with time
+// and device, in an EventLog that survives restarts.
 #pragma once
 
 #include "bus/bus.h"
@@ -20,10 +21,12 @@ public:
 
 private:
     void onEntriesUpdated(DeviceId device, const QStringList &ids);
+    void onConditionChanged(DeviceId device, const DeviceCondition &condition);
 
     Bus *m_bus;
     EventLog *m_log;
     QHash<QString, quint32> m_last;   // "device/entry" -> raw value last seen
+    QHash<DeviceId, DeviceCondition::State> m_condition;
 };
 
 } // namespace jumo

@@ -84,7 +84,7 @@ void DataLogger::sample()
         rows += QStringLiteral("%1,%2@%3,%4,%5,%6,%7\n")
                         .arg(time, map->family)
                         .arg(m_bus->deviceAddress(device))
-                        .arg(id, value, e ? e->unit : QString(), s ? s->statusName() : QStringLiteral("timeout"))
+                        .arg(id, value, e ? e->unit : QString(), s ? s->statusName() : QStringLiteral("not_read"))
                         .toUtf8();
         ++m_rows;
     }

@@ -70,12 +70,12 @@ void AlarmBitsModel::recount()
 {
     int count = 0;
     bool known = true;
+    // Known only while every word of the grid is: a device with warning and status
+    // bits but no alarm bit must not say "0 active alarms" when nothing can be read.
     for (const Row &r : std::as_const(m_rows)) {
-        if (r.bit->kind != BitKind::Alarm)
-            continue;
         const BitState state = bitState(r);
-        count += state == BitState::On;
         known = known && state != BitState::Unknown;
+        count += r.bit->kind == BitKind::Alarm && state == BitState::On;
     }
     if (count != m_activeAlarms) {
         m_activeAlarms = count;

@@ -19,15 +19,39 @@ bool BitWrite::isActivation(const BitDefinition &bit) const
     return m_entry->activationMask && bit.mask() == *m_entry->activationMask;
 }
 
-std::pair<const RegisterEntry *, const BitDefinition *> BitWrite::reportOf(const BitDefinition &bit) const
+std::pair<const RegisterEntry *, const BitDefinition *> BitWrite::reportOf(const RegisterMap &map,
+                                                                          const RegisterEntry &entry,
+                                                                          const BitDefinition &bit)
 {
-    if (m_entry->isReadable())
-        return {m_entry, &bit};
+    if (entry.isReadable())
+        return {&entry, &bit};
     if (bit.stateFrom.isEmpty())
         return {nullptr, nullptr};
-    const RegisterEntry *source = m_map->entry(bit.stateFrom.section(QLatin1Char('.'), 0, 0));
+    const RegisterEntry *source = map.entry(bit.stateFrom.section(QLatin1Char('.'), 0, 0));
     const BitDefinition *sourceBit = source ? source->bitById(bit.stateFrom.section(QLatin1Char('.'), 1)) : nullptr;
     return sourceBit ? std::pair{source, sourceBit} : std::pair<const RegisterEntry *, const BitDefinition *>{};
+}
+
+QList<const BitDefinition *> BitWrite::switchableBits(const RegisterEntry &entry)
+{
+    QList<const BitDefinition *> out;
+    for (const BitDefinition &b : entry.bits) {
+        if (!b.reserved && b.width == 1 && !(entry.activationMask && b.mask() == *entry.activationMask))
+            out << &b;
+    }
+    return out;
+}
+
+bool BitWrite::canSwitchBits(const RegisterMap &map, const RegisterEntry &entry)
+{
+    if (entry.type != ValueType::Bitfield || !entry.isWritable() || entry.isAction())
+        return false;
+    for (const BitDefinition &b : entry.bits) {
+        const bool activation = entry.activationMask && b.mask() == *entry.activationMask;
+        if (!b.reserved && !activation && !reportOf(map, entry, b).first)
+            return false;
+    }
+    return true;
 }
 
 std::optional<BitWrite> BitWrite::make(const RegisterMap &map, const RegisterEntry &entry,

@@ -41,13 +41,26 @@ public:
     // "digital_output=1, external_inhibit_input=0", in bit order.
     QString describe() const;
 
+    // Where the device reports a bit of a bit field: (entry, bit), or nulls when nothing
+    // reports it (a write-only word without a state source).
+    static std::pair<const RegisterEntry *, const BitDefinition *> reportOf(const RegisterMap &map,
+                                                                             const RegisterEntry &entry,
+                                                                             const BitDefinition &bit);
+    // The bits an operator switches one by one: not reserved, one bit wide, not the
+    // activation bit.
+    static QList<const BitDefinition *> switchableBits(const RegisterEntry &entry);
+    // Whether each switchable bit can be changed alone (the others are reported).
+    static bool canSwitchBits(const RegisterMap &map, const RegisterEntry &entry);
+
 private:
     BitWrite(const RegisterMap &map, const RegisterEntry &entry, QHash<QString, bool> changes)
         : m_map(&map), m_entry(&entry), m_changes(std::move(changes))
     {
     }
-    // Where the device reports a bit: (entry, bit) or nulls.
-    std::pair<const RegisterEntry *, const BitDefinition *> reportOf(const BitDefinition &bit) const;
+    std::pair<const RegisterEntry *, const BitDefinition *> reportOf(const BitDefinition &bit) const
+    {
+        return reportOf(*m_map, *m_entry, bit);
+    }
     bool isActivation(const BitDefinition &bit) const;
 
     const RegisterMap *m_map;

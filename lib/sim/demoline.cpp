@@ -14,6 +14,11 @@ DemoLine::DemoLine(const FamilyRegistry &registry, QObject *parent) : QObject(pa
     }
     m_simulator.setTickInterval(100);
     connect(&m_pty, &PtyPair::failed, this, &DemoLine::failed);
+    // Without its pty the simulator's port only reports hang-ups: it closes.
+    connect(&m_pty, &PtyPair::ended, this, [this] {
+        m_simulator.close();
+        emit failed(tr("the simulated line ended (socat stopped)"));
+    });
     connect(&m_pty, &PtyPair::ready, this, [this] {
         QString error;
         if (!m_simulator.open(m_pty.deviceEnd(), m_format, &error)) {

@@ -4,6 +4,7 @@
 #include <QFileInfo>
 
 #include <csignal>
+#include <utility>
 #include <sys/prctl.h>
 
 namespace jumo {
@@ -22,9 +23,13 @@ PtyPair::PtyPair(QObject *parent) : QObject(parent)
     });
     connect(&m_socat, &QProcess::finished, this, [this] {
         m_poll.stop();
-        if (!m_ready)
+        if (m_stopping)
+            return;
+        const bool wasReady = std::exchange(m_ready, false);
+        if (!wasReady)
             emit failed(tr("socat ended: %1").arg(QString::fromLocal8Bit(m_socat.readAllStandardError()).trimmed()));
-        m_ready = false;
+        else
+            emit ended();
     });
 }
 
@@ -41,6 +46,7 @@ void PtyPair::start(const QString &directory)
     QFile::remove(m_deviceEnd);
     QFile::remove(m_masterEnd);
     m_ready = false;
+    m_stopping = false;
     m_polls = 0;
     m_socat.start(QStringLiteral("socat"),
                   {QStringLiteral("pty,raw,echo=0,link=") + m_deviceEnd, QStringLiteral("pty,raw,echo=0,link=") + m_masterEnd});
@@ -64,6 +70,8 @@ void PtyPair::poll()
 void PtyPair::stop()
 {
     m_poll.stop();
+    m_ready = false;
+    m_stopping = true;   // asked for: neither failed() nor ended()
     if (m_socat.state() != QProcess::NotRunning) {
         // SIGTERM lets socat remove its links.
         m_socat.terminate();

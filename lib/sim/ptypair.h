@@ -26,6 +26,8 @@ public:
     bool isReady() const { return m_ready; }
 
 signals:
+    // socat ended after the pair was ready: both ends are gone.
+    void ended();
     void ready();
     void failed(const QString &reason);
 
@@ -38,6 +40,7 @@ private:
     QString m_masterEnd;
     int m_polls = 0;
     bool m_ready = false;
+    bool m_stopping = false;
 };
 
 } // namespace jumo

@@ -1,6 +1,8 @@
 // The HMI's real widgets, offscreen, against the simulator over a pty line: connect,
 // scan and live values; an alarm LED; a setpoint confirmed by read-back; read-only mode;
-// an error value shown as what it is.
+// an error value shown as what it is; bits switched one at a time; a pulled line shown
+// as such everywhere.
+#include "bitswitches.h"
 #include "connectionbar.h"
 #include "controlrow.h"
 #include "logs/eventlog.h"
@@ -13,17 +15,47 @@
 #include "livevaluesview.h"
 #include "mainwindow.h"
 #include "parametersdialog.h"
+#include "logs/datalogger.h"
+#include "models/valuetext.h"
 #include "scandialog.h"
 #include "testpeers.h"
+#include "trendview.h"
 
+#include <QApplication>
+#include <QElapsedTimer>
 #include <QLabel>
 #include <QListWidget>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTest>
 
 using namespace jumo;
 using namespace jumo::test;
+
+namespace {
+
+// Clicks a button whose write asks for a confirmation, and answers it with Yes.
+void clickAndConfirm(QPushButton *button)
+{
+    QTimer answer;
+    int answered = 0;
+    QObject::connect(&answer, &QTimer::timeout, [&answered] {
+        for (QWidget *w : QApplication::topLevelWidgets()) {
+            auto *box = qobject_cast<QMessageBox *>(w);
+            if (box && box->isVisible()) {
+                ++answered;
+                box->button(QMessageBox::Yes)->click();
+            }
+        }
+    });
+    answer.start(20);
+    QTest::mouseClick(button, Qt::LeftButton);
+    answer.stop();
+    QCOMPARE(answered, 1);
+}
+
+} // namespace
 
 class tst_Hmi : public QObject
 {
@@ -38,6 +70,9 @@ private slots:
     void errorValueShowsAsOverrange();
     void journalAndAuditSurviveARestart();
     void parametersBackupCompareRestore();
+    void bitSwitchesKeepTheOtherBits();
+    void pulledLineShowsEverywhere();
+    void tileOpensItsOwnDeviceAfterARemoval();
     void lostAuditRecordShowsInTheStatusBar();
 
 private:
@@ -251,6 +286,196 @@ void tst_Hmi::parametersBackupCompareRestore()
     QCOMPARE(ipc->number("max_alarm_limit"), limit);
     dialog.compare(file);
     QTRY_VERIFY_WITH_TIMEOUT(dialog.status().contains("matches the file"), 20000);
+}
+
+void tst_Hmi::bitSwitchesKeepTheOtherBits()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    SimulatedDevice *ipc = m_sim.line().device(1);
+    ControlRow *row = window->devicePage("ipc300", 1)->controls()->row("binary_signal_write");
+    QVERIFY(row && row->switches() && row->switches()->switchesSingleBits());
+    window->devicePage("ipc300", 1)->tabs()->setCurrentWidget(window->devicePage("ipc300", 1)->controls());
+    BitSwitches *bits = row->switches();
+    QTRY_VERIFY_WITH_TIMEOUT(bits->indicator("external_inhibit_input")->state() != LedIndicator::State::Unknown, 20000);
+    const auto switchTo = [&](const QString &bit, bool on) {
+        clickAndConfirm(bits->button(bit, on));
+        QTRY_VERIFY_WITH_TIMEOUT(!row->stateText().startsWith("Pending"), 20000);
+        QVERIFY2(row->stateText().startsWith("Confirmed"), qPrintable(row->stateText()));
+        // The lamp follows the device's report.
+        QTRY_COMPARE_WITH_TIMEOUT(bits->indicator(bit)->isOn(), on, 20000);
+    };
+
+    // External inhibit on, then the digital output on and off: the inhibit stays, as
+    // the device's status word 0x00EF shows.
+    switchTo("external_inhibit_input", true);
+    QVERIFY(ipc->flag("binary_signal_1.external_inhibit_input"));
+    switchTo("digital_output", true);
+    QVERIFY(ipc->flag("binary_signal_1.digital_output"));
+    QVERIFY(ipc->flag("binary_signal_1.external_inhibit_input"));
+    switchTo("digital_output", false);
+    QVERIFY(!ipc->flag("binary_signal_1.digital_output"));
+    QVERIFY(ipc->flag("binary_signal_1.external_inhibit_input"));
+    switchTo("external_inhibit_input", false);
+    QVERIFY(!ipc->flag("binary_signal_1.external_inhibit_input"));
+
+    // A dTRON with K2 on: switching K1 on leaves K2 on.
+    QVERIFY(window->addDevice(families().family("dtron300"), 4));
+    window->showDevice("dtron300", 4);
+    SimulatedDevice *dtron = m_sim.line().device(4);
+    const quint16 outputs = dtron->map().entry("binary_output_control")->address;
+    row = window->devicePage("dtron300", 4)->controls()->row("binary_output_control");
+    QVERIFY(row && row->switches() && row->switches()->switchesSingleBits());
+    window->devicePage("dtron300", 4)->tabs()->setCurrentWidget(window->devicePage("dtron300", 4)->controls());
+    bits = row->switches();
+    QTRY_VERIFY_WITH_TIMEOUT(bits->indicator("output_2")->state() != LedIndicator::State::Unknown, 20000);
+    switchTo("output_2", true);
+    switchTo("output_1", true);
+    QCOMPARE(dtron->word(outputs) & 0x0003, 0x0003);
+    switchTo("output_1", false);
+    QCOMPARE(dtron->word(outputs) & 0x0003, 0x0002);
+    switchTo("output_2", false);
+}
+
+void tst_Hmi::pulledLineShowsEverywhere()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    QVERIFY(window->addDevice(families().family("dtron300"), 4));
+    const QList<QPair<QString, quint8>> devices{{"ipc300", 1}, {"dtron300", 4}};
+    DevicePage *ipcPage = window->devicePage("ipc300", 1);
+    DevicePage *dtronPage = window->devicePage("dtron300", 4);
+    QTemporaryDir logDir;
+    DataLogger logger(window->bus());
+    DataLogger::Settings settings;
+    settings.folder = logDir.path();
+    settings.intervalMs = 100;
+    settings.entries = {{ipcPage->device(), "load_current"}, {dtronPage->device(), "filtered_process_value"}};
+    QString error;
+    QVERIFY2(logger.start(settings, &error), qPrintable(error));
+    ipcPage->trend()->select("load_current", true);
+
+    // Live everywhere first.
+    window->showOverview();
+    for (const auto &[family, address] : devices) {
+        DeviceTile *tile = window->deviceTile(family, address);
+        QTRY_VERIFY_WITH_TIMEOUT(tile->alarmText().contains("active alarm")
+                                         && !tile->valuesText().contains(ValueText::noValue()),
+                                 20000);
+        QCOMPARE(tile->stateText(), QString("Online"));
+    }
+    QTRY_VERIFY_WITH_TIMEOUT(ipcPage->trend()->segments("load_current").value(0).size() >= 2, 20000);
+    for (DevicePage *page : {ipcPage, dtronPage}) {
+        window->showDevice(page);
+        page->tabs()->setCurrentWidget(page->ledGrid());
+        QTRY_VERIFY_WITH_TIMEOUT(page->ledGrid()->findChild<QLabel *>("activeAlarms")->text().contains("active alarm"), 20000);
+        for (LedIndicator *led : page->ledGrid()->findChildren<LedIndicator *>())
+            QVERIFY2(led->state() != LedIndicator::State::Unknown, qPrintable(led->objectName()));
+        page->tabs()->setCurrentWidget(page->controls());
+        QTRY_VERIFY(!page->controls()->findChildren<QLabel *>().isEmpty());
+    }
+    window->showOverview();
+
+    // The line is pulled: the simulator and the adapter go.
+    QElapsedTimer pulled;
+    pulled.start();
+    const QDateTime pulledAt = QDateTime::currentDateTimeUtc();
+    m_sim.stop();
+    m_line.stop();
+    for (const auto &[family, address] : devices) {
+        DeviceTile *tile = window->deviceTile(family, address);
+        QTRY_VERIFY_WITH_TIMEOUT(tile->stateText().startsWith("Line lost since"), 10000);
+    }
+    qInfo("line pulled: both tiles show it after %lld ms", pulled.elapsed());
+    for (const auto &[family, address] : devices) {
+        DeviceTile *tile = window->deviceTile(family, address);
+        QCOMPARE(tile->alarmText(), QString("Alarms unknown"));
+        for (const QString &line : tile->valuesText().split('\n'))
+            QVERIFY2(line.endsWith(ValueText::noValue()), qPrintable(line));
+        // The device's page: every LED unknown, every control text without a value.
+        DevicePage *page = window->devicePage(family, address);
+        window->showDevice(page);
+        page->tabs()->setCurrentWidget(page->ledGrid());
+        for (LedIndicator *led : page->ledGrid()->findChildren<LedIndicator *>())
+            QVERIFY2(led->state() == LedIndicator::State::Unknown, qPrintable(led->objectName()));
+        QVERIFY(page->ledGrid()->findChild<QLabel *>("activeAlarms")->text().startsWith("Alarms unknown"));
+        page->tabs()->setCurrentWidget(page->controls());
+        for (QLabel *label : page->controls()->findChildren<QLabel *>()) {
+            if (label->text().startsWith("Device: "))
+                QVERIFY2(label->text().contains(ValueText::noValue()) && label->text().contains("Line lost"),
+                         qPrintable(label->text()));
+        }
+        for (BitSwitches *bits : page->controls()->findChildren<BitSwitches *>()) {
+            for (LedIndicator *led : bits->findChildren<LedIndicator *>())
+                QVERIFY2(led->state() == LedIndicator::State::Unknown, qPrintable(led->objectName()));
+        }
+    }
+    const int pointsAtLoss = int(ipcPage->trend()->segments("load_current").value(0).size());
+
+    // The journal has the loss of each device.
+    const auto communication = [&](const QString &device, const QString &state) {
+        for (const QJsonObject &r : window->alarmJournal()->records()) {
+            if (r.value("id").toString() == "communication" && r.value("device").toString() == device
+                && r.value("state").toString() == state
+                && QDateTime::fromString(r.value("time").toString(), Qt::ISODateWithMs) >= pulledAt.addSecs(-1))
+                return true;
+        }
+        return false;
+    };
+    QVERIFY(communication("ipc300@1", "lost: line lost"));
+    QVERIFY(communication("dtron300@4", "lost: line lost"));
+
+    // The logger writes no value while the line is gone, and says why.
+    QTRY_VERIFY_WITH_TIMEOUT(QFile(logger.currentFile()).size() > 0, 10000);
+    QTest::qWait(400);
+    QFile log(logger.currentFile());
+    QVERIFY(log.open(QIODevice::ReadOnly));
+    QSet<QString> lostRows;
+    for (const QByteArray &line : log.readAll().split('\n')) {
+        const QList<QByteArray> f = line.split(',');
+        if (f.size() == 6 && QDateTime::fromString(QString::fromLatin1(f[0]), Qt::ISODateWithMs) > pulledAt.addMSecs(300)) {
+            QVERIFY2(f[3].isEmpty() && f[5] == "line_lost", line.constData());
+            lostRows << QString::fromLatin1(f[1]);
+        }
+    }
+    QCOMPARE(lostRows, QSet<QString>({"ipc300@1", "dtron300@4"}));
+
+    // The line comes back: values are current again, and the trend has a gap.
+    const qint64 outageMs = pulled.elapsed();
+    QVERIFY(m_line.restart());
+    QVERIFY(m_sim.reopen());
+    window->showOverview();
+    for (const auto &[family, address] : devices) {
+        DeviceTile *tile = window->deviceTile(family, address);
+        QTRY_VERIFY_WITH_TIMEOUT(tile->stateText() == "Online" && tile->alarmText().contains("active alarm"), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(!tile->valuesText().contains(ValueText::noValue()), 20000);
+    }
+    QVERIFY(communication("ipc300@1", "restored"));
+    QVERIFY(communication("dtron300@4", "restored"));
+    QTRY_VERIFY_WITH_TIMEOUT(ipcPage->trend()->segments("load_current").size() == 2, 20000);
+    const QList<QList<QPointF>> segments = ipcPage->trend()->segments("load_current");
+    QCOMPARE(segments.first().size(), pointsAtLoss);
+    QVERIFY(segments.last().first().x() - segments.first().last().x() >= outageMs - 100);
+    logger.stop();
+}
+
+void tst_Hmi::tileOpensItsOwnDeviceAfterARemoval()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    QVERIFY(window->addDevice(families().family("tya200"), 2));
+    QVERIFY(window->addDevice(families().family("quantrol"), 3));
+    DeviceTile *quantrolTile = window->deviceTile("quantrol", 3);
+    // The first device goes; the tiles after it move up a place.
+    window->showDevice("ipc300", 1);
+    QTest::mouseClick(window->findChild<QPushButton *>("removeDeviceButton"), Qt::LeftButton);
+    QVERIFY(!window->deviceTile("ipc300", 1));
+    window->showOverview();
+    QTest::mouseClick(quantrolTile, Qt::LeftButton);
+    auto *pages = window->devicePage("quantrol", 3)->parentWidget();
+    QVERIFY(pages->isVisible());
+    QVERIFY(window->devicePage("quantrol", 3)->isVisible());
+    QVERIFY(!window->devicePage("tya200", 2)->isVisible());
 }
 
 void tst_Hmi::lostAuditRecordShowsInTheStatusBar()

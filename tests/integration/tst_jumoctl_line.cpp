@@ -346,7 +346,7 @@ void tst_JumoctlLine::wrongFamilyIsRefused()
     const int writesBefore = m_sim.writeFrames();
     const int auditBefore = int(auditRecords().size());
     const Run r = run(arguments + port());
-    QCOMPARE(r.code, 3);
+    QCOMPARE(r.code, 4);
     QVERIFY2(r.err.contains("quantrol@4 refused: the device at address 4 is a dtron300"), qPrintable(r.err));
     QVERIFY2(r.out.isEmpty(), qPrintable(r.out));   // no value, no difference, no "saved"
     QCOMPARE(m_sim.writeFrames(), writesBefore);
