@@ -157,7 +157,8 @@ def map_mutations():
         path, value = pick(rng, tree, lambda p, v: is_number(v) and key_of(p) in HUGE_REFUSED_KEYS)
         if path is None:
             return None
-        new = rng.choice([2147483647, 4294967296, 1e300, 100000])
+        # 100000 is beyond every bound but that of busErrorTimeoutMs (up to an hour).
+        new = rng.choice([2147483647, 4294967296, 1e300] + ([100000] if key_of(path) != "busErrorTimeoutMs" else []))
         put(tree, path, new)
         return "%s: %r -> %r" % ("/".join(map(str, path)), value, new), True
 
