@@ -1,7 +1,7 @@
 // The HMI's real widgets, offscreen, against the simulator over a pty line: connect,
 // scan and live values; an alarm LED; a setpoint confirmed by read-back; read-only mode;
 // an error value shown as what it is; bits switched one at a time; a pulled line shown
-// as such everywhere.
+// as such everywhere; a paused trend never joins the points around the pause.
 #include "bitswitches.h"
 #include "connectionbar.h"
 #include "controlrow.h"
@@ -22,6 +22,7 @@
 #include "trendview.h"
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QListWidget>
@@ -73,6 +74,7 @@ private slots:
     void bitSwitchesKeepTheOtherBits();
     void pulledLineShowsEverywhere();
     void tileOpensItsOwnDeviceAfterARemoval();
+    void trendPauseLeavesAGap();
 
 private:
     // A window connected to the line with the IPC 300 at address 1 on its page.
@@ -475,6 +477,43 @@ void tst_Hmi::tileOpensItsOwnDeviceAfterARemoval()
     QVERIFY(pages->isVisible());
     QVERIFY(window->devicePage("quantrol", 3)->isVisible());
     QVERIFY(!window->devicePage("tya200", 2)->isVisible());
+}
+
+void tst_Hmi::trendPauseLeavesAGap()
+{
+    // A pause records nothing, not even that the device stopped answering meanwhile: the
+    // trace must not join the points before and after it.
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    DevicePage *page = window->devicePage("ipc300", 1);
+    TrendView *trend = page->trend();
+    trend->select("load_current", true);
+    QTRY_VERIFY_WITH_TIMEOUT(trend->segments("load_current").value(0).size() >= 2, 20000);
+    auto *pause = trend->findChild<QCheckBox *>("trendPause");
+    QVERIFY(pause);
+    pause->setChecked(true);
+    const qsizetype pointsAtPause = trend->segments("load_current").value(0).size();
+
+    auto validity = [&] {
+        const EntryState *s = window->bus()->entryState(page->device(), "load_current");
+        return s ? s->validity : Validity::Unknown;
+    };
+    m_sim.setFault(1, "dead", -1, 0);
+    QTRY_COMPARE_WITH_TIMEOUT(validity(), Validity::Unknown, 20000);
+    m_sim.setFault(1, "none", -1, 0);
+    QTRY_COMPARE_WITH_TIMEOUT(validity(), Validity::Current, 30000);
+    pause->setChecked(false);
+
+    auto points = [&] {
+        qsizetype n = 0;
+        for (const QList<QPointF> &segment : trend->segments("load_current"))
+            n += segment.size();
+        return n;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(points() >= pointsAtPause + 2, 20000);
+    const QList<QList<QPointF>> segments = trend->segments("load_current");
+    QCOMPARE(segments.size(), 2);
+    QCOMPARE(segments.first().size(), pointsAtPause);
 }
 
 QTEST_MAIN(tst_Hmi)
