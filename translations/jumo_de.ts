@@ -22,7 +22,7 @@
 <context>
     <name>jumo::AlarmBitsModel</name>
     <message>
-        <location filename="../lib/models/alarmbitsmodel.cpp" line="+108"/>
+        <location filename="../lib/models/alarmbitsmodel.cpp" line="+112"/>
         <source>%1 (register %2)</source>
         <translation>%1 (Register %2)</translation>
     </message>
@@ -810,11 +810,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+58"/>
+        <location line="+35"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-21"/>
         <source>Online</source>
         <translation>Online</translation>
     </message>
@@ -834,7 +835,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Leitung getrennt</translation>
     </message>
     <message numerus="yes">
-        <location line="+7"/>
+        <location line="+8"/>
         <source>%n active alarm(s)</source>
         <translation>
             <numerusform>%n aktiver Alarm</numerusform>
@@ -902,7 +903,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LedGrid</name>
     <message numerus="yes">
-        <location filename="../ui/ledgrid.cpp" line="+83"/>
+        <location filename="../ui/ledgrid.cpp" line="+82"/>
         <source>%n active alarm(s)</source>
         <translation>
             <numerusform>%n aktiver Alarm</numerusform>
@@ -913,6 +914,11 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <location line="+1"/>
         <source>Alarms unknown: the device cannot be read</source>
         <translation>Alarme unbekannt: Das Gerät kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>(stale: not read in the device&apos;s last cycle)</source>
+        <translation>(veraltet: im letzten Zyklus des Geräts nicht gelesen)</translation>
     </message>
 </context>
 <context>
@@ -2830,7 +2836,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Pause</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+8"/>
         <source>Export CSV...</source>
         <translation>CSV exportieren...</translation>
     </message>
