@@ -145,7 +145,7 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::Bus</name>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+59"/>
+        <location filename="../lib/bus/bus.cpp" line="+61"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
@@ -173,7 +173,8 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>&apos;%1&apos; benötigt mehr Wörter, als eine Schreibanfrage umfassen darf</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+10"/>
+        <location filename="../lib/bus/bus.cpp" line="-8"/>
+        <location line="+16"/>
         <source>the line was reopened</source>
         <translation>die Leitung wurde neu geöffnet</translation>
     </message>
@@ -210,7 +211,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>nur RAM-Werte können gehalten werden, &apos;%1&apos; gehört nicht dazu</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+263"/>
+        <location filename="../lib/bus/bus.cpp" line="+260"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
@@ -220,7 +221,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>Nur-Lese-Modus</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+76"/>
         <source>exception %1</source>
         <translation>Exception %1</translation>
     </message>

@@ -125,6 +125,8 @@ private slots:
     void broadcastNeverReadsBackFromAddressZero();
     void keepaliveHoldsWhileBitChangesAreRepeated_data();
     void keepaliveHoldsWhileBitChangesAreRepeated();
+    void writeUnderWayWhenTheLineReopensIsUnknown_data();
+    void writeUnderWayWhenTheLineReopensIsUnknown();
 };
 
 void tst_Scheduler::keepaliveAndPollsHoldDuringScanAndRestore()
@@ -547,6 +549,40 @@ void tst_Scheduler::keepaliveHoldsWhileBitChangesAreRepeated()
     const qint64 gap = longestGap(*line.transport, 1, start, end);
     QVERIFY2(gap < Scheduler::keepaliveMs(*families().family("ipc300")),
              qPrintable(QStringLiteral("slave 1 silent for %1 ms").arg(gap)));
+}
+
+void tst_Scheduler::writeUnderWayWhenTheLineReopensIsUnknown_data()
+{
+    QTest::addColumn<QString>("entry");
+    QTest::addColumn<QString>("value");
+    QTest::newRow("command") << "program_controller_functions" << "segment_change";
+    QTest::newRow("value") << "setpoint" << "42";
+}
+
+void tst_Scheduler::writeUnderWayWhenTheLineReopensIsUnknown()
+{
+    // The port is opened again while a write frame is out and its answer not yet in. The
+    // bus waited for that answer from the old transport forever (nothing was ever sent
+    // again); and the frame may have been carried out: unknown, never "not written".
+    QFETCH(QString, entry);
+    QFETCH(QString, value);
+    Line line({{"dtron300", 4}});
+    QVERIFY(line.bus->open());
+    line.bus->setPolling(false);
+    const DeviceId id = line.bus->addDevice(families().family("dtron300"), 4);
+    line.transport->drop = [](const ModbusRequest &r) { return r.isWrite(); };
+    QSignalSpy finished(line.bus.get(), &Bus::writeFinished);
+    line.bus->write(id, entry, value);
+    QVERIFY(line.runUntil([&] { return line.transport->count(4, -1, -1) > 0 && line.transport->sent.last().request.isWrite(); },
+                          10000));
+    QVERIFY(line.bus->open());
+    QVERIFY(line.runUntil([&] { return finished.count() == 1; }, 60000));
+    const WriteOutcome outcome = finished.at(0).at(1).value<WriteOutcome>();
+    QVERIFY2(outcome.result == WriteOutcome::Result::Unknown, qPrintable(outcome.message));
+    int writes = 0;
+    for (const FakeTransport::Sent &s : std::as_const(line.transport->sent))
+        writes += s.request.isWrite();
+    QCOMPARE(writes, 0);   // the new transport sent nothing more: the write is over
 }
 
 QTEST_GUILESS_MAIN(tst_Scheduler)
