@@ -3169,7 +3169,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Broadcast vom Gerät an Adresse %1 nicht übernommen: Es liest %2 zurück</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>broadcast confirmed by read-back from every device</source>
         <translation>Broadcast durch Zurücklesen von jedem Gerät bestätigt</translation>
     </message>
@@ -3190,12 +3190,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>geschrieben und quittiert, aber nicht zurückgelesen: %1</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>broadcast confirmed by read-back from every remaining device</source>
         <translation>Broadcast durch Zurücklesen von jedem verbleibenden Gerät bestätigt</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+2"/>
+        <source>broadcast sent; no device is left to read it back from</source>
+        <translation>Broadcast gesendet; kein Gerät ist mehr da, um ihn zurückzulesen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>the device was removed from the line</source>
         <translation>das Gerät wurde von der Leitung entfernt</translation>
     </message>

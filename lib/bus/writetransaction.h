@@ -77,6 +77,7 @@ private:
     int m_readIndex = 0;
     QHash<QString, QList<quint16>> m_readWords;          // entry id -> words
     QList<Target> m_readBackTargets;                     // broadcast read-backs still to do
+    int m_confirmedBy = 0;                               // devices that read the broadcast back
     int m_attempts = 0;                                  // of the current request
     DecodedValue m_readBack;
 };

@@ -127,6 +127,7 @@ private slots:
     void keepaliveHoldsWhileBitChangesAreRepeated();
     void writeUnderWayWhenTheLineReopensIsUnknown_data();
     void writeUnderWayWhenTheLineReopensIsUnknown();
+    void broadcastWhoseOnlyReaderGoesIsNotConfirmed();
 };
 
 void tst_Scheduler::keepaliveAndPollsHoldDuringScanAndRestore()
@@ -583,6 +584,25 @@ void tst_Scheduler::writeUnderWayWhenTheLineReopensIsUnknown()
     for (const FakeTransport::Sent &s : std::as_const(line.transport->sent))
         writes += s.request.isWrite();
     QCOMPARE(writes, 0);   // the new transport sent nothing more: the write is over
+}
+
+void tst_Scheduler::broadcastWhoseOnlyReaderGoesIsNotConfirmed()
+{
+    // The one device to read the broadcast back from is removed while its read-back goes
+    // unanswered: nobody confirmed it.
+    Line line({{"ipc300", 1}});
+    QVERIFY(line.bus->open());
+    line.bus->setPolling(false);
+    const DeviceId id = line.bus->addDevice(families().family("ipc300"), 1);
+    line.transport->drop = [](const ModbusRequest &r) { return !r.isWrite(); };
+    QSignalSpy finished(line.bus.get(), &Bus::writeFinished);
+    line.bus->writeBroadcast("ipc300", "input_setpoint", "25");
+    QVERIFY(line.runUntil([&] { return line.transport->count(1, 0x03, 0x00D5) == 1; }, 30000));
+    line.bus->removeDevice(id);
+    QVERIFY(line.runUntil([&] { return finished.count() == 1; }, 30000));
+    const WriteOutcome outcome = finished.at(0).at(1).value<WriteOutcome>();
+    QVERIFY2(outcome.result == WriteOutcome::Result::Accepted, qPrintable(outcome.message));
+    QCOMPARE(line.transport->count(0, 0x10), 1);
 }
 
 QTEST_GUILESS_MAIN(tst_Scheduler)
