@@ -22,7 +22,7 @@
 <context>
     <name>jumo::AlarmBitsModel</name>
     <message>
-        <location filename="../lib/models/alarmbitsmodel.cpp" line="+108"/>
+        <location filename="../lib/models/alarmbitsmodel.cpp" line="+112"/>
         <source>%1 (register %2)</source>
         <translation>%1 (Register %2)</translation>
     </message>
@@ -211,7 +211,7 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::Bus</name>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+59"/>
+        <location filename="../lib/bus/bus.cpp" line="+61"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
@@ -239,7 +239,8 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>&apos;%1&apos; benötigt mehr Wörter, als eine Schreibanfrage umfassen darf</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+10"/>
+        <location filename="../lib/bus/bus.cpp" line="-8"/>
+        <location line="+16"/>
         <source>the line was reopened</source>
         <translation>die Leitung wurde neu geöffnet</translation>
     </message>
@@ -276,7 +277,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>nur RAM-Werte können gehalten werden, &apos;%1&apos; gehört nicht dazu</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+263"/>
+        <location filename="../lib/bus/bus.cpp" line="+260"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
@@ -286,7 +287,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>Nur-Lese-Modus</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+76"/>
         <source>exception %1</source>
         <translation>Exception %1</translation>
     </message>
@@ -868,11 +869,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+58"/>
+        <location line="+35"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-21"/>
         <source>Online</source>
         <translation>Online</translation>
     </message>
@@ -892,7 +894,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Leitung getrennt</translation>
     </message>
     <message numerus="yes">
-        <location line="+7"/>
+        <location line="+8"/>
         <source>%n active alarm(s)</source>
         <translation>
             <numerusform>%n aktiver Alarm</numerusform>
@@ -1026,7 +1028,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LedGrid</name>
     <message numerus="yes">
-        <location filename="../ui/ledgrid.cpp" line="+83"/>
+        <location filename="../ui/ledgrid.cpp" line="+82"/>
         <source>%n active alarm(s)</source>
         <translation>
             <numerusform>%n aktiver Alarm</numerusform>
@@ -1037,6 +1039,11 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <location line="+1"/>
         <source>Alarms unknown: the device cannot be read</source>
         <translation>Alarme unbekannt: Das Gerät kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>(stale: not read in the device&apos;s last cycle)</source>
+        <translation>(veraltet: im letzten Zyklus des Geräts nicht gelesen)</translation>
     </message>
 </context>
 <context>
@@ -3120,7 +3127,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Pause</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+8"/>
         <source>Export CSV...</source>
         <translation>CSV exportieren...</translation>
     </message>
@@ -3452,7 +3459,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Broadcast vom Gerät an Adresse %1 nicht übernommen: Es liest %2 zurück</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>broadcast confirmed by read-back from every device</source>
         <translation>Broadcast durch Zurücklesen von jedem Gerät bestätigt</translation>
     </message>
@@ -3473,12 +3480,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>geschrieben und quittiert, aber nicht zurückgelesen: %1</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>broadcast confirmed by read-back from every remaining device</source>
         <translation>Broadcast durch Zurücklesen von jedem verbleibenden Gerät bestätigt</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+2"/>
+        <source>broadcast sent; no device is left to read it back from</source>
+        <translation>Broadcast gesendet; kein Gerät ist mehr da, um ihn zurückzulesen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>the device was removed from the line</source>
         <translation>das Gerät wurde von der Leitung entfernt</translation>
     </message>

@@ -111,9 +111,15 @@ void DeviceTile::refresh()
     // "No alarm" only when every alarm word is known; otherwise nobody can say.
     const int alarms = m_alarms->activeAlarms();
     const bool known = m_alarms->alarmsKnown() && m_condition.isOnline();
-    const QString alarmText = known ? tr("%n active alarm(s)", nullptr, alarms) : tr("Alarms unknown");
+    const bool stale = known && m_alarms->alarmsStale();
+    QString alarmText = known ? tr("%n active alarm(s)", nullptr, alarms) : tr("Alarms unknown");
+    if (stale)
+        alarmText += QLatin1Char(' ') + tr("(stale)");
+    // Green only for a live "no alarm".
     if (colour.isEmpty())
-        colour = !known ? QStringLiteral("#fff3cf") : alarms ? QStringLiteral("#ffd8d8") : QStringLiteral("#e3f4e3");
+        colour = alarms && known ? QStringLiteral("#ffd8d8")
+                : !known || stale ? QStringLiteral("#fff3cf")
+                                  : QStringLiteral("#e3f4e3");
     const QString stateHtml = m_condition.isOnline() ? state.toHtmlEscaped()
                                                      : QStringLiteral("<b>%1</b>").arg(state.toHtmlEscaped());
     m_stateText = state;

@@ -79,9 +79,11 @@ void LedGrid::refresh(int first, int last)
                               Validity(index.data(AlarmBitsModel::ValidityRole).toInt()) == Validity::Stale);
         m_leds[row]->setToolTip(index.data(Qt::ToolTipRole).toString());
     }
-    m_summary->setText(m_model->alarmsKnown()
-                               ? tr("%n active alarm(s)", nullptr, m_model->activeAlarms())
-                               : tr("Alarms unknown: the device cannot be read"));
+    QString summary = m_model->alarmsKnown() ? tr("%n active alarm(s)", nullptr, m_model->activeAlarms())
+                                             : tr("Alarms unknown: the device cannot be read");
+    if (m_model->alarmsKnown() && m_model->alarmsStale())
+        summary += QLatin1Char(' ') + tr("(stale: not read in the device's last cycle)");
+    m_summary->setText(summary);
 }
 
 void LedGrid::showEvent(QShowEvent *event)

@@ -49,7 +49,13 @@ TrendView::TrendView(LiveValuesModel *values, QWidget *parent)
     m_window->addItem(tr("1 hour"), 3600);
     connect(m_window, &QComboBox::currentIndexChanged, this, &TrendView::rescale);
     auto *pause = new QCheckBox(tr("Pause"), this);
-    connect(pause, &QCheckBox::toggled, this, [this](bool on) { m_paused = on; });
+    pause->setObjectName(QStringLiteral("trendPause"));
+    connect(pause, &QCheckBox::toggled, this, [this](bool on) {
+        // Nothing is recorded while paused, not even a loss: the line ends here.
+        m_paused = on;
+        for (Trace &trace : m_traces)
+            trace.broken = true;
+    });
     auto *exportButton = new QPushButton(tr("Export CSV..."), this);
     connect(exportButton, &QPushButton::clicked, this, [this] {
         const QString path = QFileDialog::getSaveFileName(this, tr("Export trend"), QString(), tr("CSV files (*.csv)"));

@@ -49,6 +49,8 @@ void Bus::setSettings(const BusSettings &settings)
 
 bool Bus::open()
 {
+    // Opened again while connected: the old transport goes with its request.
+    loseInFlight(tr("the line was reopened"));
     m_line.setSettings(m_settings);
     return m_line.open();
 }
@@ -64,12 +66,7 @@ void Bus::onStateChanged(LineState state)
 {
     m_lineSince = QDateTime::currentDateTime();
     if (state == LineState::Connected) {
-        if (m_inFlight && m_inFlight->turn.transaction) {
-            // The transport it went out on is gone without an answer.
-            m_inFlight->turn.transaction->abort(tr("the line was reopened"));
-            m_scheduler.transactionFinished(m_inFlight->turn.transaction);
-        }
-        m_inFlight.reset();
+        loseInFlight(tr("the line was reopened"));
         m_wakeAtMs = -1;
         m_scheduler.restart(now());
         if (!m_sweeping) {
@@ -412,6 +409,18 @@ void Bus::onResult(const ModbusResult &result)
     for (DeviceId id : std::exchange(m_forgetAfterFlight, {}))
         m_scheduler.forgetDevice(id, nullptr);
     schedule(t);
+}
+
+void Bus::loseInFlight(const QString &reason)
+{
+    if (!m_inFlight)
+        return;
+    // The transport it went out on is gone without an answer: the request may have
+    // reached the device (a write's outcome is unknown), as when the line goes down.
+    ModbusResult result;
+    result.status = ModbusResult::Status::LineDown;
+    result.errorText = reason;
+    onResult(result);
 }
 
 void Bus::recordTraffic(const InFlight &flight, const ModbusResult &result, double roundTripMs)

@@ -164,6 +164,7 @@ private:
     void onStateChanged(LineState state);
     void onLineLost(const QString &reason);
     void onResult(const ModbusResult &result);
+    void loseInFlight(const QString &reason);
     void schedule(qint64 atMs);
     void dispatch();
     void sweep();

@@ -244,6 +244,7 @@ void WriteTransaction::checkReadBack(const ModbusResult &result)
         return;
     }
     m_readBackTargets.removeFirst();
+    ++m_confirmedBy;
     if (m_readBackTargets.isEmpty())
         finish(WriteOutcome::Result::Confirmed, tr("broadcast confirmed by read-back from every device"));
 }
@@ -278,8 +279,12 @@ void WriteTransaction::forgetDevice(DeviceId device)
     if (m_broadcast) {
         const bool current = !m_readBackTargets.isEmpty() && m_readBackTargets.first().device == device;
         m_readBackTargets.removeIf([device](const Target &t) { return t.device == device; });
-        if (m_phase == Phase::ReadBack && m_readBackTargets.isEmpty())
-            finish(WriteOutcome::Result::Confirmed, tr("broadcast confirmed by read-back from every remaining device"));
+        if (m_phase == Phase::ReadBack && m_readBackTargets.isEmpty()) {
+            if (m_confirmedBy > 0)
+                finish(WriteOutcome::Result::Confirmed, tr("broadcast confirmed by read-back from every remaining device"));
+            else
+                finish(WriteOutcome::Result::Accepted, tr("broadcast sent; no device is left to read it back from"));
+        }
         if (current)
             m_attempts = 0;
         return;

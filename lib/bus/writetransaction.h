@@ -45,7 +45,9 @@ public:
 
     std::optional<ModbusRequest> nextRequest() const override;
     ProtocolInfo timing() const override { return m_map->protocol; }
-    bool holdsLine() const override { return m_phase == Phase::Write && m_bitWrite.has_value(); }
+    // The write follows its pre-read at once; a repeat after a lost answer comes after a
+    // quiet gap anyway, and lets a keepalive go first.
+    bool holdsLine() const override { return m_phase == Phase::Write && m_bitWrite.has_value() && m_attempts == 0; }
     Next onResult(const ModbusResult &result, int maxRetries) override;
     void abort(const QString &reason) override;
     void forgetDevice(DeviceId device) override;
@@ -75,6 +77,7 @@ private:
     int m_readIndex = 0;
     QHash<QString, QList<quint16>> m_readWords;          // entry id -> words
     QList<Target> m_readBackTargets;                     // broadcast read-backs still to do
+    int m_confirmedBy = 0;                               // devices that read the broadcast back
     int m_attempts = 0;                                  // of the current request
     DecodedValue m_readBack;
 };

@@ -70,13 +70,17 @@ void AlarmBitsModel::recount()
 {
     int count = 0;
     bool known = true;
+    bool stale = false;
     // Known only while every word of the grid is: a device with warning and status
     // bits but no alarm bit must not say "0 active alarms" when nothing can be read.
     for (const Row &r : std::as_const(m_rows)) {
         const BitState state = bitState(r);
         known = known && state != BitState::Unknown;
+        const EntryState *s = m_bus->entryState(m_device, r.entry->id);
+        stale = stale || (s && s->validity == Validity::Stale);
         count += r.bit->kind == BitKind::Alarm && state == BitState::On;
     }
+    m_alarmsStale = stale;
     if (count != m_activeAlarms) {
         m_activeAlarms = count;
         emit activeAlarmsChanged(count);

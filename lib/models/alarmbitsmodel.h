@@ -29,6 +29,8 @@ public:
     int activeAlarms() const { return m_activeAlarms; }
     // False while any word with alarm bits is unknown: then nobody can say "no alarm".
     bool alarmsKnown() const { return m_alarmsKnown; }
+    // True while a word of the grid is stale: the count is the last known one, not a live one.
+    bool alarmsStale() const { return m_alarmsStale; }
     int rowOf(const QString &reference) const;   // "entry.bit"
 
 signals:
@@ -52,6 +54,7 @@ private:
     QList<Row> m_rows;
     int m_activeAlarms = 0;
     bool m_alarmsKnown = false;
+    bool m_alarmsStale = false;
 };
 
 } // namespace jumo

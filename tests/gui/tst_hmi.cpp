@@ -1,7 +1,8 @@
 // The HMI's real widgets, offscreen, against the simulator over a pty line: connect,
 // scan and live values; an alarm LED; a setpoint confirmed by read-back; read-only mode;
 // an error value shown as what it is; bits switched one at a time; a pulled line shown
-// as such everywhere.
+// as such everywhere; a paused trend never joins the points around the pause; stale
+// alarm words never read as a live all-clear.
 #include "bitswitches.h"
 #include "connectionbar.h"
 #include "controlrow.h"
@@ -22,6 +23,7 @@
 #include "trendview.h"
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QListWidget>
@@ -74,6 +76,8 @@ private slots:
     void pulledLineShowsEverywhere();
     void tileOpensItsOwnDeviceAfterARemoval();
     void lostAuditRecordShowsInTheStatusBar();
+    void trendPauseLeavesAGap();
+    void staleAlarmsAreNotShownAsLive();
 
 private:
     // A window connected to the line with the IPC 300 at address 1 on its page.
@@ -493,6 +497,69 @@ void tst_Hmi::lostAuditRecordShowsInTheStatusBar()
     QTRY_VERIFY_WITH_TIMEOUT(row->stateText().startsWith("Confirmed"), 20000);
     QTRY_VERIFY(status->isVisible());
     QVERIFY2(status->text().contains("write-audit.jsonl: Is a directory"), qPrintable(status->text()));
+}
+
+void tst_Hmi::trendPauseLeavesAGap()
+{
+    // A pause records nothing, not even that the device stopped answering meanwhile: the
+    // trace must not join the points before and after it.
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    DevicePage *page = window->devicePage("ipc300", 1);
+    TrendView *trend = page->trend();
+    trend->select("load_current", true);
+    QTRY_VERIFY_WITH_TIMEOUT(trend->segments("load_current").value(0).size() >= 2, 20000);
+    auto *pause = trend->findChild<QCheckBox *>("trendPause");
+    QVERIFY(pause);
+    pause->setChecked(true);
+    const qsizetype pointsAtPause = trend->segments("load_current").value(0).size();
+
+    auto validity = [&] {
+        const EntryState *s = window->bus()->entryState(page->device(), "load_current");
+        return s ? s->validity : Validity::Unknown;
+    };
+    m_sim.setFault(1, "dead", -1, 0);
+    QTRY_COMPARE_WITH_TIMEOUT(validity(), Validity::Unknown, 20000);
+    m_sim.setFault(1, "none", -1, 0);
+    QTRY_COMPARE_WITH_TIMEOUT(validity(), Validity::Current, 30000);
+    pause->setChecked(false);
+
+    auto points = [&] {
+        qsizetype n = 0;
+        for (const QList<QPointF> &segment : trend->segments("load_current"))
+            n += segment.size();
+        return n;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(points() >= pointsAtPause + 2, 20000);
+    const QList<QList<QPointF>> segments = trend->segments("load_current");
+    QCOMPARE(segments.size(), 2);
+    QCOMPARE(segments.first().size(), pointsAtPause);
+}
+
+void tst_Hmi::staleAlarmsAreNotShownAsLive()
+{
+    // Polling stops: the alarm words age. "0 active alarm(s)" on green would read as a
+    // live all-clear; the count is the last known one and says so, until polls return.
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    DevicePage *page = window->devicePage("ipc300", 1);
+    window->showOverview();
+    DeviceTile *tile = window->deviceTile("ipc300", 1);
+    QTRY_VERIFY_WITH_TIMEOUT(tile->stateText() == "Online" && tile->alarmText() == "0 active alarm(s)", 20000);
+    window->bus()->setPolling(false);
+    QTRY_COMPARE_WITH_TIMEOUT(tile->alarmText(), QString("0 active alarm(s) (stale)"), 30000);
+    QVERIFY(tile->valuesText().contains("(stale)"));
+    QVERIFY(!tile->styleSheet().contains("#e3f4e3"));   // not the all-clear green
+    window->showDevice(page);
+    page->tabs()->setCurrentWidget(page->ledGrid());
+    auto *summary = page->ledGrid()->findChild<QLabel *>("activeAlarms");
+    QTRY_VERIFY(summary->text().startsWith("0 active alarm(s) (stale"));
+
+    window->bus()->setPolling(true);
+    QTRY_COMPARE_WITH_TIMEOUT(summary->text(), QString("0 active alarm(s)"), 20000);
+    window->showOverview();
+    QTRY_COMPARE_WITH_TIMEOUT(tile->alarmText(), QString("0 active alarm(s)"), 20000);
+    QVERIFY(tile->styleSheet().contains("#e3f4e3"));
 }
 
 QTEST_MAIN(tst_Hmi)

@@ -56,6 +56,11 @@ private slots:
     void bitChangeRefusedWhereStateIsUnreported();
     void exception02IsolatesTheMissingEntry();
     void broadcastNeverReadsBackFromAddressZero();
+    void keepaliveHoldsWhileBitChangesAreRepeated_data();
+    void keepaliveHoldsWhileBitChangesAreRepeated();
+    void writeUnderWayWhenTheLineReopensIsUnknown_data();
+    void writeUnderWayWhenTheLineReopensIsUnknown();
+    void broadcastWhoseOnlyReaderGoesIsNotConfirmed();
 };
 
 void tst_Scheduler::keepaliveAndPollsHoldDuringScanAndRestore()
@@ -436,6 +441,101 @@ void tst_Scheduler::broadcastNeverReadsBackFromAddressZero()
     QCOMPARE(line.transport->count(0, 0x03), 0);
     QCOMPARE(line.transport->count(1, 0x03, 0x00D5), 1);
     QCOMPARE(line.transport->count(2, 0x03, 0x00D5), 0);
+}
+
+void tst_Scheduler::keepaliveHoldsWhileBitChangesAreRepeated_data()
+{
+    QTest::addColumn<int>("timeoutMs");
+    QTest::addColumn<int>("baud");
+    QTest::newRow("derived, 9600") << 0 << 9600;
+    QTest::newRow("derived, 19200") << 0 << 19200;
+    QTest::newRow("1000 ms, 9600") << 1000 << 9600;   // jumoctl --timeout
+    QTest::newRow("2000 ms, 9600") << 2000 << 9600;
+}
+
+void tst_Scheduler::keepaliveHoldsWhileBitChangesAreRepeated()
+{
+    // A bit change holds the line from its pre-read to its write; the repeats of a write
+    // whose answer was lost must not hold it too, or the IPC 300 goes without a telegram
+    // for every attempt's timeout and quiet gap.
+    QFETCH(int, timeoutMs);
+    QFETCH(int, baud);
+    Line line({{"ipc300", 1}, {"dtron300", 4}}, baud);
+    BusSettings settings = line.bus->settings();
+    settings.timeoutMs = timeoutMs;
+    line.bus->setSettings(settings);
+    QVERIFY(line.bus->open());
+    const DeviceId ipc = line.bus->addDevice(families().family("ipc300"), 1);
+    const DeviceId dtron = line.bus->addDevice(families().family("dtron300"), 4);
+    line.bus->setPollInterval(ipc, 20000);   // its keepalive comes from the scheduler
+    line.bus->setPollEntries(dtron, {"filtered_process_value"});
+    line.run(3000);
+    line.transport->drop = [](const ModbusRequest &r) { return r.isWrite() && r.slave == 4; };
+    QSignalSpy finished(line.bus.get(), &Bus::writeFinished);
+    const qint64 start = line.clock.nowMs();
+    for (int i = 0; i < 6; ++i)
+        line.bus->writeBits(dtron, "binary_output_control", {{"output_1", i % 2 == 0}});
+    QVERIFY(line.runUntil([&] { return finished.count() == 6; }, 600000));
+    const qint64 end = line.clock.nowMs();
+    for (const QList<QVariant> &args : std::as_const(finished))
+        QCOMPARE(args.at(1).value<WriteOutcome>().result, WriteOutcome::Result::Unknown);
+    QCOMPARE(line.transport->count(4, 0x06, 0x0027), 6 * (1 + line.bus->settings().retries));
+    const qint64 gap = longestGap(*line.transport, 1, start, end);
+    QVERIFY2(gap < Scheduler::keepaliveMs(*families().family("ipc300")),
+             qPrintable(QStringLiteral("slave 1 silent for %1 ms").arg(gap)));
+}
+
+void tst_Scheduler::writeUnderWayWhenTheLineReopensIsUnknown_data()
+{
+    QTest::addColumn<QString>("entry");
+    QTest::addColumn<QString>("value");
+    QTest::newRow("command") << "program_controller_functions" << "segment_change";
+    QTest::newRow("value") << "setpoint" << "42";
+}
+
+void tst_Scheduler::writeUnderWayWhenTheLineReopensIsUnknown()
+{
+    // The port is opened again while a write frame is out and its answer not yet in. The
+    // bus waited for that answer from the old transport forever (nothing was ever sent
+    // again); and the frame may have been carried out: unknown, never "not written".
+    QFETCH(QString, entry);
+    QFETCH(QString, value);
+    Line line({{"dtron300", 4}});
+    QVERIFY(line.bus->open());
+    line.bus->setPolling(false);
+    const DeviceId id = line.bus->addDevice(families().family("dtron300"), 4);
+    line.transport->drop = [](const ModbusRequest &r) { return r.isWrite(); };
+    QSignalSpy finished(line.bus.get(), &Bus::writeFinished);
+    line.bus->write(id, entry, value);
+    QVERIFY(line.runUntil([&] { return line.transport->count(4, -1, -1) > 0 && line.transport->sent.last().request.isWrite(); },
+                          10000));
+    QVERIFY(line.bus->open());
+    QVERIFY(line.runUntil([&] { return finished.count() == 1; }, 60000));
+    const WriteOutcome outcome = finished.at(0).at(1).value<WriteOutcome>();
+    QVERIFY2(outcome.result == WriteOutcome::Result::Unknown, qPrintable(outcome.message));
+    int writes = 0;
+    for (const FakeTransport::Sent &s : std::as_const(line.transport->sent))
+        writes += s.request.isWrite();
+    QCOMPARE(writes, 0);   // the new transport sent nothing more: the write is over
+}
+
+void tst_Scheduler::broadcastWhoseOnlyReaderGoesIsNotConfirmed()
+{
+    // The one device to read the broadcast back from is removed while its read-back goes
+    // unanswered: nobody confirmed it.
+    Line line({{"ipc300", 1}});
+    QVERIFY(line.bus->open());
+    line.bus->setPolling(false);
+    const DeviceId id = line.bus->addDevice(families().family("ipc300"), 1);
+    line.transport->drop = [](const ModbusRequest &r) { return !r.isWrite(); };
+    QSignalSpy finished(line.bus.get(), &Bus::writeFinished);
+    line.bus->writeBroadcast("ipc300", "input_setpoint", "25");
+    QVERIFY(line.runUntil([&] { return line.transport->count(1, 0x03, 0x00D5) == 1; }, 30000));
+    line.bus->removeDevice(id);
+    QVERIFY(line.runUntil([&] { return finished.count() == 1; }, 30000));
+    const WriteOutcome outcome = finished.at(0).at(1).value<WriteOutcome>();
+    QVERIFY2(outcome.result == WriteOutcome::Result::Accepted, qPrintable(outcome.message));
+    QCOMPARE(line.transport->count(0, 0x10), 1);
 }
 
 QTEST_GUILESS_MAIN(tst_Scheduler)
