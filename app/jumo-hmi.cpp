@@ -6,6 +6,7 @@
 #include "modbuslogging.h"
 #include "quitonsignal.h"
 #include "protocol/translations.h"
+#include "jumoversion.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

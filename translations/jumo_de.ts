@@ -1468,7 +1468,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 <context>
     <name>jumo::MainWindow</name>
     <message>
-        <location filename="../ui/mainwindow.cpp" line="+63"/>
+        <location filename="../ui/mainwindow.cpp" line="+64"/>
         <location line="+4"/>
         <source>Time</source>
         <translation>Zeit</translation>
@@ -6524,7 +6524,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+31"/>
+        <location filename="../app/jumo-hmi.cpp" line="+32"/>
         <source>JUMO commissioning and monitoring HMI.</source>
         <translation>JUMO-HMI für Inbetriebnahme und Überwachung.</translation>
     </message>
@@ -6584,7 +6584,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Map-Dateien abgelehnt: %1</translation>
     </message>
     <message>
-        <location filename="../app/jumo-sim.cpp" line="+26"/>
+        <location filename="../app/jumo-sim.cpp" line="+27"/>
         <source>Simulated JUMO devices on a serial line. DEVICE is FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>Simulierte JUMO-Geräte an einer seriellen Leitung. DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
