@@ -228,7 +228,7 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::CommandLineTool</name>
     <message>
-        <location filename="../app/cli/commandlinetool.cpp" line="+19"/>
+        <location filename="../app/cli/commandlinetool.cpp" line="+20"/>
         <source>Usage: jumoctl COMMAND [options] [arguments]
 
 Commissioning and monitoring of JUMO power and process controllers over Modbus RTU.
@@ -238,6 +238,9 @@ Commands on the register maps:
   map FAMILY --csv|--json  print a family&apos;s register map
   plan FAMILY [ID...]      show the read requests for entries of a family
   decode FAMILY ID WORD... decode raw register words as an entry
+
+The serial ports of this machine:
+  ports [--json]           list them: stable by-id names, adapters, access
 
 Commands on a serial line (all take --port PATH --baud N --format 8N1|8E1|8O1|8N2
 --timeout MS --read-only --verbose); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1:
@@ -266,6 +269,9 @@ Befehle auf den Registertabellen:
   plan FAMILY [ID...]      Leseanfragen für Einträge einer Familie zeigen
   decode FAMILY ID WORD... Registerwörter als Eintrag dekodieren
 
+Die seriellen Schnittstellen dieses Rechners:
+  ports [--json]           auflisten: stabile by-id-Namen, Adapter, Zugriff
+
 Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8E1|8O1|8N2
 --timeout MS --read-only --verbose); DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1:
   scan [--from A --to B]   Geräte suchen und ihre Familie nennen
@@ -285,7 +291,7 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
 </translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+57"/>
         <source>warning: refused map file: %1</source>
         <translation>Warnung: Map-Datei abgelehnt: %1</translation>
     </message>
@@ -463,13 +469,13 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
 <context>
     <name>jumo::ConnectionBar</name>
     <message>
-        <location filename="../ui/connectionbar.cpp" line="+15"/>
-        <location line="+77"/>
+        <location filename="../ui/connectionbar.cpp" line="+21"/>
+        <location line="+106"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-67"/>
+        <location line="-95"/>
         <source>/dev/ttyUSB0</source>
         <translation>/dev/ttyUSB0</translation>
     </message>
@@ -504,7 +510,27 @@ Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8
         <translation>Getrennt</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+11"/>
+        <source>Port: %1</source>
+        <translation>Schnittstelle: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Device now: %1</source>
+        <translation>Gerätedatei jetzt: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Manufacturer: %1</source>
+        <translation>Hersteller: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Serial number: %1</source>
+        <translation>Seriennummer: %1</translation>
+    </message>
+    <message>
+        <location line="+53"/>
         <source>Disconnect</source>
         <translation>Trennen</translation>
     </message>
@@ -2543,6 +2569,107 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
 </context>
 <context>
+    <name>jumo::PortAccess</name>
+    <message>
+        <location filename="../lib/bus/portaccess.cpp" line="+138"/>
+        <source>there is no such port: is the adapter plugged in? &apos;jumoctl ports&apos; lists the serial ports.</source>
+        <translation>diese Schnittstelle gibt es nicht: Ist der Adapter eingesteckt? &apos;jumoctl ports&apos; listet die seriellen Schnittstellen auf.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no permission to reach %1.</source>
+        <translation>keine Berechtigung, %1 zu erreichen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no permission: %1 (owner %2, group %3, mode %4) is not open to a group. Ask the administrator to give it to the group dialout (a udev rule).</source>
+        <translation>keine Berechtigung: %1 (Eigentümer %2, Gruppe %3, Modus %4) ist für keine Gruppe freigegeben. Bitten Sie den Administrator, es der Gruppe dialout zu geben (eine udev-Regel).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no permission: %1 belongs to the group &apos;%2&apos;; you are in it, but this login started before you joined: log out and in again.</source>
+        <translation>keine Berechtigung: %1 gehört der Gruppe &apos;%2&apos;; Sie sind Mitglied, aber diese Anmeldung begann vor dem Beitritt: ab- und wieder anmelden.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no permission: %1 belongs to the group &apos;%2&apos;. Join it with &apos;sudo usermod -aG %2 $USER&apos;, then log out and in again.</source>
+        <translation>keine Berechtigung: %1 gehört der Gruppe &apos;%2&apos;. Treten Sie ihr mit &apos;sudo usermod -aG %2 $USER&apos; bei, dann ab- und wieder anmelden.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 is in use by another program (the system does not tell which).</source>
+        <translation>%1 wird von einem anderen Programm benutzt (das System sagt nicht, von welchem).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 (PID %2)</source>
+        <translation>%1 (PID %2)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>a process</source>
+        <translation>einem Prozess</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is in use by %2: close it there first.</source>
+        <translation>%1 wird benutzt von %2: dort zuerst schließen.</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::PortCommands</name>
+    <message>
+        <location filename="../app/cli/portcommands.cpp" line="+53"/>
+        <source>Lists the serial ports: USB adapters under their stable /dev/serial/by-id names (give that name to --port: it still finds the adapter when it comes back as another ttyUSBn), with description, serial number, the device each is now, and whether it can be opened. Pseudo-terminals are not listed.</source>
+        <translation>Listet die seriellen Schnittstellen auf: USB-Adapter unter ihren stabilen /dev/serial/by-id-Namen (diesen Namen bei --port angeben: er findet den Adapter auch, wenn er als anderes ttyUSBn wiederkommt), mit Beschreibung, Seriennummer, der aktuellen Gerätedatei und ob sie sich öffnen lässt. Pseudo-Terminals werden nicht aufgelistet.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Print a JSON array.</source>
+        <translation>Ein JSON-Array ausgeben.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>No serial ports found (pseudo-terminals are not listed; give their path to --port).</source>
+        <translation>Keine seriellen Schnittstellen gefunden (Pseudo-Terminals werden nicht aufgelistet; ihren Pfad bei --port angeben).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>device now: %1</source>
+        <translation>Gerätedatei jetzt: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>description: %1</source>
+        <translation>Beschreibung: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>manufacturer: %1</source>
+        <translation>Hersteller: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>serial number: %1</source>
+        <translation>Seriennummer: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>USB id: %1:%2</source>
+        <translation>USB-ID: %1:%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>access: ok</source>
+        <translation>Zugriff: ok</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>access: %1</source>
+        <translation>Zugriff: %1</translation>
+    </message>
+</context>
+<context>
     <name>jumo::PtyPair</name>
     <message>
         <location filename="../lib/sim/ptypair.cpp" line="+21"/>
@@ -2661,7 +2788,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RtuTransport</name>
     <message>
-        <location filename="../lib/bus/rtutransport.cpp" line="+122"/>
+        <location filename="../lib/bus/rtutransport.cpp" line="+131"/>
         <source>reply of %1 words where %2 were asked for</source>
         <translation>Antwort mit %1 Wörtern, angefragt waren %2</translation>
     </message>
@@ -2730,6 +2857,19 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+5"/>
         <source>Add checked devices</source>
         <translation>Markierte Geräte hinzufügen</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::SerialPortList</name>
+    <message>
+        <location filename="../lib/bus/serialportlist.cpp" line="+83"/>
+        <source>serial number %1</source>
+        <translation>Seriennummer %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
     </message>
 </context>
 <context>
