@@ -945,11 +945,6 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <name>jumo::LineCommands</name>
     <message>
         <location filename="../app/cli/linecommands.cpp" line="+84"/>
-        <source>Serial port, e.g. /dev/ttyUSB0 (required).</source>
-        <translation>Serielle Schnittstelle, z. B. /dev/ttyUSB0 (erforderlich).</translation>
-    </message>
-    <message>
-        <location line="+0"/>
         <source>path</source>
         <translation>Pfad</translation>
     </message>
@@ -1173,7 +1168,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Nie auf die Leitung schreiben (Leitwarten-Modus; die Systemkonfiguration kann ihn für alle festlegen).</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-13"/>
+        <source>Serial port (required): its /dev/serial/by-id name, which &apos;jumoctl ports&apos; lists, or /dev/ttyUSB0, say.</source>
+        <translation>Serielle Schnittstelle (erforderlich): ihr /dev/serial/by-id-Name, den &apos;jumoctl ports&apos; auflistet, oder etwa /dev/ttyUSB0.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
         <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
     </message>
@@ -6664,7 +6664,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+32"/>
+        <location filename="../app/jumo-hmi.cpp" line="+33"/>
         <source>JUMO commissioning and monitoring HMI.</source>
         <translation>JUMO-HMI für Inbetriebnahme und Überwachung.</translation>
     </message>
