@@ -6,6 +6,7 @@
 #include "modbuslogging.h"
 #include "quitonsignal.h"
 #include "protocol/translations.h"
+#include "jumoversion.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -23,6 +24,7 @@ int main(int argc, char *argv[])
     QApplication::setApplicationName(QStringLiteral("jumo-hmi"));
     QApplication::setApplicationVersion(QStringLiteral(JUMO_VERSION));
     QApplication::setOrganizationName(QStringLiteral("jumo"));
+    QGuiApplication::setDesktopFileName(QStringLiteral(JUMO_APP_ID));   // the window's icon and name on Wayland
     const QString language = QSettings(QStringLiteral("jumo"), QStringLiteral("jumo-hmi")).value(QStringLiteral("language")).toString();
     jumo::installTranslations(app, language.isEmpty() ? QLocale() : QLocale(language));
     jumo::quitOnTerminationSignals();   // SIGTERM closes the window properly, settings included

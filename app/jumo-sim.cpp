@@ -5,6 +5,7 @@
 #include "quitonsignal.h"
 #include "sim/simulatorline.h"
 #include "protocol/translations.h"
+#include "jumoversion.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

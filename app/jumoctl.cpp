@@ -2,6 +2,7 @@
 #include "commandlinetool.h"
 #include "quitonsignal.h"
 #include "protocol/translations.h"
+#include "jumoversion.h"
 
 #include <QCoreApplication>
 #include <QGuiApplication>

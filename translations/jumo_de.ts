@@ -295,7 +295,7 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::CommandLineTool</name>
     <message>
-        <location filename="../app/cli/commandlinetool.cpp" line="+19"/>
+        <location filename="../app/cli/commandlinetool.cpp" line="+20"/>
         <source>Usage: jumoctl COMMAND [options] [arguments]
 
 Commissioning and monitoring of JUMO power and process controllers over Modbus RTU.
@@ -305,6 +305,9 @@ Commands on the register maps:
   map FAMILY --csv|--json  print a family&apos;s register map
   plan FAMILY [ID...]      show the read requests for entries of a family
   decode FAMILY ID WORD... decode raw register words as an entry
+
+The serial ports of this machine:
+  ports [--json]           list them: stable by-id names, adapters, access
 
 Commands on a serial line (all take --port PATH --baud N --format 8N1|8E1|8O1|8N2
 --timeout MS --read-only --verbose); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1, and
@@ -334,6 +337,9 @@ Befehle auf den Registertabellen:
   plan FAMILY [ID...]      Leseanfragen für Einträge einer Familie zeigen
   decode FAMILY ID WORD... Registerwörter als Eintrag dekodieren
 
+Die seriellen Schnittstellen dieses Rechners:
+  ports [--json]           auflisten: stabile by-id-Namen, Adapter, Zugriff
+
 Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8E1|8O1|8N2
 --timeout MS --read-only --verbose); DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1, und
 seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-identify überspringt das):
@@ -354,7 +360,7 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
 </translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+67"/>
         <source>warning: refused map file: %1</source>
         <translation>Warnung: Map-Datei abgelehnt: %1</translation>
     </message>
@@ -522,13 +528,13 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
 <context>
     <name>jumo::ConnectionBar</name>
     <message>
-        <location filename="../ui/connectionbar.cpp" line="+15"/>
-        <location line="+77"/>
+        <location filename="../ui/connectionbar.cpp" line="+21"/>
+        <location line="+106"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-67"/>
+        <location line="-95"/>
         <source>/dev/ttyUSB0</source>
         <translation>/dev/ttyUSB0</translation>
     </message>
@@ -563,7 +569,27 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
         <translation>Getrennt</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+11"/>
+        <source>Port: %1</source>
+        <translation>Schnittstelle: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Device now: %1</source>
+        <translation>Gerätedatei jetzt: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Manufacturer: %1</source>
+        <translation>Hersteller: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Serial number: %1</source>
+        <translation>Seriennummer: %1</translation>
+    </message>
+    <message>
+        <location line="+53"/>
         <source>Disconnect</source>
         <translation>Trennen</translation>
     </message>
@@ -1055,11 +1081,6 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+38"/>
-        <source>Serial port, e.g. /dev/ttyUSB0 (required).</source>
-        <translation>Serielle Schnittstelle, z. B. /dev/ttyUSB0 (erforderlich).</translation>
-    </message>
-    <message>
-        <location line="+0"/>
         <source>path</source>
         <translation>Pfad</translation>
     </message>
@@ -1091,12 +1112,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <message>
         <location line="+0"/>
         <location line="+2"/>
-        <location line="+494"/>
+        <location line="+496"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-494"/>
+        <location line="-496"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
@@ -1107,12 +1128,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+494"/>
+        <location line="+496"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-480"/>
+        <location line="-482"/>
         <source>--port is required</source>
         <translation>--port ist erforderlich</translation>
     </message>
@@ -1303,13 +1324,13 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+385"/>
+        <location line="+387"/>
         <location line="+150"/>
         <source>FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="-533"/>
+        <location line="-535"/>
         <source>Entry ids.</source>
         <translation>Kennungen der Einträge.</translation>
     </message>
@@ -1355,17 +1376,22 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>--verify erwartet Adressen 1..255, nicht &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+289"/>
+        <location line="+291"/>
         <source>cannot read %1</source>
         <translation>%1 kann nicht gelesen werden</translation>
     </message>
     <message>
-        <location line="-658"/>
+        <location line="-660"/>
         <source>Never write to the line (control-room mode; the system configuration can set it for everyone).</source>
         <translation>Nie auf die Leitung schreiben (Leitwarten-Modus; die Systemkonfiguration kann ihn für alle festlegen).</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-13"/>
+        <source>Serial port (required): its /dev/serial/by-id name, which &apos;jumoctl ports&apos; lists, or /dev/ttyUSB0, say.</source>
+        <translation>Serielle Schnittstelle (erforderlich): ihr /dev/serial/by-id-Name, den &apos;jumoctl ports&apos; auflistet, oder etwa /dev/ttyUSB0.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
         <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
     </message>
@@ -1403,7 +1429,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>ID=VALUE, z. B. input_setpoint=42.5, oder ID.BIT=0|1, z. B. binary_signal_write.digital_output=1.</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+99"/>
         <source>unknown, check the device: </source>
         <translation>unbekannt, Gerät prüfen: </translation>
     </message>
@@ -1681,7 +1707,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 <context>
     <name>jumo::MainWindow</name>
     <message>
-        <location filename="../ui/mainwindow.cpp" line="+63"/>
+        <location filename="../ui/mainwindow.cpp" line="+64"/>
         <location line="+4"/>
         <source>Time</source>
         <translation>Zeit</translation>
@@ -2822,6 +2848,107 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
 </context>
 <context>
+    <name>jumo::PortAccess</name>
+    <message>
+        <location filename="../lib/bus/portaccess.cpp" line="+138"/>
+        <source>there is no such port: is the adapter plugged in? &apos;jumoctl ports&apos; lists the serial ports.</source>
+        <translation>diese Schnittstelle gibt es nicht: Ist der Adapter eingesteckt? &apos;jumoctl ports&apos; listet die seriellen Schnittstellen auf.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no permission to reach %1.</source>
+        <translation>keine Berechtigung, %1 zu erreichen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no permission: %1 (owner %2, group %3, mode %4) is not open to a group. Ask the administrator to give it to the group dialout (a udev rule).</source>
+        <translation>keine Berechtigung: %1 (Eigentümer %2, Gruppe %3, Modus %4) ist für keine Gruppe freigegeben. Bitten Sie den Administrator, es der Gruppe dialout zu geben (eine udev-Regel).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no permission: %1 belongs to the group &apos;%2&apos;; you are in it, but this login started before you joined: log out and in again.</source>
+        <translation>keine Berechtigung: %1 gehört der Gruppe &apos;%2&apos;; Sie sind Mitglied, aber diese Anmeldung begann vor dem Beitritt: ab- und wieder anmelden.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no permission: %1 belongs to the group &apos;%2&apos;. Join it with &apos;sudo usermod -aG %2 $USER&apos;, then log out and in again.</source>
+        <translation>keine Berechtigung: %1 gehört der Gruppe &apos;%2&apos;. Treten Sie ihr mit &apos;sudo usermod -aG %2 $USER&apos; bei, dann ab- und wieder anmelden.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 is in use by another program (the system does not tell which).</source>
+        <translation>%1 wird von einem anderen Programm benutzt (das System sagt nicht, von welchem).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 (PID %2)</source>
+        <translation>%1 (PID %2)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>a process</source>
+        <translation>einem Prozess</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is in use by %2: close it there first.</source>
+        <translation>%1 wird benutzt von %2: dort zuerst schließen.</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::PortCommands</name>
+    <message>
+        <location filename="../app/cli/portcommands.cpp" line="+53"/>
+        <source>Lists the serial ports: USB adapters under their stable /dev/serial/by-id names (give that name to --port: it still finds the adapter when it comes back as another ttyUSBn), with description, serial number, the device each is now, and whether it can be opened. Pseudo-terminals are not listed.</source>
+        <translation>Listet die seriellen Schnittstellen auf: USB-Adapter unter ihren stabilen /dev/serial/by-id-Namen (diesen Namen bei --port angeben: er findet den Adapter auch, wenn er als anderes ttyUSBn wiederkommt), mit Beschreibung, Seriennummer, der aktuellen Gerätedatei und ob sie sich öffnen lässt. Pseudo-Terminals werden nicht aufgelistet.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Print a JSON array.</source>
+        <translation>Ein JSON-Array ausgeben.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>No serial ports found (pseudo-terminals are not listed; give their path to --port).</source>
+        <translation>Keine seriellen Schnittstellen gefunden (Pseudo-Terminals werden nicht aufgelistet; ihren Pfad bei --port angeben).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>device now: %1</source>
+        <translation>Gerätedatei jetzt: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>description: %1</source>
+        <translation>Beschreibung: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>manufacturer: %1</source>
+        <translation>Hersteller: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>serial number: %1</source>
+        <translation>Seriennummer: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>USB id: %1:%2</source>
+        <translation>USB-ID: %1:%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>access: ok</source>
+        <translation>Zugriff: ok</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>access: %1</source>
+        <translation>Zugriff: %1</translation>
+    </message>
+</context>
+<context>
     <name>jumo::PtyPair</name>
     <message>
         <location filename="../lib/sim/ptypair.cpp" line="+21"/>
@@ -2958,7 +3085,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RtuTransport</name>
     <message>
-        <location filename="../lib/bus/rtutransport.cpp" line="+122"/>
+        <location filename="../lib/bus/rtutransport.cpp" line="+131"/>
         <source>reply of %1 words where %2 were asked for</source>
         <translation>Antwort mit %1 Wörtern, angefragt waren %2</translation>
     </message>
@@ -3027,6 +3154,19 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+5"/>
         <source>Add checked devices</source>
         <translation>Markierte Geräte hinzufügen</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::SerialPortList</name>
+    <message>
+        <location filename="../lib/bus/serialportlist.cpp" line="+83"/>
+        <source>serial number %1</source>
+        <translation>Seriennummer %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -6826,7 +6966,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+31"/>
+        <location filename="../app/jumo-hmi.cpp" line="+33"/>
         <source>JUMO commissioning and monitoring HMI.</source>
         <translation>JUMO-HMI für Inbetriebnahme und Überwachung.</translation>
     </message>
@@ -6886,7 +7026,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Map-Dateien abgelehnt: %1</translation>
     </message>
     <message>
-        <location filename="../app/jumo-sim.cpp" line="+26"/>
+        <location filename="../app/jumo-sim.cpp" line="+27"/>
         <source>Simulated JUMO devices on a serial line. DEVICE is FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>Simulierte JUMO-Geräte an einer seriellen Leitung. DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>

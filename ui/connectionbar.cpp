@@ -1,14 +1,20 @@
 #include "connectionbar.h"
 
+#include "bus/serialportlist.h"
+
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
-#include <QSerialPortInfo>
+#include <QAbstractItemView>
 #include <QToolButton>
 
 namespace jumo {
+
+namespace {
+constexpr int DeviceRole = Qt::UserRole + 1;   // the device a listed port is now
+}
 
 ConnectionBar::ConnectionBar(QWidget *parent)
     : QWidget(parent), m_port(new QComboBox(this)), m_baud(new QComboBox(this)), m_format(new QComboBox(this)),
@@ -19,7 +25,8 @@ ConnectionBar::ConnectionBar(QWidget *parent)
     m_format->setObjectName(QStringLiteral("formatBox"));
     m_button->setObjectName(QStringLiteral("connectButton"));
     m_state->setObjectName(QStringLiteral("lineState"));
-    // Pseudo-terminals and odd adapters are not listed: the path can be typed.
+    // Adapters are listed by their stable by-id names; pseudo-terminals and odd adapters
+    // are not listed: the path can be typed.
     m_port->setEditable(true);
     m_port->setMinimumWidth(220);
     m_port->lineEdit()->setPlaceholderText(tr("/dev/ttyUSB0"));
@@ -54,22 +61,50 @@ ConnectionBar::ConnectionBar(QWidget *parent)
 
 void ConnectionBar::refreshPorts()
 {
-    const QString current = m_port->currentText();
+    const QString current = port();
     m_port->clear();
-    for (const QSerialPortInfo &info : QSerialPortInfo::availablePorts())
-        m_port->addItem(info.systemLocation(), info.systemLocation());
-    m_port->setEditText(current);
+    for (const SerialPort &info : SerialPortList::available()) {
+        m_port->addItem(SerialPortList::label(info), info.location);
+        const int row = m_port->count() - 1;
+        m_port->setItemData(row, info.device, DeviceRole);
+        QStringList details{tr("Port: %1").arg(info.location), tr("Device now: %1").arg(info.device)};
+        if (!info.manufacturer.isEmpty())
+            details << tr("Manufacturer: %1").arg(info.manufacturer);
+        if (!info.serialNumber.isEmpty())
+            details << tr("Serial number: %1").arg(info.serialNumber);
+        m_port->setItemData(row, details.join(QLatin1Char('\n')), Qt::ToolTipRole);
+    }
+    // Labels are long: the list may be wider than the box.
+    m_port->view()->setMinimumWidth(m_port->view()->sizeHintForColumn(0));
+    setPort(current);
+}
+
+void ConnectionBar::setPort(const QString &port)
+{
+    // A remembered by-id name, or a device a listed adapter is now (settings from
+    // before by-id names): the listed port, so its stable name is what is kept.
+    int row = m_port->findData(port);
+    if (row < 0 && !port.isEmpty())
+        row = m_port->findData(port, DeviceRole);
+    if (row >= 0)
+        m_port->setCurrentIndex(row);
+    else
+        m_port->setEditText(port);
 }
 
 void ConnectionBar::setSettings(const QString &port, int baud, const QString &format)
 {
-    m_port->setEditText(port);
+    setPort(port);
     m_baud->setCurrentIndex(std::max(0, m_baud->findData(baud)));
     m_format->setCurrentIndex(std::max(0, m_format->findData(format)));
 }
 
 QString ConnectionBar::port() const
 {
+    // A listed port shows its label; what it stands for is its location.
+    const int row = m_port->currentIndex();
+    if (row >= 0 && m_port->itemText(row) == m_port->currentText())
+        return m_port->itemData(row).toString();
     return m_port->currentText().trimmed();
 }
 

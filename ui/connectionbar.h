@@ -1,5 +1,5 @@
-// The connection bar: serial port (listed adapters or a typed path), baud rate, data
-// format, connect/disconnect, and the line's state.
+// The connection bar: serial port (listed adapters under their stable by-id names, or a
+// typed path), baud rate, data format, connect/disconnect, and the line's state.
 #pragma once
 
 #include "bus/bussettings.h"
@@ -20,6 +20,7 @@ public:
     explicit ConnectionBar(QWidget *parent = nullptr);
 
     void setSettings(const QString &port, int baud, const QString &format);
+    // The port to open and remember: a listed adapter's by-id name, or the typed path.
     QString port() const;
     int baud() const;
     QString format() const;
@@ -32,6 +33,8 @@ signals:
     void disconnectRequested();
 
 private:
+    void setPort(const QString &port);
+
     QComboBox *m_port;
     QComboBox *m_baud;
     QComboBox *m_format;

@@ -20,6 +20,7 @@
 #include "parametersdialog.h"
 #include "scandialog.h"
 #include "trafficview.h"
+#include "jumoversion.h"
 
 #include <QApplication>
 #include <QFileDialog>
@@ -257,7 +258,7 @@ void MainWindow::buildMenus()
         QMessageBox::about(this, tr("About JUMO HMI"),
                            tr("JUMO HMI %1\nCommissioning and monitoring of JUMO power and process controllers "
                               "over Modbus RTU.")
-                                   .arg(QApplication::applicationVersion()));
+                                   .arg(QStringLiteral(JUMO_VERSION)));
     });
 }
 

@@ -4,6 +4,7 @@
 #include "linecommands.h"
 #include "mapcommands.h"
 #include "modbuslogging.h"
+#include "portcommands.h"
 
 namespace jumo {
 
@@ -25,6 +26,9 @@ QString CommandLineTool::usage() const
               "  map FAMILY --csv|--json  print a family's register map\n"
               "  plan FAMILY [ID...]      show the read requests for entries of a family\n"
               "  decode FAMILY ID WORD... decode raw register words as an entry\n"
+              "\n"
+              "The serial ports of this machine:\n"
+              "  ports [--json]           list them: stable by-id names, adapters, access\n"
               "\n"
               "Commands on a serial line (all take --port PATH --baud N --format 8N1|8E1|8O1|8N2\n"
               "--timeout MS --read-only --verbose); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1, and\n"
@@ -71,6 +75,8 @@ std::optional<int> CommandLineTool::run(const QStringList &arguments)
 
     const QString command = arguments.constFirst();
     const QStringList rest = arguments.mid(1);
+    if (command == QLatin1String("ports"))
+        return PortCommands(m_out, m_err).ports(rest);
     m_registry = std::make_unique<FamilyRegistry>(FamilyRegistry::loadDefault());
     const FamilyRegistry &registry = *m_registry;
     MapCommands maps(registry, m_out, m_err);

@@ -99,7 +99,7 @@ void LineCommands::addLineOptions(CommandParser &parser, bool namesDevices)
 {
     if (namesDevices)
         IdentityGate::addOption(parser);
-    parser.addOption({QStringLiteral("port"), tr("Serial port, e.g. /dev/ttyUSB0 (required)."), tr("path")});
+    parser.addOption({QStringLiteral("port"), tr("Serial port (required): its /dev/serial/by-id name, which 'jumoctl ports' lists, or /dev/ttyUSB0, say."), tr("path")});
     parser.addOption({QStringLiteral("baud"), tr("Baud rate: 4800, 9600, 19200 or 38400 (default 9600)."), tr("rate"),
                       QStringLiteral("9600")});
     parser.addOption({QStringLiteral("format"), tr("Data format: 8N1, 8E1, 8O1 or 8N2 (default 8N1)."), tr("format"),

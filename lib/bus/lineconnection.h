@@ -1,6 +1,7 @@
 // The connection of a line: opens its transport, notices when the port goes away (an
 // unplugged adapter, a closed pty), and opens it again by itself while the user wants
-// the line, until it is closed.
+// the line, until it is closed. The port name is a path opened anew each time, so a
+// /dev/serial/by-id link leads to the ttyUSBn the adapter is after re-plugging.
 #pragma once
 
 #include "bus/bussettings.h"

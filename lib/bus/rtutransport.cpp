@@ -1,5 +1,7 @@
 #include "bus/rtutransport.h"
 
+#include "bus/portaccess.h"
+#include "bus/serialportlist.h"
 #include "protocol/rtuframe.h"
 
 #include <QLoggingCategory>
@@ -36,7 +38,10 @@ bool RtuTransport::open(QString *error)
     }
     if (m_client->state() != QModbusDevice::UnconnectedState)
         m_client->disconnectDevice();
-    m_client->setConnectionParameter(QModbusDevice::SerialPortNameParameter, m_portName);
+    // A by-id link is followed at every open, so a re-plugged adapter is found as the
+    // ttyUSBn it is now; the device's own name keeps Qt's lock file (LCK..ttyUSB0) the
+    // one every other program on it uses.
+    m_client->setConnectionParameter(QModbusDevice::SerialPortNameParameter, SerialPortList::currentDevice(m_portName));
     m_client->setConnectionParameter(QModbusDevice::SerialBaudRateParameter, m_format.baudRate);
     m_client->setConnectionParameter(QModbusDevice::SerialDataBitsParameter, QSerialPort::Data8);
     // Qt's default parity is Even: always set it.
@@ -45,8 +50,12 @@ bool RtuTransport::open(QString *error)
     m_client->setNumberOfRetries(0);   // retries are the scheduler's, after a quiet gap
     m_client->setInterFrameDelay(0);   // the minimum: 3.5 characters, at least 2 ms
     if (!m_client->connectDevice() || m_client->state() != QModbusDevice::ConnectedState) {
-        if (error)
-            *error = m_client->errorString();
+        if (error) {
+            // Qt says "permission error" for a locked port as for a closed one: ask the
+            // system what it is and what to do.
+            const QString reason = PortAccess::inspect(m_portName).message();
+            *error = reason.isEmpty() ? m_client->errorString() : reason;
+        }
         m_client->disconnectDevice();
         m_open = false;
         return false;

@@ -1,8 +1,10 @@
 // jumoctl's map commands, run in-process and as the real executable: the CSV contract
-// scripts rely on, --help for every command, and non-zero exits with a reason on stderr.
+// scripts rely on, --help for every command, non-zero exits with a reason on stderr, the
+// port list by by-id names, and the one version of the project.
 #include "clirun.h"
 #include "commissioning/parameterset.h"
 #include "protocol/filesaver.h"
+#include "jumoversion.h"
 #include "protocol/familyregistry.h"
 #include "mapcommands.h"
 
@@ -12,6 +14,7 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace jumo;
@@ -64,6 +67,8 @@ private slots:
     void diffOfTwoFilesChecksBoth_data();
     void diffOfTwoFilesChecksBoth();
     void simulatorRefusesBadNumbers();
+    void portsByTheirStableNames();
+    void versionIsTheProjectVersion();
 };
 
 void tst_Jumoctl::initTestCase()
@@ -149,7 +154,7 @@ void tst_Jumoctl::decodeShowsErrorValues()
 void tst_Jumoctl::helpForEveryCommand_data()
 {
     QTest::addColumn<QString>("command");
-    for (const char *c : {"families", "map", "plan", "decode"})
+    for (const char *c : {"families", "map", "plan", "decode", "ports"})
         QTest::newRow(c) << c;
 }
 
@@ -286,6 +291,49 @@ void tst_Jumoctl::simulatorRefusesBadNumbers()
     QVERIFY(p.waitForFinished(30000));
     QCOMPARE(p.exitCode(), 2);
     QVERIFY(p.readAllStandardError().contains("--delay must be 0..10000 ms"));
+}
+
+void tst_Jumoctl::portsByTheirStableNames()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QVERIFY(QDir(dir.path()).mkdir("by-id"));
+    const QString device = dir.filePath("ttyUSB4");
+    QVERIFY(QFile(device).open(QIODevice::WriteOnly));
+    const QString link = dir.filePath("by-id/usb-Silicon_Labs_CP2102_0001-if00-port0");
+    QVERIFY(QFile::link(device, link));
+    qputenv("JUMO_SERIAL_BY_ID_DIR", QFile::encodeName(dir.filePath("by-id")));
+
+    const Run json = run({"ports", "--json"});
+    const Run text = run({"ports"});
+    qunsetenv("JUMO_SERIAL_BY_ID_DIR");
+    QCOMPARE(json.code, 0);
+    QJsonObject port;
+    for (const QJsonValue &value : QJsonDocument::fromJson(json.out.toUtf8()).array()) {
+        if (value.toObject().value("port").toString() == link)
+            port = value.toObject();
+    }
+    QVERIFY2(!port.isEmpty(), qPrintable(json.out));
+    QCOMPARE(port.value("device").toString(), device);
+    QCOMPARE(port.value("stable").toBool(), true);
+    QCOMPARE(port.value("access").toString(), "ok");
+    QVERIFY(port.value("message").isNull());
+    QVERIFY(port.value("holders").toArray().isEmpty());
+    for (const char *key : {"description", "manufacturer", "serial_number", "vendor_id", "product_id", "group"})
+        QVERIFY2(port.contains(key), key);
+
+    QCOMPARE(text.code, 0);
+    QVERIFY2(text.out.contains(link + "\n  device now: " + device + "\n  access: ok\n"), qPrintable(text.out));
+}
+
+void tst_Jumoctl::versionIsTheProjectVersion()
+{
+    // The executable, as a user runs it: the version CMake's project() gives.
+    QProcess p;
+    p.start(QStringLiteral(JUMOCTL_PATH), {"--version"});
+    QVERIFY(p.waitForFinished(30000));
+    QCOMPARE(p.readAllStandardOutput(), QByteArray("jumoctl " JUMO_VERSION "\n"));
+    QVERIFY(QByteArray(JUMO_VERSION).count('.') == 2);
 }
 
 QTEST_GUILESS_MAIN(tst_Jumoctl)
