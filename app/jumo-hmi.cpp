@@ -53,6 +53,10 @@ int main(int argc, char *argv[])
     parser.addOption({QStringLiteral("device"),
                       QApplication::translate("main", "A device to monitor, e.g. ipc300@1 (repeatable)."),
                       QStringLiteral("device")});
+    parser.addOption({QStringLiteral("no-identify"),
+                      QApplication::translate("main", "Trust the named families without checking the devices' identity "
+                                                      "registers (for devices that cannot report them); the write audit "
+                                                      "log records it.")});
     parser.addOption({QStringLiteral("report-startup"),
                       QApplication::translate("main", "Print on stderr when the first live value arrives.")});
     parser.addOption({QStringLiteral("verbose"),
@@ -64,6 +68,7 @@ int main(int argc, char *argv[])
     jumo::MainWindow::Options options;
     options.demo = parser.isSet(QStringLiteral("demo"));
     options.readOnly = parser.isSet(QStringLiteral("read-only"));
+    options.identify = !parser.isSet(QStringLiteral("no-identify"));
     jumo::MainWindow window(registry, options);
     if (!registry.errors().isEmpty())
         window.statusBar()->showMessage(QApplication::translate("main", "Map files refused: %1")

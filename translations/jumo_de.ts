@@ -211,53 +211,68 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::Bus</name>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+61"/>
+        <location filename="../lib/bus/bus.cpp" line="+85"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
     <message>
         <location filename="../lib/bus/requestdesk.cpp" line="+13"/>
-        <location line="+86"/>
+        <location line="+109"/>
         <source>read-only mode: %1 was not written</source>
         <translation>Nur-Lese-Modus: %1 wurde nicht geschrieben</translation>
     </message>
     <message>
-        <location line="-82"/>
-        <location line="+127"/>
+        <location line="-105"/>
+        <location line="+158"/>
         <source>unknown device</source>
         <translation>unbekanntes Gerät</translation>
     </message>
     <message>
-        <location line="-123"/>
-        <location line="+130"/>
+        <location line="-154"/>
+        <location line="+161"/>
         <source>&apos;%1&apos; is not an entry of %2</source>
         <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
     <message>
-        <location line="-108"/>
+        <location line="-147"/>
+        <source>not written: %1</source>
+        <translation>nicht geschrieben: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>not written: %1 is not yet confirmed to be a %2 (its identity is checked when it answers)</source>
+        <translation>nicht geschrieben: %1 ist noch nicht als %2 bestätigt (die Identität wird geprüft, sobald das Gerät antwortet)</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>&apos;%1&apos; needs more words than one write may carry</source>
         <translation>&apos;%1&apos; benötigt mehr Wörter, als eine Schreibanfrage umfassen darf</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="-8"/>
-        <location line="+16"/>
+        <location filename="../lib/bus/bus.cpp" line="-9"/>
+        <location line="+18"/>
         <source>the line was reopened</source>
         <translation>die Leitung wurde neu geöffnet</translation>
     </message>
     <message>
         <location filename="../lib/bus/requestdesk.cpp" line="+4"/>
-        <location line="+29"/>
-        <location line="+53"/>
+        <location line="+31"/>
+        <location line="+61"/>
         <source>not written: the line is not connected</source>
         <translation>nicht geschrieben: Die Leitung ist nicht verbunden</translation>
     </message>
     <message>
-        <location line="-21"/>
+        <location line="-29"/>
         <source>not broadcast: the line also has a %1 device at address %2, which would take the same words as something else</source>
         <translation>kein Broadcast: an der Leitung hängt auch ein Gerät der Familie %1 an Adresse %2, das dieselben Wörter als etwas anderes übernehmen würde</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
+        <source>not broadcast: %1 is not confirmed to be a %2</source>
+        <translation>nicht als Broadcast gesendet: %1 ist nicht als %2 bestätigt</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>no %1 device on this line to read a broadcast back from</source>
         <translation>kein Gerät der Familie %1 an dieser Leitung, von dem ein Broadcast zurückgelesen werden kann</translation>
     </message>
@@ -277,14 +292,24 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>nur RAM-Werte können gehalten werden, &apos;%1&apos; gehört nicht dazu</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+260"/>
+        <location line="+5"/>
+        <source>not held: %1 is not confirmed to be a %2</source>
+        <translation>nicht gehalten: %1 ist nicht als %2 bestätigt</translation>
+    </message>
+    <message>
+        <location filename="../lib/bus/bus.cpp" line="+277"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>read-only mode</source>
         <translation>Nur-Lese-Modus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device&apos;s identity is not confirmed</source>
+        <translation>die Identität des Geräts ist nicht bestätigt</translation>
     </message>
     <message>
         <location line="+76"/>
@@ -850,7 +875,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Nur-Lese-Modus: Werte werden angezeigt, es wird nichts auf das Gerät geschrieben.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>Live values</source>
         <translation>Live-Werte</translation>
     </message>
@@ -885,6 +910,21 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <source>Trend</source>
         <translation>Trend</translation>
     </message>
+    <message>
+        <location line="+21"/>
+        <source>Wrong device: %1. Its values are not shown and nothing is written to it until the device at this address is of the family it was added as.</source>
+        <translation>Falsches Gerät: %1. Seine Werte werden nicht angezeigt und nichts wird geschrieben, bis das Gerät an dieser Adresse zu der Familie gehört, als die es hinzugefügt wurde.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Checking that the device at this address is of this family.</source>
+        <translation>Es wird geprüft, ob das Gerät an dieser Adresse zu dieser Familie gehört.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Identity not confirmed: %1</source>
+        <translation>Identität nicht bestätigt: %1</translation>
+    </message>
 </context>
 <context>
     <name>jumo::DeviceTile</name>
@@ -895,12 +935,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+58"/>
-        <location line="+35"/>
+        <location line="+43"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="-21"/>
+        <location line="-29"/>
         <source>Online</source>
         <translation>Online</translation>
     </message>
@@ -918,6 +958,16 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <location line="+4"/>
         <source>Line disconnected</source>
         <translation>Leitung getrennt</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Checking identity</source>
+        <translation>Identität wird geprüft</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Wrong device since %1</source>
+        <translation>Falsches Gerät seit %1</translation>
     </message>
     <message numerus="yes">
         <location line="+8"/>
@@ -1774,7 +1824,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Meldung</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>JUMO HMI [read-only]</source>
         <translation>JUMO HMI [Nur-Lese-Modus]</translation>
     </message>
@@ -1790,12 +1840,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
     </message>
     <message>
         <location line="+6"/>
-        <location line="+204"/>
+        <location line="+207"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-199"/>
+        <location line="-202"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -1845,7 +1895,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Adresse %1: %2</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+41"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -2013,7 +2063,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>keine Fehler</translation>
     </message>
     <message>
-        <location line="+117"/>
+        <location line="+13"/>
+        <source>the family is not checked against the device (--no-identify)</source>
+        <translation>die Familie wird nicht am Gerät geprüft (--no-identify)</translation>
+    </message>
+    <message>
+        <location line="+110"/>
         <source>Scan</source>
         <translation>Suchen</translation>
     </message>
@@ -3113,7 +3168,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Adresse %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
+        <source>Address %1 answers as %2, as every %2 does whatever its own address: not a device of its own</source>
+        <translation>Adresse %1 antwortet als %2, wie jedes %2 unabhängig von seiner eigenen Adresse: kein eigenes Gerät</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>%1 at address %2</source>
         <translation>%1 an Adresse %2</translation>
     </message>
@@ -3432,6 +3492,16 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+2"/>
         <source>Not available on this device</source>
         <translation>Auf diesem Gerät nicht vorhanden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Identity not confirmed yet</source>
+        <translation>Identität noch nicht bestätigt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Another device answers at this address</source>
+        <translation>An dieser Adresse antwortet ein anderes Gerät</translation>
     </message>
     <message>
         <location line="+11"/>
@@ -7012,6 +7082,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+3"/>
+        <source>Trust the named families without checking the devices&apos; identity registers (for devices that cannot report them); the write audit log records it.</source>
+        <translation>Den angegebenen Familien vertrauen, ohne die Identitätsregister der Geräte zu prüfen (für Geräte, die sie nicht melden können); das Schreibprotokoll vermerkt es.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Print on stderr when the first live value arrives.</source>
         <translation>Auf stderr ausgeben, wann der erste Live-Wert eintrifft.</translation>
     </message>
@@ -7021,7 +7096,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Map files refused: %1</source>
         <translation>Map-Dateien abgelehnt: %1</translation>
     </message>

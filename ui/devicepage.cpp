@@ -17,7 +17,7 @@ namespace jumo {
 
 DevicePage::DevicePage(Bus *bus, int device, LiveValuesModel *values, AlarmBitsModel *alarms, QWidget *parent)
     : QWidget(parent), m_device(device), m_values(values), m_alarms(alarms), m_tabs(new QTabWidget(this)),
-      m_readOnlyBanner(new QLabel(this))
+      m_readOnlyBanner(new QLabel(this)), m_identityBanner(new QLabel(this))
 {
     const RegisterMap &map = *bus->deviceMap(device);
     setObjectName(QStringLiteral("device_%1_%2").arg(map.family).arg(bus->deviceAddress(device)));
@@ -25,6 +25,9 @@ DevicePage::DevicePage(Bus *bus, int device, LiveValuesModel *values, AlarmBitsM
     m_readOnlyBanner->setText(tr("Read-only mode: values are shown, nothing is written to the device."));
     m_readOnlyBanner->setStyleSheet(QStringLiteral("background: #fff3c0; color: #604000; padding: 4px"));
     m_readOnlyBanner->hide();
+    m_identityBanner->setObjectName(QStringLiteral("identityBanner"));
+    m_identityBanner->setWordWrap(true);
+    m_identityBanner->hide();
 
     auto *valuesTab = new QWidget(this);
     auto *valuesLayout = new QVBoxLayout(valuesTab);
@@ -61,6 +64,7 @@ DevicePage::DevicePage(Bus *bus, int device, LiveValuesModel *values, AlarmBitsM
 
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_readOnlyBanner);
+    layout->addWidget(m_identityBanner);
     layout->addWidget(m_tabs);
 }
 
@@ -71,6 +75,29 @@ void DevicePage::setReadOnly(bool readOnly)
     m_parameters->setReadOnly(readOnly);
     if (m_program)
         m_program->setReadOnly(readOnly);
+}
+
+void DevicePage::setCondition(const DeviceCondition &condition)
+{
+    switch (condition.state) {
+    case DeviceCondition::State::WrongDevice:
+        m_identityBanner->setText(tr("Wrong device: %1. Its values are not shown and nothing is written to it until "
+                                     "the device at this address is of the family it was added as.")
+                                          .arg(condition.detail));
+        m_identityBanner->setStyleSheet(QStringLiteral("background: #ffd0d0; color: #600000; padding: 4px"));
+        m_identityBanner->show();
+        break;
+    case DeviceCondition::State::Identifying:
+        m_identityBanner->setText(condition.detail.isEmpty()
+                                          ? tr("Checking that the device at this address is of this family.")
+                                          : tr("Identity not confirmed: %1").arg(condition.detail));
+        m_identityBanner->setStyleSheet(QStringLiteral("background: #ececec; color: #303030; padding: 4px"));
+        m_identityBanner->show();
+        break;
+    default:
+        m_identityBanner->hide();
+        break;
+    }
 }
 
 } // namespace jumo

@@ -2,6 +2,8 @@
 // values, LED grid, controls, parameters, program (where the family has one), trend.
 #pragma once
 
+#include "bus/bus.h"
+
 #include <QWidget>
 
 class QLabel;
@@ -26,6 +28,9 @@ public:
     DevicePage(Bus *bus, int device, LiveValuesModel *values, AlarmBitsModel *alarms, QWidget *parent = nullptr);
 
     void setReadOnly(bool readOnly);
+    // A banner says why nothing is shown or written while another device answers or the
+    // identity check is under way.
+    void setCondition(const DeviceCondition &condition);
     int device() const { return m_device; }
     LiveValuesModel *values() const { return m_values; }
     AlarmBitsModel *alarms() const { return m_alarms; }
@@ -48,6 +53,7 @@ private:
     ControlsPanel *m_program = nullptr;
     TrendView *m_trend;
     QLabel *m_readOnlyBanner;
+    QLabel *m_identityBanner;
 };
 
 } // namespace jumo

@@ -107,6 +107,14 @@ void DeviceTile::refresh()
         state = tr("Line disconnected");
         colour = QStringLiteral("#ececec");
         break;
+    case DeviceCondition::State::Identifying:
+        state = tr("Checking identity");
+        colour = QStringLiteral("#ececec");
+        break;
+    case DeviceCondition::State::WrongDevice:
+        state = tr("Wrong device since %1").arg(since);
+        colour = QStringLiteral("#ffb0b0");
+        break;
     }
     // "No alarm" only when every alarm word is known; otherwise nobody can say.
     const int alarms = m_alarms->activeAlarms();
@@ -125,6 +133,7 @@ void DeviceTile::refresh()
     m_stateText = state;
     if (m_state->text() != stateHtml)
         m_state->setText(stateHtml);
+    m_state->setToolTip(m_condition.detail);
     if (m_alarmLabel->text() != alarmText)
         m_alarmLabel->setText(alarmText);
     // An unanswering device's values are greyed as well as blanked.

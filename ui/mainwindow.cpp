@@ -77,6 +77,8 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
     const QSettings system(QSettings::SystemScope, QStringLiteral("jumo"), QStringLiteral("jumo-hmi"));
     m_readOnly = options.readOnly || system.value(QStringLiteral("readOnly"), false).toBool();
     m_bus.setReadOnly(m_readOnly);
+    if (options.identify)
+        m_bus.setIdentityCheck(m_registry.families());
     setWindowTitle(m_readOnly ? tr("JUMO HMI [read-only]") : tr("JUMO HMI"));
 
     auto *toolbar = addToolBar(tr("Connection"));
@@ -166,8 +168,11 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
             m_lastError = tr("address %1: %2").arg(record.slave).arg(record.error);
     });
     connect(&m_bus, &Bus::conditionChanged, this, [this](DeviceId id, const DeviceCondition &condition) {
-        if (const int index = indexOf(id); index >= 0)
+        if (const int index = indexOf(id); index >= 0) {
             m_devices[index].tile->setCondition(condition);
+            if (m_devices[index].page)
+                m_devices[index].page->setCondition(condition);
+        }
     });
     auto *statusTimer = new QTimer(this);
     connect(statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
@@ -351,6 +356,11 @@ bool MainWindow::addDevice(std::shared_ptr<const RegisterMap> map, quint8 addres
     if (!map || deviceTile(map->family, address))
         return false;
     const DeviceId id = m_bus.addDevice(map, address);
+    if (!m_options.identify)
+        m_auditLog->append(QJsonObject{{"device", QStringLiteral("%1@%2").arg(map->family).arg(address)},
+                                       {"entry", QString()},
+                                       {"result", QStringLiteral("identity_not_checked")},
+                                       {"message", tr("the family is not checked against the device (--no-identify)")}});
     auto *values = new LiveValuesModel(&m_bus, id, this);
     auto *alarms = new AlarmBitsModel(&m_bus, id, this);
     auto *tile = new DeviceTile(id, *map, address, values, alarms, m_overview);
@@ -390,6 +400,7 @@ DevicePage *MainWindow::ensurePage(int index) const
     if (!d.page) {
         d.page = new DevicePage(const_cast<Bus *>(&m_bus), d.id, d.values, d.alarms, m_pages);
         d.page->setReadOnly(m_readOnly);
+        d.page->setCondition(m_bus.condition(d.id));
         m_pages->addWidget(d.page);
     }
     return d.page;

@@ -39,6 +39,8 @@ public:
     {
         bool demo = false;
         bool readOnly = false;
+        // Each device is checked to be of its family when it answers (off: --no-identify).
+        bool identify = true;
         QString settingsFile;   // empty: the user's settings
         QString logFolder;      // empty: EventLog::defaultFolder()
     };

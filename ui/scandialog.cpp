@@ -39,6 +39,16 @@ ScanDialog::ScanDialog(Bus *bus, const FamilyRegistry &registry, QWidget *parent
         m_progress->setFormat(tr("address %1").arg(address));
     });
     connect(m_scanner, &DeviceScanner::found, this, [this](int address, std::shared_ptr<const RegisterMap> map) {
+        if (address == map->protocol.alwaysAnswersAddress) {
+            // Every device of the family answers there, whatever its own address: not a device.
+            auto *item = new QListWidgetItem(tr("Address %1 answers as %2, as every %2 does whatever its own address: "
+                                                "not a device of its own")
+                                                     .arg(address)
+                                                     .arg(map->name),
+                                             m_found);
+            item->setFlags(Qt::ItemIsEnabled);
+            return;
+        }
         auto *item = new QListWidgetItem(tr("%1 at address %2").arg(map->name).arg(address), m_found);
         item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
         item->setCheckState(Qt::Checked);

@@ -32,7 +32,30 @@ Bus::Bus(Clock *clock, LineConnection::TransportFactory transport, QObject *pare
     connect(&m_line, &LineConnection::stateChanged, this, &Bus::onStateChanged);
     connect(&m_line, &LineConnection::lost, this, &Bus::onLineLost);
     connect(&m_line, &LineConnection::resultReady, this, &Bus::onResult);
+    connect(&m_identities, &DeviceIdentities::changed, this, &Bus::onIdentityChanged);
     m_lineSince = QDateTime::currentDateTime();
+}
+
+void Bus::setIdentityCheck(const QList<std::shared_ptr<const RegisterMap>> &families)
+{
+    m_identities.setFamilies(families);
+}
+
+void Bus::onIdentityChanged(DeviceId id)
+{
+    const qint64 t = now();
+    switch (m_identities.state(id)) {
+    case DeviceIdentities::State::Confirmed:
+        requestCycle(id);   // its values count from now: read them at once
+        break;
+    case DeviceIdentities::State::Refused:
+        if (const QStringList changed = m_store.invalidate(id, ReadError::WrongDevice, t); !changed.isEmpty())
+            emit entriesUpdated(id, changed);
+        break;
+    case DeviceIdentities::State::Unconfirmed:
+        break;   // gone: the loss has made its values unknown already
+    }
+    emitCondition(id);
 }
 
 Bus::~Bus()
@@ -51,6 +74,7 @@ bool Bus::open()
 {
     // Opened again while connected: the old transport goes with its request.
     loseInFlight(tr("the line was reopened"));
+    m_identities.forgetAll();
     m_line.setSettings(m_settings);
     return m_line.open();
 }
@@ -60,6 +84,7 @@ void Bus::close()
     m_line.close();
     abortQueued(tr("the line was closed"));
     invalidateAll(ReadError::LineClosed);
+    m_identities.forgetAll();
 }
 
 void Bus::onStateChanged(LineState state)
@@ -85,6 +110,7 @@ void Bus::onLineLost(const QString &reason)
     qCWarning(lcBus).noquote() << reason;
     abortQueued(reason);
     invalidateAll(ReadError::LineLost);
+    m_identities.forgetAll();
     emit lineError(reason);
 }
 
@@ -129,6 +155,7 @@ void Bus::removeDevice(DeviceId id)
     m_scheduler.removeDevice(id);
     m_store.removeDevice(id);
     m_offlineSince.remove(id);
+    m_identities.removeDevice(id);
 }
 
 std::shared_ptr<const RegisterMap> Bus::deviceMap(DeviceId id) const
@@ -226,8 +253,22 @@ DeviceCondition Bus::condition(DeviceId id) const
         break;
     case LineState::Connected:
         if (isOnline(id)) {
-            c.state = DeviceCondition::State::Online;
-            c.since = m_lineSince;
+            switch (m_identities.state(id)) {
+            case DeviceIdentities::State::Confirmed:
+                c.state = DeviceCondition::State::Online;
+                c.since = m_lineSince;
+                break;
+            case DeviceIdentities::State::Unconfirmed:
+                c.state = DeviceCondition::State::Identifying;
+                c.since = m_lineSince;
+                c.detail = m_identities.reason(id);
+                break;
+            case DeviceIdentities::State::Refused:
+                c.state = DeviceCondition::State::WrongDevice;
+                c.since = m_identities.since(id);
+                c.detail = m_identities.reason(id);
+                break;
+            }
         } else {
             c.state = DeviceCondition::State::Offline;
             c.since = m_offlineSince.value(id, m_lineSince);
@@ -250,6 +291,7 @@ void Bus::setOnline(DeviceId id, bool online)
     } else {
         m_offlineSince.insert(id, QDateTime::currentDateTime());
         qCInfo(lcBus).noquote() << deviceName(id) << "offline";
+        m_identities.forget(id);   // whatever answers next is checked again
     }
     emit onlineChanged(id, online);
     emitCondition(id);
@@ -354,10 +396,12 @@ void Bus::dispatch()
             schedule(turn.wakeAtMs);
         return;
     }
-    if (turn.request.isWrite() && m_settings.readOnly) {
+    const bool untrusted = turn.request.slave != 0 && !m_identities.isTrusted(turn.device);
+    if (turn.request.isWrite() && (m_settings.readOnly || untrusted)) {
         // Never reached through the public API; this is the last line of defence.
         if (turn.transaction) {
-            turn.transaction->abort(tr("read-only mode"));
+            turn.transaction->abort(m_settings.readOnly ? tr("read-only mode")
+                                                        : tr("the device's identity is not confirmed"));
             m_scheduler.transactionFinished(turn.transaction);
         }
         if (turn.kind == Scheduler::Turn::Kind::Hold)
@@ -448,8 +492,14 @@ void Bus::applyPoll(const Scheduler::Turn &turn, const ModbusResult &result, qin
 {
     const Scheduler::PollOutcome out = m_scheduler.pollFinished(turn, result, m_settings.retries, now);
     QStringList changed;
-    if (out.store)
+    if (out.store && m_identities.isTrusted(turn.device))
         changed += m_store.store(turn.device, out.entries, turn.request.start, result.words, now);
+    else if (out.store)   // words of a device not (yet) known to be what the map says
+        changed += m_store.fail(turn.device, out.entries,
+                                m_identities.state(turn.device) == DeviceIdentities::State::Refused
+                                        ? ReadError::WrongDevice
+                                        : ReadError::Unconfirmed,
+                                0, now);
     if (out.failure)
         changed += m_store.fail(turn.device, out.entries, *out.failure, out.exceptionCode, now);
     if (!out.unavailable.isEmpty()) {
@@ -466,6 +516,8 @@ void Bus::applyPoll(const Scheduler::Turn &turn, const ModbusResult &result, qin
     }
     if (out.online)
         setOnline(turn.device, *out.online);
+    if (isOnline(turn.device))
+        m_identities.heard(turn.device);
     if (out.cycleMs) {
         if (DeviceStatistics *s = m_store.statistics(turn.device)) {
             ++s->cycles;

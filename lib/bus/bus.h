@@ -8,6 +8,7 @@
 
 #include "bus/bussettings.h"
 #include "bus/clock.h"
+#include "bus/deviceidentities.h"
 #include "bus/devicestatistics.h"
 #include "bus/entrystate.h"
 #include "bus/lineconnection.h"
@@ -43,9 +44,12 @@ struct TrafficRecord
 // Whether a device can be heard, and since when (wall-clock time, for people).
 struct DeviceCondition
 {
-    enum class State { Online, Offline, LineLost, Disconnected };
+    // Identifying: the device answers and is being checked to be of its family;
+    // WrongDevice: a device of another family answers (detail names it).
+    enum class State { Online, Offline, LineLost, Disconnected, Identifying, WrongDevice };
     State state = State::Disconnected;
     QDateTime since;
+    QString detail;
 
     bool isOnline() const { return state == State::Online; }
 };
@@ -72,6 +76,11 @@ public:
     void close();
     LineState state() const { return m_line.state(); }
     QString lastError() const { return m_line.lastError(); }
+
+    // Checks every device with the identify probes of these families (all known ones)
+    // before its values count and writes reach it; empty (the default): no checks.
+    void setIdentityCheck(const QList<std::shared_ptr<const RegisterMap>> &families);
+    const DeviceIdentities &identities() const { return m_identities; }
 
     DeviceId addDevice(std::shared_ptr<const RegisterMap> map, quint8 address);
     void removeDevice(DeviceId id);
@@ -174,6 +183,7 @@ private:
     void invalidateAll(ReadError reason);
     void abortQueued(const QString &reason);
     void setOnline(DeviceId id, bool online);
+    void onIdentityChanged(DeviceId id);
     void emitCondition(DeviceId id);
     void updateAllowance(DeviceId id);
     void finishLater(int ticket, const WriteOutcome &outcome);
@@ -196,6 +206,7 @@ private:
     int m_nextTicket = 1;
     qint64 m_wakeAtMs = -1;                // the earliest dispatch already asked for
     bool m_sweeping = false;
+    DeviceIdentities m_identities{*this};   // last: its checks use the bus while it goes
 };
 
 } // namespace jumo

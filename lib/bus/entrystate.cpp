@@ -22,6 +22,10 @@ QString EntryState::statusName() const
         return QStringLiteral("disconnected");
     case ReadError::NotAvailable:
         return QStringLiteral("unavailable");
+    case ReadError::Unconfirmed:
+        return QStringLiteral("unconfirmed");
+    case ReadError::WrongDevice:
+        return QStringLiteral("wrong_device");
     case ReadError::None:
     case ReadError::NotRead:
         break;

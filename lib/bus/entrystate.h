@@ -26,6 +26,8 @@ enum class ReadError {
     LineLost,       // the port went away
     LineClosed,     // the line was closed
     NotAvailable,   // exception 02 for this one entry: this model does not have it
+    Unconfirmed,    // the device answers, but is not yet confirmed to be of its family
+    WrongDevice,    // a device of another family answers at the address
 };
 
 struct EntryState
@@ -42,7 +44,7 @@ struct EntryState
     bool isCurrent() const { return validity == Validity::Current; }
     // "ok", "underrange", "overrange", "invalid" for a current value; "stale";
     // "timeout", "exception:N", "offline", "line_lost", "disconnected", "unavailable",
-    // "not_read" when unknown: the words of the CLI's JSON contract.
+    // "unconfirmed", "wrong_device", "not_read" when unknown: the words of the CLI's JSON contract.
     QString statusName() const;
 };
 

@@ -24,6 +24,25 @@ bool RequestDesk::mayWrite(int ticket, const RegisterMap *map, const QString &en
     return true;
 }
 
+bool RequestDesk::trusted(int ticket, DeviceId id)
+{
+    const DeviceIdentities &identities = m_bus.m_identities;
+    switch (identities.state(id)) {
+    case DeviceIdentities::State::Confirmed:
+        return true;
+    case DeviceIdentities::State::Refused:
+        m_bus.refuseLater(ticket, WriteOutcome::Result::NotSent,
+                          Bus::tr("not written: %1").arg(identities.reason(id)));
+        return false;
+    case DeviceIdentities::State::Unconfirmed:
+        break;
+    }
+    m_bus.refuseLater(ticket, WriteOutcome::Result::NotSent,
+                      Bus::tr("not written: %1 is not yet confirmed to be a %2 (its identity is checked when it answers)")
+                              .arg(m_bus.deviceName(id), m_bus.deviceMap(id) ? m_bus.deviceMap(id)->family : QString()));
+    return false;
+}
+
 int RequestDesk::write(DeviceId id, const QString &entryId, const QString &value, bool verify, Transaction::Lane lane)
 {
     const int ticket = m_bus.nextTicket();
@@ -39,6 +58,8 @@ int RequestDesk::write(DeviceId id, const QString &entryId, const QString &value
         m_bus.refuseLater(ticket, WriteOutcome::Result::Invalid, encoded.error);
         return ticket;
     }
+    if (!trusted(ticket, id))
+        return ticket;
     if (encoded.words.size() > map->protocol.effectiveMaxWriteWords()) {
         m_bus.refuseLater(ticket, WriteOutcome::Result::Invalid, Bus::tr("'%1' needs more words than one write may carry").arg(entryId));
         return ticket;
@@ -72,6 +93,8 @@ int RequestDesk::writeBits(DeviceId id, const QString &entryId, const QHash<QStr
         m_bus.refuseLater(ticket, WriteOutcome::Result::Invalid, error);
         return ticket;
     }
+    if (!trusted(ticket, id))
+        return ticket;
     if (m_bus.state() != LineState::Connected) {
         m_bus.refuseLater(ticket, WriteOutcome::Result::NotSent, Bus::tr("not written: the line is not connected"));
         return ticket;
@@ -109,6 +132,14 @@ int RequestDesk::writeBroadcast(const QString &family, const QString &entryId, c
                            "words as something else")
                                 .arg(d->map->family)
                                 .arg(d->address));
+            return ticket;
+        }
+    }
+    for (const WriteTransaction::Target &target : std::as_const(targets)) {
+        if (!m_bus.m_identities.isTrusted(target.device)) {
+            m_bus.refuseLater(ticket, WriteOutcome::Result::NotSent,
+                              Bus::tr("not broadcast: %1 is not confirmed to be a %2")
+                                      .arg(m_bus.deviceName(target.device), family));
             return ticket;
         }
     }
@@ -157,6 +188,8 @@ QString RequestDesk::setHold(DeviceId id, const QString &entryId, const QString 
     const EncodeResult encoded = ValueCodec::encode(*entry, *map, value);
     if (!encoded.ok())
         return encoded.error;
+    if (!m_bus.m_identities.isTrusted(id))
+        return Bus::tr("not held: %1 is not confirmed to be a %2").arg(m_bus.deviceName(id), map->family);
     m_bus.m_scheduler.setHold(id, entryId, encoded.words, intervalMs);
     m_bus.schedule(m_bus.now());
     return {};

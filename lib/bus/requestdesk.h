@@ -30,6 +30,8 @@ public:
 private:
     // The checks every write passes before it may be queued; a refusal is reported.
     bool mayWrite(int ticket, const RegisterMap *map, const QString &entryId);
+    // The device is confirmed to be of its family (where the bus checks); else refused.
+    bool trusted(int ticket, DeviceId id);
 
     Bus &m_bus;
 };

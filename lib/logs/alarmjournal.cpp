@@ -14,6 +14,8 @@ void AlarmJournal::onConditionChanged(DeviceId device, const DeviceCondition &co
     if (!map)
         return;
     using State = DeviceCondition::State;
+    if (condition.state == State::Identifying)
+        return;   // on the way back: "restored" once confirmed, "lost" if another device answers
     const State before = m_condition.value(device, State::Disconnected);
     m_condition.insert(device, condition.state);
     QString state;
@@ -21,7 +23,10 @@ void AlarmJournal::onConditionChanged(DeviceId device, const DeviceCondition &co
         state = QStringLiteral("lost: device not answering");
     else if (condition.state == State::LineLost && before != State::LineLost)
         state = QStringLiteral("lost: line lost");
-    else if (condition.state == State::Online && (before == State::Offline || before == State::LineLost))
+    else if (condition.state == State::WrongDevice && before != State::WrongDevice)
+        state = QStringLiteral("lost: %1").arg(condition.detail);
+    else if (condition.state == State::Online
+             && (before == State::Offline || before == State::LineLost || before == State::WrongDevice))
         state = QStringLiteral("restored");
     else if (condition.state == State::Disconnected && before == State::Online)
         state = QStringLiteral("stopped: line closed");

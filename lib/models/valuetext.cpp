@@ -39,6 +39,10 @@ QString ValueText::reason(ReadError error, int exceptionCode, const RegisterMap 
         return tr("Line disconnected");
     case ReadError::NotAvailable:
         return tr("Not available on this device");
+    case ReadError::Unconfirmed:
+        return tr("Identity not confirmed yet");
+    case ReadError::WrongDevice:
+        return tr("Another device answers at this address");
     }
     return {};
 }

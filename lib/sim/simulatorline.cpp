@@ -43,6 +43,14 @@ SimulatedDevice *SimulatorLine::addDevice(std::shared_ptr<const RegisterMap> map
     return device;
 }
 
+void SimulatorLine::removeDevice(quint8 address)
+{
+    if (SimulatedDevice *d = device(address)) {
+        m_devices.removeOne(d);
+        d->deleteLater();
+    }
+}
+
 SimulatedDevice *SimulatorLine::device(quint8 address) const
 {
     for (SimulatedDevice *d : m_devices) {

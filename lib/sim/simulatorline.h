@@ -36,6 +36,8 @@ public:
     ~SimulatorLine() override;
 
     SimulatedDevice *addDevice(std::shared_ptr<const RegisterMap> map, quint8 address);
+    // The device at this address leaves the line (unplugged, or swapped for another).
+    void removeDevice(quint8 address);
     QList<SimulatedDevice *> devices() const { return m_devices; }
     SimulatedDevice *device(quint8 address) const;
 

@@ -2,7 +2,8 @@
 // scan and live values; an alarm LED; a setpoint confirmed by read-back; read-only mode;
 // an error value shown as what it is; bits switched one at a time; a pulled line shown
 // as such everywhere; a paused trend never joins the points around the pause; stale
-// alarm words never read as a live all-clear.
+// alarm words never read as a live all-clear; a device of another family at an address is
+// refused (nothing shown, nothing written), also when it replaces the right one.
 #include "bitswitches.h"
 #include "connectionbar.h"
 #include "controlrow.h"
@@ -29,6 +30,7 @@
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QSpinBox>
 #include <QTest>
 
@@ -78,6 +80,9 @@ private slots:
     void lostAuditRecordShowsInTheStatusBar();
     void trendPauseLeavesAGap();
     void staleAlarmsAreNotShownAsLive();
+    void wrongFamilyIsRefused();
+    void swappedDeviceIsCheckedAgain();
+    void scanDoesNotListTheAddressEveryDeviceAnswers();
 
 private:
     // A window connected to the line with the IPC 300 at address 1 on its page.
@@ -107,6 +112,14 @@ std::unique_ptr<MainWindow> tst_Hmi::connectedWindow(bool readOnly, const QStrin
     window->addDevice(families().family("ipc300"), 1);
     window->showDevice("ipc300", 1);
     window->show();
+    // Nothing is written to a device before it is confirmed to be of its family.
+    const DeviceId id = window->devicePage("ipc300", 1)->device();
+    QElapsedTimer waited;
+    waited.start();
+    while (!window->bus()->identities().isTrusted(id) && waited.elapsed() < 20000)
+        QTest::qWait(20);
+    if (!window->bus()->identities().isTrusted(id))
+        return nullptr;
     return window;
 }
 
@@ -560,6 +573,129 @@ void tst_Hmi::staleAlarmsAreNotShownAsLive()
     window->showOverview();
     QTRY_COMPARE_WITH_TIMEOUT(tile->alarmText(), QString("0 active alarm(s)"), 20000);
     QVERIFY(tile->styleSheet().contains("#e3f4e3"));
+}
+
+namespace {
+
+bool hasRecord(MainWindow &window, const QString &device, const QString &stateStart)
+{
+    for (const QJsonObject &r : window.alarmJournal()->records()) {
+        if (r.value("id").toString() == "communication" && r.value("device").toString() == device
+            && r.value("state").toString().startsWith(stateStart))
+            return true;
+    }
+    return false;
+}
+
+// Write frames (0x06, 0x10) that reached this slave address.
+int writeFramesTo(const QList<QList<QVariant>> &frames, quint8 slave)
+{
+    int n = 0;
+    for (const QList<QVariant> &args : frames) {
+        const QByteArray frame = args.value(0).toByteArray();
+        if (frame.size() > 2 && quint8(frame[0]) == slave && (frame[1] == 0x06 || frame[1] == 0x10))
+            ++n;
+    }
+    return n;
+}
+
+} // namespace
+
+void tst_Hmi::wrongFamilyIsRefused()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    QSignalSpy frames(&m_sim.line(), &SimulatorLine::requestReceived);
+    // A dTRON answers at 4; the user adds it as a Quantrol.
+    QVERIFY(window->addDevice(families().family("quantrol"), 4));
+    window->showOverview();
+    DeviceTile *tile = window->deviceTile("quantrol", 4);
+    QTRY_VERIFY_WITH_TIMEOUT(tile->stateText().startsWith("Wrong device"), 20000);
+    QVERIFY2(tile->findChild<QLabel *>("deviceState")->toolTip().contains("dtron300"),
+             qPrintable(tile->findChild<QLabel *>("deviceState")->toolTip()));
+    window->showDevice("quantrol", 4);
+    DevicePage *page = window->devicePage("quantrol", 4);
+    auto *banner = page->findChild<QLabel *>("identityBanner");
+    QVERIFY(banner && banner->isVisible());
+    QVERIFY2(banner->text().contains("dtron300"), qPrintable(banner->text()));
+
+    // Polls go on, but none of the dTRON's words is shown as a Quantrol value.
+    const DeviceId id = page->device();
+    const int cycles = window->bus()->statistics(id)->cycles;
+    QTRY_VERIFY_WITH_TIMEOUT(window->bus()->statistics(id)->cycles > cycles + 1, 20000);
+    for (const RegisterEntry &e : families().family("quantrol")->entries()) {
+        const EntryState *state = window->bus()->entryState(id, e.id);
+        QVERIFY2(!state || !state->isCurrent(), qPrintable(e.id));
+    }
+    QCOMPARE(window->bus()->entryState(id, "controller_setpoint")->statusName(), QString("wrong_device"));
+
+    // A write to it is refused before anything goes out.
+    QSignalSpy finished(window->bus(), &Bus::writeFinished);
+    window->bus()->write(id, "controller_setpoint", "50");
+    QTRY_COMPARE(finished.size(), 1);
+    const auto outcome = finished.first().at(1).value<WriteOutcome>();
+    QCOMPARE(outcome.result, WriteOutcome::Result::NotSent);
+    QVERIFY2(outcome.message.contains("dtron300"), qPrintable(outcome.message));
+    QCOMPARE(writeFramesTo(frames, 4), 0);
+
+    // The journal says so; the IPC 300 at 1, of its family, is trusted.
+    QVERIFY(hasRecord(*window, "quantrol@4", "lost: quantrol@4 refused: the device at address 4 is a dtron300"));
+    window->showOverview();
+    QTRY_COMPARE(window->deviceTile("ipc300", 1)->stateText(), QString("Online"));
+}
+
+void tst_Hmi::swappedDeviceIsCheckedAgain()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    QVERIFY(window->addDevice(families().family("quantrol"), 3));
+    window->showOverview();
+    DeviceTile *tile = window->deviceTile("quantrol", 3);
+    QTRY_COMPARE_WITH_TIMEOUT(tile->stateText(), QString("Online"), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(tile->valuesText().contains("Controller, setpoint:"), 20000);
+
+    // The Quantrol is unplugged; a dTRON set to the same address takes its place.
+    m_sim.line().setFault(3, Fault{FaultMode::Dead});
+    QTRY_VERIFY_WITH_TIMEOUT(tile->stateText().startsWith("Not answering"), 30000);
+    m_sim.line().removeDevice(3);
+    m_sim.line().addDevice(families().family("dtron300"), 3);
+    m_sim.line().setFault(3, Fault{});
+    QTRY_VERIFY_WITH_TIMEOUT(tile->stateText().startsWith("Wrong device"), 30000);
+    const DeviceId id = window->devicePage("quantrol", 3)->device();
+    QCOMPARE(window->bus()->entryState(id, "controller_setpoint")->statusName(), QString("wrong_device"));
+    QVERIFY(hasRecord(*window, "quantrol@3", "lost: device not answering"));
+    QVERIFY(hasRecord(*window, "quantrol@3", "lost: quantrol@3 refused"));
+
+    // The Quantrol comes back: checked again, trusted again, values again.
+    m_sim.line().setFault(3, Fault{FaultMode::Dead});
+    QTRY_VERIFY_WITH_TIMEOUT(tile->stateText().startsWith("Not answering"), 30000);
+    m_sim.line().removeDevice(3);
+    m_sim.line().addDevice(families().family("quantrol"), 3);
+    m_sim.line().setFault(3, Fault{});
+    QTRY_COMPARE_WITH_TIMEOUT(tile->stateText(), QString("Online"), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(tile->valuesText().contains("Controller, setpoint:"), 20000);
+    QVERIFY(hasRecord(*window, "quantrol@3", "restored"));
+}
+
+void tst_Hmi::scanDoesNotListTheAddressEveryDeviceAnswers()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    QTest::mouseClick(window->findChild<QPushButton *>("scanButton"), Qt::LeftButton);
+    auto *dialog = window->findChild<ScanDialog *>("scanDialog");
+    QVERIFY(dialog);
+    dialog->findChild<QSpinBox *>("fromBox")->setValue(253);
+    dialog->findChild<QSpinBox *>("toBox")->setValue(255);
+    QTest::mouseClick(dialog->findChild<QPushButton *>("startScan"), Qt::LeftButton);
+    auto *found = dialog->findChild<QListWidget *>("foundList");
+    QTRY_VERIFY_WITH_TIMEOUT(!dialog->isScanning(), 60000);
+    // The simulated IPC 300 and TYA 200 answer at 255, as the real ones do.
+    QCOMPARE(found->count(), 1);
+    QVERIFY2(found->item(0)->text().startsWith("Address 255 answers as"), qPrintable(found->item(0)->text()));
+    QVERIFY(!(found->item(0)->flags() & Qt::ItemIsUserCheckable));
+    dialog->accept();
+    QVERIFY(!window->deviceTile("ipc300", 255));
+    QVERIFY(!window->deviceTile("tya200", 255));
 }
 
 QTEST_MAIN(tst_Hmi)
