@@ -46,6 +46,8 @@ void Bus::onIdentityChanged(DeviceId id)
     const qint64 t = now();
     switch (m_identities.state(id)) {
     case DeviceIdentities::State::Confirmed:
+        // What a device that was not this one lacked says nothing about this one.
+        m_scheduler.forgetUnavailable(id);
         requestCycle(id);   // its values count from now: read them at once
         break;
     case DeviceIdentities::State::Refused:
@@ -492,17 +494,20 @@ void Bus::applyPoll(const Scheduler::Turn &turn, const ModbusResult &result, qin
 {
     const Scheduler::PollOutcome out = m_scheduler.pollFinished(turn, result, m_settings.retries, now);
     QStringList changed;
-    if (out.store && m_identities.isTrusted(turn.device))
+    const bool trusted = m_identities.isTrusted(turn.device);
+    // Answers of a device not (yet) known to be what the map says tell nothing of it.
+    const ReadError untrusted = m_identities.state(turn.device) == DeviceIdentities::State::Refused
+            ? ReadError::WrongDevice
+            : ReadError::Unconfirmed;
+    if (out.store && trusted)
         changed += m_store.store(turn.device, out.entries, turn.request.start, result.words, now);
-    else if (out.store)   // words of a device not (yet) known to be what the map says
-        changed += m_store.fail(turn.device, out.entries,
-                                m_identities.state(turn.device) == DeviceIdentities::State::Refused
-                                        ? ReadError::WrongDevice
-                                        : ReadError::Unconfirmed,
-                                0, now);
+    else if (out.store)
+        changed += m_store.fail(turn.device, out.entries, untrusted, 0, now);
     if (out.failure)
         changed += m_store.fail(turn.device, out.entries, *out.failure, out.exceptionCode, now);
-    if (!out.unavailable.isEmpty()) {
+    if (!out.unavailable.isEmpty() && !trusted) {
+        changed += m_store.fail(turn.device, out.unavailable, untrusted, 0, now);
+    } else if (!out.unavailable.isEmpty()) {
         for (const RegisterEntry *e : out.unavailable)
             qCInfo(lcBus).noquote() << deviceName(turn.device) << e->id << formatAddress(e->address)
                                     << "is not available on this device (exception 02)";

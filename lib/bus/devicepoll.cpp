@@ -55,6 +55,14 @@ void DevicePoll::replan()
     m_blockAttempts = 0;
 }
 
+void DevicePoll::forgetUnavailable()
+{
+    if (m_unavailable.isEmpty())
+        return;
+    m_unavailable.clear();
+    replan();
+}
+
 void DevicePoll::setPollEntries(const QStringList &ids)
 {
     m_pollIds = ids;

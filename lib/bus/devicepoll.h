@@ -57,6 +57,8 @@ public:
 
     // Which entries a cycle reads (empty: every readable entry).
     void setPollEntries(const QStringList &ids);
+    // Entries isolated by exception 02 are polled again (another device may be there now).
+    void forgetUnavailable();
     QStringList pollEntries() const { return m_pollIds; }
     void setInterval(int ms) { m_info.intervalMs = std::max(0, ms); }
     // One cycle soon, polling on or off; false when there is nothing to read.

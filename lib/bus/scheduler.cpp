@@ -31,6 +31,12 @@ void Scheduler::setPollEntries(DeviceId id, const QStringList &ids)
         it->poll.setPollEntries(ids);
 }
 
+void Scheduler::forgetUnavailable(DeviceId id)
+{
+    if (const auto it = m_devices.find(id); it != m_devices.end())
+        it->poll.forgetUnavailable();
+}
+
 QStringList Scheduler::pollEntries(DeviceId id) const
 {
     return m_devices.value(id).poll.pollEntries();

@@ -58,6 +58,7 @@ public:
 
     // Which entries a poll cycle reads (empty: every readable entry).
     void setPollEntries(DeviceId id, const QStringList &ids);
+    void forgetUnavailable(DeviceId id);
     QStringList pollEntries(DeviceId id) const;
     // How often a cycle starts (0: as fast as the line allows).
     void setPollInterval(DeviceId id, int ms);

@@ -675,6 +675,8 @@ void tst_Hmi::swappedDeviceIsCheckedAgain()
     QTRY_COMPARE_WITH_TIMEOUT(tile->stateText(), QString("Online"), 30000);
     QTRY_VERIFY_WITH_TIMEOUT(tile->valuesText().contains("Controller, setpoint:"), 20000);
     QVERIFY(hasRecord(*window, "quantrol@3", "restored"));
+    // What the dTRON lacked (exception 02) is read from the Quantrol again.
+    QTRY_VERIFY_WITH_TIMEOUT(window->bus()->entryState(id, "actual_value_filtered")->isCurrent(), 20000);
 }
 
 void tst_Hmi::scanDoesNotListTheAddressEveryDeviceAnswers()
