@@ -26,7 +26,8 @@ int main(int argc, char *argv[])
     QApplication::setOrganizationName(QStringLiteral("jumo"));
     QGuiApplication::setDesktopFileName(QStringLiteral(JUMO_APP_ID));   // the window's icon and name on Wayland
     const QString language = QSettings(QStringLiteral("jumo"), QStringLiteral("jumo-hmi")).value(QStringLiteral("language")).toString();
-    jumo::installTranslations(app, language.isEmpty() ? QLocale() : QLocale(language));
+    // Texts and numbers in one language: the one chosen in the Language menu, or the system's.
+    jumo::useLanguage(app, language.isEmpty() ? QLocale::system() : QLocale(language));
     jumo::quitOnTerminationSignals();   // SIGTERM closes the window properly, settings included
 
     QCommandLineParser parser;

@@ -1,6 +1,7 @@
 // Writes the user-visible texts of the built-in register maps as QT_TRANSLATE_NOOP
 // lines, so lupdate finds them: labels, bit labels, enum values, section titles,
-// preconditions, exception meanings and error value wordings (context "jumo::maps").
+// preconditions, exception meanings, error value wordings and what decides a unit set on
+// the device (context "jumo::maps").
 #include "protocol/familyregistry.h"
 
 #include <QCoreApplication>
@@ -28,6 +29,8 @@ int main(int argc, char *argv[])
     };
     for (const auto &map : registry.families()) {
         for (const QString &t : map->exceptions)
+            add(t);
+        for (const QString &t : map->configuredUnits)
             add(t);
         if (map->errorValues) {
             add(map->errorValues->underrange);

@@ -211,7 +211,7 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::Bus</name>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+85"/>
+        <location filename="../lib/bus/bus.cpp" line="+87"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
@@ -422,12 +422,12 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
 <context>
     <name>jumo::CommissioningReport</name>
     <message>
-        <location filename="../lib/commissioning/commissioningreport.cpp" line="+34"/>
+        <location filename="../lib/commissioning/commissioningreport.cpp" line="+35"/>
         <source>not read</source>
         <translation>nicht gelesen</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
@@ -622,7 +622,7 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
 <context>
     <name>jumo::ControlRow</name>
     <message>
-        <location filename="../ui/controlrow.cpp" line="+55"/>
+        <location filename="../ui/controlrow.cpp" line="+58"/>
         <source>Precondition: %1</source>
         <translation>Voraussetzung: %1</translation>
     </message>
@@ -637,7 +637,7 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
         <translation>Im RAM gespeichert: geht beim Ausschalten des Geräts verloren.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>send the command &quot;%1&quot;</source>
         <translation>den Befehl &quot;%1&quot; senden</translation>
     </message>
@@ -657,7 +657,7 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>Write</source>
         <translation>Schreiben</translation>
     </message>
@@ -677,7 +677,7 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
         <translation>die Vorgabe für %1 aufheben</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+32"/>
         <source>Pending: %1</source>
         <translation>Ausstehend: %1</translation>
     </message>
@@ -697,7 +697,7 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
         <translation>Unbekannt, bitte am Gerät prüfen: %1</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>Write-only: the lamps show the states the device reports elsewhere.</source>
         <translation>Nur schreibbar: Die Lampen zeigen die Zustände, die das Gerät an anderer Stelle meldet.</translation>
     </message>
@@ -712,7 +712,12 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
         <translation>Gerät: %1</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+56"/>
+        <source>write %1 = %2</source>
+        <translation>%1 = %2 schreiben</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>switch &quot;%1&quot; on</source>
         <translation>„%1“ einschalten</translation>
     </message>
@@ -732,17 +737,12 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
         <translation>%1 aus</translation>
     </message>
     <message>
-        <location line="-72"/>
+        <location line="-79"/>
         <source>Read-only mode: nothing is written to the devices.</source>
         <translation>Nur-Lese-Modus: Es wird nichts auf die Geräte geschrieben.</translation>
     </message>
     <message>
-        <location line="+34"/>
-        <source>write %1 = %2 %3</source>
-        <translation>%1 = %2 %3 schreiben</translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+48"/>
         <source>Confirm write</source>
         <translation>Schreiben bestätigen</translation>
     </message>
@@ -875,7 +875,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Nur-Lese-Modus: Werte werden angezeigt, es wird nichts auf das Gerät geschrieben.</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Live values</source>
         <translation>Live-Werte</translation>
     </message>
@@ -934,43 +934,43 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Adresse %1</translation>
     </message>
     <message>
-        <location line="+58"/>
-        <location line="+43"/>
+        <location line="+59"/>
+        <location line="+78"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="-29"/>
+        <location line="-21"/>
         <source>Online</source>
         <translation>Online</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>Not answering since %1</source>
         <translation>Antwortet nicht seit %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>Line lost since %1</source>
         <translation>Leitung verloren seit %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>Line disconnected</source>
         <translation>Leitung getrennt</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>Checking identity</source>
         <translation>Identität wird geprüft</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>Wrong device since %1</source>
         <translation>Falsches Gerät seit %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+8"/>
+        <location line="+9"/>
         <source>%n active alarm(s)</source>
         <translation>
             <numerusform>%n aktiver Alarm</numerusform>
@@ -1104,7 +1104,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LedGrid</name>
     <message numerus="yes">
-        <location filename="../ui/ledgrid.cpp" line="+82"/>
+        <location filename="../ui/ledgrid.cpp" line="+87"/>
         <source>%n active alarm(s)</source>
         <translation>
             <numerusform>%n aktiver Alarm</numerusform>
@@ -1709,17 +1709,27 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 <context>
     <name>jumo::LiveValuesModel</name>
     <message>
-        <location filename="../lib/models/livevaluesmodel.cpp" line="+98"/>
+        <location filename="../lib/models/livevaluesmodel.cpp" line="+111"/>
+        <source>Value: %1</source>
+        <translation>Wert: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>%1, register %2, %3</source>
         <translation>%1, Register %2, %3</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>Status: %1</source>
+        <translation>Status: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Last known value: %1, %2 s ago</source>
         <translation>Letzter bekannter Wert: %1, vor %2 s</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
@@ -1757,7 +1767,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 <context>
     <name>jumo::MainWindow</name>
     <message>
-        <location filename="../ui/mainwindow.cpp" line="+64"/>
+        <location filename="../ui/mainwindow.cpp" line="+66"/>
         <location line="+4"/>
         <source>Time</source>
         <translation>Zeit</translation>
@@ -1840,32 +1850,32 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
     </message>
     <message>
         <location line="+6"/>
-        <location line="+207"/>
+        <location line="+221"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-202"/>
+        <location line="-212"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Traffic and statistics</source>
         <translation>Datenverkehr und Statistik</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Alarm journal</source>
         <translation>Alarmjournal</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Write audit log</source>
         <translation>Schreibprotokoll</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>Add...</source>
         <translation>Hinzufügen...</translation>
     </message>
@@ -1880,7 +1890,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Entfernen</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+46"/>
         <source>READ-ONLY</source>
         <translation>NUR LESEN</translation>
     </message>
@@ -1890,12 +1900,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Nicht protokolliert: %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>address %1: %2</source>
         <translation>Adresse %1: %2</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -2040,7 +2050,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Getrennt</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>Line: %1</source>
         <translation>Leitung: %1</translation>
     </message>
@@ -2068,7 +2078,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>die Familie wird nicht am Gerät geprüft (--no-identify)</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+137"/>
         <source>Scan</source>
         <translation>Suchen</translation>
     </message>
@@ -2086,7 +2096,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::MapCommands</name>
     <message>
-        <location filename="../app/cli/mapcommands.cpp" line="+126"/>
+        <location filename="../app/cli/mapcommands.cpp" line="+133"/>
         <source>unknown family &apos;%1&apos; (known: %2)</source>
         <translation>unbekannte Gerätefamilie &apos;%1&apos; (bekannt: %2)</translation>
     </message>
@@ -2109,7 +2119,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Map-Datei abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Prints the register map of a device family.</source>
         <translation>Gibt die Registertabelle einer Gerätefamilie aus.</translation>
     </message>
@@ -2134,7 +2144,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>jumoctl map: genau eine der Optionen --csv und --json angeben</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+52"/>
         <source>Shows the read requests that poll the given entries (all readable entries if none).</source>
         <translation>Zeigt die Leseanfragen, mit denen die angegebenen Einträge abgefragt werden (ohne Angabe alle lesbaren Einträge).</translation>
     </message>
@@ -2297,12 +2307,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Familienkennung &apos;%1&apos; darf nur aus Kleinbuchstaben, Ziffern und &apos;_&apos; bestehen</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+20"/>
         <source>&apos;entries&apos; must be a non-empty array</source>
         <translation>&apos;entries&apos; muss ein nicht leeres Array sein</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+25"/>
         <source>&apos;%1&apos; is not a readable entry</source>
         <translation>&apos;%1&apos; ist kein lesbarer Eintrag</translation>
     </message>
@@ -2352,7 +2362,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;errorValues&apos; muss ein Objekt oder null sein</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+57"/>
         <source>entry #%1</source>
         <translation>Eintrag #%1</translation>
     </message>
@@ -2367,14 +2377,15 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Eintrag #%1 (%2)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location line="+294"/>
+        <location line="-208"/>
+        <location line="+209"/>
+        <location line="+302"/>
         <location filename="../lib/protocol/overlapcheck.cpp" line="+70"/>
         <source>entry &apos;%1&apos; (%2)</source>
         <translation>Eintrag &apos;%1&apos; (%2)</translation>
     </message>
     <message>
-        <location line="-284"/>
+        <location line="-292"/>
         <source>id must be lower case letters, digits and &apos;_&apos;</source>
         <translation>die Kennung darf nur aus Kleinbuchstaben, Ziffern und &apos;_&apos; bestehen</translation>
     </message>
@@ -2409,7 +2420,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;bytes&apos; ist nur für Texte zulässig</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+20"/>
         <source>&apos;min&apos; is greater than &apos;max&apos;</source>
         <translation>&apos;min&apos; ist größer als &apos;max&apos;</translation>
     </message>
@@ -2424,12 +2435,22 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>ein Bedienelement benötigt einen schreibbaren Eintrag</translation>
     </message>
     <message>
-        <location line="-169"/>
+        <location line="-221"/>
         <source>address range %1..%2 is empty</source>
         <translation>Adressbereich %1..%2 ist leer</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-87"/>
+        <source>&apos;shortName&apos; must be 1 to 24 characters, not &apos;%1&apos;</source>
+        <translation>&apos;shortName&apos; muss 1 bis 24 Zeichen lang sein, nicht &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>&apos;configuredUnit&apos; names &apos;%1&apos;, which &apos;configuredUnits&apos; does not define</source>
+        <translation>&apos;configuredUnit&apos; nennt &apos;%1&apos;, das &apos;configuredUnits&apos; nicht definiert</translation>
+    </message>
+    <message>
+        <location line="+62"/>
         <source>&apos;alwaysAnswersAddress&apos; must be 1..247 or 255, not %1</source>
         <translation>&apos;alwaysAnswersAddress&apos; muss 1..247 oder 255 sein, nicht %1</translation>
     </message>
@@ -2449,12 +2470,47 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;answers&apos; kann nur true sein</translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+52"/>
+        <source>&apos;configuredUnits&apos; must be an object mapping ids to what decides the unit</source>
+        <translation>&apos;configuredUnits&apos; muss ein Objekt sein, das IDs dem zuordnet, was die Einheit bestimmt</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&apos;%1&apos; is no id (lower case letters, digits and &apos;_&apos;)</source>
+        <translation>&apos;%1&apos; ist keine ID (Kleinbuchstaben, Ziffern und &apos;_&apos;)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1&apos; needs a text that says what decides the unit</source>
+        <translation>&apos;%1&apos; braucht einen Text, der sagt, was die Einheit bestimmt</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>&apos;decimals&apos; and &apos;significantDigits&apos; are only for floats</source>
+        <translation>&apos;decimals&apos; und &apos;significantDigits&apos; gibt es nur für Gleitkommazahlen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>give &apos;decimals&apos; or &apos;significantDigits&apos;, not both</source>
+        <translation>&apos;decimals&apos; oder &apos;significantDigits&apos; angeben, nicht beides</translation>
+    </message>
+    <message>
+        <location line="+73"/>
         <source>&apos;words&apos; is only for reserved blocks</source>
         <translation>&apos;words&apos; gilt nur für reservierte Blöcke</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+6"/>
+        <source>give &apos;unit&apos; or &apos;configuredUnit&apos;, not both</source>
+        <translation>&apos;unit&apos; oder &apos;configuredUnit&apos; angeben, nicht beides</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>a unit is only for numbers</source>
+        <translation>eine Einheit gibt es nur für Zahlen</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>an entry cannot be an alias of itself</source>
         <translation>ein Eintrag kann kein Alias seiner selbst sein</translation>
     </message>
@@ -3048,7 +3104,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RegisterMap</name>
     <message>
-        <location filename="../lib/protocol/registermap.cpp" line="+142"/>
+        <location filename="../lib/protocol/registermap.cpp" line="+170"/>
         <source>exception %1 (not documented for this family)</source>
         <translation>Exception-Code %1 (für diese Gerätefamilie nicht dokumentiert)</translation>
     </message>
@@ -3302,7 +3358,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::TrendView</name>
     <message>
-        <location filename="../ui/trendview.cpp" line="+46"/>
+        <location filename="../ui/trendview.cpp" line="+51"/>
         <source>1 minute</source>
         <translation>1 Minute</translation>
     </message>
@@ -3454,7 +3510,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ValueText</name>
     <message>
-        <location filename="../lib/models/valuetext.cpp" line="+27"/>
+        <location filename="../lib/models/valuetext.cpp" line="+29"/>
+        <source>(configured)</source>
+        <translation>(konfiguriert)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Unit as configured on the device: %1</source>
+        <translation>Einheit wie am Gerät konfiguriert: %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
@@ -3721,6 +3787,26 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+1"/>
         <source>Write access to parameter denied</source>
         <translation>Schreibzugriff auf Parameter verweigert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the unit of the value the limit comparator watches, as configured on the device (the process value&apos;s by default)</source>
+        <translation>die Einheit des Werts, den der Grenzwertkomparator überwacht, wie am Gerät konfiguriert (standardmäßig die des Istwerts)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>as the math formula is configured on the device (its inputs and scaling)</source>
+        <translation>wie die Mathematikformel am Gerät konfiguriert ist (ihre Eingänge und Skalierung)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the process value&apos;s unit, set with the analog input&apos;s configuration on the device: °C or °F for a thermocouple or RTD, the scaled unit of a standard signal</source>
+        <translation>die Einheit des Istwerts, mit der Konfiguration des Analogeingangs am Gerät eingestellt: °C oder °F bei Thermoelement oder Widerstandsthermometer, die skalierte Einheit bei einem Einheitssignal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>process value units per minute or per hour, as the ramp function is configured on the device</source>
+        <translation>Istwerteinheiten pro Minute oder pro Stunde, wie die Rampenfunktion am Gerät konfiguriert ist</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4814,6 +4900,21 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+1"/>
+        <source>the quantity the alarm monitors, as configured on the device: V, A, W, kW, Ω, °C or °F (5.1.2: &apos;depending on what is being monitored&apos;)</source>
+        <translation>die Größe, die der Alarm überwacht, wie am Gerät konfiguriert: V, A, W, kW, Ω, °C oder °F (5.1.2: „je nachdem, was überwacht wird“)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the measuring range the external current sensor is configured for: mA or A (5.2.1)</source>
+        <translation>der Messbereich, für den der externe Stromsensor konfiguriert ist: mA oder A (5.2.1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the standard signal the external current sensor is configured for: 0-20 mA, 4-20 mA or customer-specific (5.2.1)</source>
+        <translation>das Einheitssignal, für das der externe Stromsensor konfiguriert ist: 0-20 mA, 4-20 mA oder kundenspezifisch (5.2.1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Measuring range underflow (underrange)</source>
         <translation>Messbereichsunterschreitung (Underrange)</translation>
     </message>
@@ -5589,6 +5690,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+1"/>
+        <source>the input type configured on the device: V, mA or Ω (4.2: &apos;Analog input [V], [mA] or [Ohm]&apos;)</source>
+        <translation>die am Gerät konfigurierte Eingangsart: V, mA oder Ω (4.2: „Analogeingang [V], [mA] oder [Ohm]“)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>4.2 Process data</source>
         <translation>4.2 Prozessdaten</translation>
     </message>
@@ -6036,6 +6142,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+1"/>
         <source>Instruction cannot be carried out at this time, try again</source>
         <translation>Befehl kann zurzeit nicht ausgeführt werden, bitte erneut versuchen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the quantity the alarm monitors, as configured on the device: V, A, W, kW, Ω, °C or °F (5.8: &apos;depending on the monitored value&apos;)</source>
+        <translation>die Größe, die der Alarm überwacht, wie am Gerät konfiguriert: V, A, W, kW, Ω, °C oder °F (5.8: „abhängig vom überwachten Wert“)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -7036,7 +7147,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+33"/>
+        <location filename="../app/jumo-hmi.cpp" line="+34"/>
         <source>JUMO commissioning and monitoring HMI.</source>
         <translation>JUMO-HMI für Inbetriebnahme und Überwachung.</translation>
     </message>

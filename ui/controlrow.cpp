@@ -6,6 +6,8 @@
 #include "models/valuetext.h"
 #include "models/writecommand.h"
 #include "protocol/valuecodec.h"
+#include "protocol/valueformat.h"
+#include "flowlayout.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -49,6 +51,7 @@ ControlRow::ControlRow(Bus *bus, int device, const RegisterMap &map, const Regis
     auto *title = new QLabel(QStringLiteral("<b>%1</b> <span style='color:gray'>%2</span>")
                                      .arg(translatedLabel(entry.label).toHtmlEscaped(), formatAddress(entry.address)),
                              this);
+    title->setWordWrap(true);
     layout->addWidget(title, 0, 0, 1, 3);
     QStringList hints;
     if (!entry.precondition.isEmpty())
@@ -64,6 +67,8 @@ ControlRow::ControlRow(Bus *bus, int device, const RegisterMap &map, const Regis
         layout->addWidget(hint, 1, 0, 1, 3);
     }
 
+    // Command buttons flow onto as many rows as the page's width needs.
+    auto *commands = new FlowLayout;
     auto *inputs = new QHBoxLayout;
     if (entry.type == ValueType::Bitfield && entry.control == QLatin1String("command")) {
         for (const BitDefinition &b : entry.bits) {
@@ -74,7 +79,7 @@ ControlRow::ControlRow(Bus *bus, int device, const RegisterMap &map, const Regis
             connect(button, &QPushButton::clicked, this, [this, b] {
                 write(b.id, tr("send the command \"%1\"").arg(translatedLabel(b.label)));
             });
-            inputs->addWidget(button);
+            commands->addWidget(button);
             m_buttons << button;
         }
     } else if (entry.type == ValueType::Bitfield) {
@@ -96,12 +101,14 @@ ControlRow::ControlRow(Bus *bus, int device, const RegisterMap &map, const Regis
         m_edit->setObjectName(QStringLiteral("input_") + entry.id);
         QString range;
         if (entry.minimum || entry.maximum)
-            range = tr("%1 to %2").arg(entry.minimum ? ValueCodec::formatFloat(*entry.minimum) : QStringLiteral("..."),
-                                       entry.maximum ? ValueCodec::formatFloat(*entry.maximum) : QStringLiteral("..."));
-        m_edit->setPlaceholderText(range.isEmpty() ? entry.unit : range + QLatin1Char(' ') + entry.unit);
+            range = tr("%1 to %2").arg(entry.minimum ? ValueFormat::limit(*entry.minimum, entry) : QStringLiteral("..."),
+                                       entry.maximum ? ValueFormat::limit(*entry.maximum, entry) : QStringLiteral("..."));
+        m_edit->setPlaceholderText(range.isEmpty() ? entry.unit : ValueFormat::joinUnit(range, entry.unit));
         connect(m_edit, &QLineEdit::returnPressed, this, &ControlRow::writeInput);
         inputs->addWidget(m_edit);
-        auto *unit = new QLabel(entry.unit, this);
+        auto *unit = new QLabel(ValueText::unit(entry), this);
+        unit->setObjectName(QStringLiteral("unit_") + entry.id);
+        unit->setToolTip(ValueText::unitNote(entry, map));
         inputs->addWidget(unit);
     }
     if (m_buttons.isEmpty() && !(m_switches && m_switches->switchesSingleBits())) {
@@ -119,9 +126,19 @@ ControlRow::ControlRow(Bus *bus, int device, const RegisterMap &map, const Regis
         inputs->addWidget(m_restoreButton);
     }
     inputs->addStretch();
-    layout->addLayout(inputs, 2, 0, 1, 3);
-    layout->addWidget(m_current, 3, 0);
-    layout->addWidget(m_state, 3, 1, 1, 2);
+    if (m_buttons.isEmpty()) {
+        delete commands;
+        layout->addLayout(inputs, 2, 0, 1, 3);
+    } else {
+        layout->addLayout(commands, 2, 0, 1, 3);
+        delete inputs;
+    }
+    // The device's value and the last write's state each get the row's whole width.
+    m_current->setWordWrap(true);
+    layout->addWidget(m_current, 3, 0, 1, 3);
+    layout->addWidget(m_state, 4, 0, 1, 3);
+    m_state->hide();   // until there is a write to speak of
+    layout->setColumnStretch(2, 1);
 
     connect(m_command, &WriteCommand::stateChanged, this,
             [this](WriteCommand::State state, const QString &message) { showWriteState(int(state), message); });
@@ -155,6 +172,7 @@ void ControlRow::showWriteState(int state, const QString &message)
         m_state->clear();
         break;
     }
+    m_state->setVisible(!m_state->text().isEmpty());
     if (m_switches)
         m_switches->setBusy(WriteCommand::State(state) == WriteCommand::State::Pending);
 }
@@ -227,10 +245,16 @@ QString ControlRow::stateText() const
 
 void ControlRow::writeInput()
 {
-    const QString value = inputValue();
+    QString value = inputValue();
     if (value.isEmpty())
         return;
-    write(value, tr("write %1 = %2 %3").arg(translatedLabel(m_entry.label), value, m_entry.unit));
+    const QString typed = value;
+    // A float as the locale writes it ("42,5"), or with a dot; the codec takes a dot.
+    if (m_edit && m_entry.type == ValueType::Float) {
+        if (const std::optional<QString> number = ValueFormat::parseNumber(value))
+            value = *number;
+    }
+    write(value, tr("write %1 = %2").arg(translatedLabel(m_entry.label), ValueFormat::joinUnit(typed, m_entry.unit)));
 }
 
 bool ControlRow::confirm(const QString &description) const
@@ -252,6 +276,7 @@ void ControlRow::write(const QString &value, const QString &description)
     if (!check.ok()) {
         m_state->setStyleSheet(QStringLiteral("color: #b00000"));
         m_state->setText(tr("Not written: %1").arg(check.error));
+        m_state->show();
         return;
     }
     if (!m_readOnly && !confirm(description))

@@ -25,6 +25,7 @@ ControlsPanel::ControlsPanel(Bus *bus, int device, const RegisterMap &map, const
             group = e.group;
             const QString title = QCoreApplication::translate("jumo::maps", group.toUtf8().constData());
             auto *heading = new QLabel(QStringLiteral("<h3>%1</h3>").arg(title.toHtmlEscaped()), inner);
+            heading->setWordWrap(true);
             list->addWidget(heading);
         }
         auto *row = new ControlRow(bus, device, map, e, values, inner);
@@ -39,6 +40,8 @@ ControlsPanel::ControlsPanel(Bus *bus, int device, const RegisterMap &map, const
     auto *scroll = new QScrollArea(this);
     scroll->setWidget(inner);
     scroll->setWidgetResizable(true);
+    // Every row wraps or flows, so the page never needs a horizontal scroll bar.
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(scroll);

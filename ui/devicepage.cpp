@@ -24,6 +24,7 @@ DevicePage::DevicePage(Bus *bus, int device, LiveValuesModel *values, AlarmBitsM
     m_readOnlyBanner->setObjectName(QStringLiteral("readOnlyBanner"));
     m_readOnlyBanner->setText(tr("Read-only mode: values are shown, nothing is written to the device."));
     m_readOnlyBanner->setStyleSheet(QStringLiteral("background: #fff3c0; color: #604000; padding: 4px"));
+    m_readOnlyBanner->setWordWrap(true);
     m_readOnlyBanner->hide();
     m_identityBanner->setObjectName(QStringLiteral("identityBanner"));
     m_identityBanner->setWordWrap(true);

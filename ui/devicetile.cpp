@@ -25,6 +25,9 @@ DeviceTile::DeviceTile(DeviceId device, const RegisterMap &map, quint8 address, 
     m_title->setWordWrap(true);
     m_state->setObjectName(QStringLiteral("deviceState"));
     m_keyValues->setObjectName(QStringLiteral("keyValues"));
+    m_keyValues->setWordWrap(true);
+    m_state->setWordWrap(true);
+    m_alarmLabel->setWordWrap(true);
     m_alarmLabel->setObjectName(QStringLiteral("alarmCount"));
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_title);
@@ -75,9 +78,7 @@ void DeviceTile::refresh()
         const RegisterEntry *e = m_map.entry(id);
         const QModelIndex index = m_values->index(row, LiveValuesModel::ValueColumn);
         const auto validity = Validity(index.data(LiveValuesModel::ValidityRole).toInt());
-        QString value = index.data().toString();
-        if (validity != Validity::Unknown && !e->unit.isEmpty())
-            value += QLatin1Char(' ') + e->unit;
+        QString value = index.data(LiveValuesModel::ValueWithUnitRole).toString();
         if (validity == Validity::Stale)
             value += QLatin1Char(' ') + tr("(stale)");
         lines << QStringLiteral("%1: %2").arg(QCoreApplication::translate("jumo::maps", e->label.toUtf8().constData()),
@@ -87,42 +88,29 @@ void DeviceTile::refresh()
     if (m_keyValues->text() != text)
         m_keyValues->setText(text);
 
-    const QString since = m_condition.since.isValid() ? QLocale().toString(m_condition.since.time(), QStringLiteral("HH:mm:ss"))
-                                                      : QString();
-    QString state;
+    const QString state = conditionText(m_condition);
     QString colour;
     switch (m_condition.state) {
     case DeviceCondition::State::Online:
-        state = tr("Online");
         break;
     case DeviceCondition::State::Offline:
-        state = tr("Not answering since %1").arg(since);
-        colour = QStringLiteral("#d9d9d9");
-        break;
     case DeviceCondition::State::LineLost:
-        state = tr("Line lost since %1").arg(since);
         colour = QStringLiteral("#d9d9d9");
         break;
     case DeviceCondition::State::Disconnected:
-        state = tr("Line disconnected");
         colour = QStringLiteral("#ececec");
         break;
     case DeviceCondition::State::Identifying:
-        state = tr("Checking identity");
         colour = QStringLiteral("#ececec");
         break;
     case DeviceCondition::State::WrongDevice:
-        state = tr("Wrong device since %1").arg(since);
         colour = QStringLiteral("#ffb0b0");
         break;
     }
-    // "No alarm" only when every alarm word is known; otherwise nobody can say.
     const int alarms = m_alarms->activeAlarms();
     const bool known = m_alarms->alarmsKnown() && m_condition.isOnline();
     const bool stale = known && m_alarms->alarmsStale();
-    QString alarmText = known ? tr("%n active alarm(s)", nullptr, alarms) : tr("Alarms unknown");
-    if (stale)
-        alarmText += QLatin1Char(' ') + tr("(stale)");
+    const QString alarmText = alarmsText(m_condition, *m_alarms);
     // Green only for a live "no alarm".
     if (colour.isEmpty())
         colour = alarms && known ? QStringLiteral("#ffd8d8")
@@ -141,6 +129,37 @@ void DeviceTile::refresh()
     const QString sheet = QStringLiteral("jumo--DeviceTile { background: %1; }").arg(colour);
     if (styleSheet() != sheet)   // re-styling is costly: only when the colour changes
         setStyleSheet(sheet);
+}
+
+QString DeviceTile::conditionText(const DeviceCondition &condition)
+{
+    const QString since = condition.since.isValid() ? QLocale().toString(condition.since.time(), QStringLiteral("HH:mm:ss"))
+                                                    : QString();
+    switch (condition.state) {
+    case DeviceCondition::State::Online:
+        return tr("Online");
+    case DeviceCondition::State::Offline:
+        return tr("Not answering since %1").arg(since);
+    case DeviceCondition::State::LineLost:
+        return tr("Line lost since %1").arg(since);
+    case DeviceCondition::State::Disconnected:
+        return tr("Line disconnected");
+    case DeviceCondition::State::Identifying:
+        return tr("Checking identity");
+    case DeviceCondition::State::WrongDevice:
+        return tr("Wrong device since %1").arg(since);
+    }
+    return {};
+}
+
+QString DeviceTile::alarmsText(const DeviceCondition &condition, const AlarmBitsModel &alarms)
+{
+    // "No alarm" only when every alarm word is known; otherwise nobody can say.
+    const bool known = alarms.alarmsKnown() && condition.isOnline();
+    QString text = known ? tr("%n active alarm(s)", nullptr, alarms.activeAlarms()) : tr("Alarms unknown");
+    if (known && alarms.alarmsStale())
+        text += QLatin1Char(' ') + tr("(stale)");
+    return text;
 }
 
 void DeviceTile::mouseReleaseEvent(QMouseEvent *event)

@@ -28,6 +28,10 @@ public:
     QString valuesText() const;
     QString stateText() const;
     QString alarmText() const;
+    // "Online", "Not answering since 10:42:17": the words of the tile and the device list.
+    static QString conditionText(const DeviceCondition &condition);
+    // "2 active alarm(s)", "Alarms unknown", with "(stale)" where they are.
+    static QString alarmsText(const DeviceCondition &condition, const AlarmBitsModel &alarms);
 
 signals:
     void activated(jumo::DeviceId device);

@@ -31,6 +31,8 @@ LedGrid::LedGrid(AlarmBitsModel *model, QWidget *parent) : QWidget(parent), m_mo
             auto *box = new QGroupBox(modelIndex.data(AlarmBitsModel::GroupTitleRole).toString(), inner);
             grid = new QGridLayout(box);
             grid->setHorizontalSpacing(18);
+            for (int column = 0; column < columns; ++column)
+                grid->setColumnStretch(column, 1);
             outer->addWidget(box);
             index = 0;
         }
@@ -50,6 +52,9 @@ LedGrid::LedGrid(AlarmBitsModel *model, QWidget *parent) : QWidget(parent), m_mo
     auto *scroll = new QScrollArea(this);
     scroll->setWidget(inner);
     scroll->setWidgetResizable(true);
+    // Labels wrap, so the grid always fits the page's width.
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_summary->setWordWrap(true);
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_summary);
     layout->addWidget(scroll);

@@ -1,8 +1,10 @@
 // One LED of an LED grid: a round lamp coloured by kind and state, with its label beside
-// it, so colour never carries the meaning alone.
+// it, so colour never carries the meaning alone. A long label wraps onto more lines.
 #pragma once
 
 #include <QWidget>
+
+class QLabel;
 
 namespace jumo {
 
@@ -24,16 +26,21 @@ public:
     bool isStale() const { return m_stale; }
     QString label() const { return m_label; }
 
+    // The whole label on one line where there is room; it wraps where there is not.
     QSize sizeHint() const override;
 
 protected:
     void paintEvent(QPaintEvent *event) override;
 
 private:
+    int lampSize() const;
+    void updateText();
+
     QString m_label;
     Kind m_kind;
     State m_state = State::Unknown;
     bool m_stale = false;
+    QLabel *m_text;
 };
 
 } // namespace jumo

@@ -1,11 +1,15 @@
 #include "livevaluesview.h"
 
 #include "models/livevaluesmodel.h"
+#include "protocol/valuecodec.h"
 
 #include <QBrush>
 #include <QFont>
 #include <QHeaderView>
 #include <QIdentityProxyModel>
+#include <QStyle>
+
+#include <algorithm>
 
 namespace jumo {
 
@@ -40,20 +44,54 @@ public:
 
 LiveValuesView::LiveValuesView(LiveValuesModel *model, QWidget *parent) : QTableView(parent), m_model(model)
 {
-    auto *style = new LiveValuesStyle(this);
-    style->setSourceModel(model);
-    setModel(style);
+    auto *styled = new LiveValuesStyle(this);
+    styled->setSourceModel(model);
+    setModel(styled);
     verticalHeader()->hide();
     verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
-    horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
-    horizontalHeader()->setStretchLastSection(true);
     setSelectionBehavior(QAbstractItemView::SelectRows);
     setAlternatingRowColors(true);
-    setColumnWidth(LiveValuesModel::SectionColumn, 180);
-    setColumnWidth(LiveValuesModel::LabelColumn, 300);
-    setColumnWidth(LiveValuesModel::ValueColumn, 130);
-    setColumnWidth(LiveValuesModel::UnitColumn, 50);
-    setColumnWidth(LiveValuesModel::StatusColumn, 160);
+    setWordWrap(false);
+    setTextElideMode(Qt::ElideRight);
+    // The table is as wide as the page, never wider: the signal column takes what the
+    // others leave, and a text that does not fit ends in "…" with the whole of it in
+    // the tooltip.
+    setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    QHeaderView *header = horizontalHeader();
+    header->setStretchLastSection(false);
+    header->setSectionResizeMode(QHeaderView::Interactive);
+    header->setSectionResizeMode(LiveValuesModel::LabelColumn, QHeaderView::Stretch);
+    header->setMinimumSectionSize(fontMetrics().horizontalAdvance(QStringLiteral("0000")));
+    const QFontMetrics fm = fontMetrics();
+    // Cell padding: the style's text margins on both sides and a little air.
+    const int pad = 2 * (style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, this) + 1) + 8;
+    auto fit = [&](int column, const QStringList &samples) {
+        const int headerMargin = style()->pixelMetric(QStyle::PM_HeaderMargin, nullptr, header);
+        int width = header->fontMetrics().horizontalAdvance(model->headerData(column, Qt::Horizontal).toString())
+                + 2 * headerMargin + 4;
+        for (const QString &sample : samples)
+            width = std::max(width, fm.horizontalAdvance(sample) + pad);
+        setColumnWidth(column, width);
+    };
+    QStringList units;
+    QStringList sections;
+    for (int row = 0; row < model->rowCount(); ++row) {
+        units << model->index(row, LiveValuesModel::UnitColumn).data().toString();
+        sections << model->index(row, LiveValuesModel::SectionColumn).data().toString();
+    }
+    // The sections in full where they are not much longer than "5.2.1 RMS measured values";
+    // the rest end in "…" and are in the tooltip.
+    fit(LiveValuesModel::SectionColumn, sections);
+    setColumnWidth(LiveValuesModel::SectionColumn,
+                   std::min(columnWidth(LiveValuesModel::SectionColumn),
+                            fm.horizontalAdvance(QStringLiteral("5.1.2 Operating level parameters")) + pad));
+    // Numbers, and texts as long as an order code.
+    fit(LiveValuesModel::ValueColumn, {QStringLiteral("-88888.888"), QStringLiteral("709051/8-01-100-54/252"),
+                                       ValueCodec::statusText(ValueStatus::Underrange)});
+    fit(LiveValuesModel::UnitColumn, units);
+    // A status that does not fit ends in "…" and is in the tooltip.
+    fit(LiveValuesModel::StatusColumn, {QStringLiteral("Stale (888 s old)")});
+    fit(LiveValuesModel::AgeColumn, {QStringLiteral("8888.8 s")});
 }
 
 QString LiveValuesView::displayedValue(const QString &entryId) const

@@ -9,7 +9,9 @@
 #include "dataloggingdialog.h"
 #include "sim/demoline.h"
 #include "devicepage.h"
+#include "devicestateicon.h"
 #include "devicetile.h"
+#include "elidedlabel.h"
 #include "logs/alarmjournal.h"
 #include "logs/eventlog.h"
 #include "eventlogview.h"
@@ -25,7 +27,7 @@
 #include <QApplication>
 #include <QFileDialog>
 #include <QCloseEvent>
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenuBar>
@@ -68,8 +70,8 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
                                    {tr("Time"), tr("Device"), tr("Entry"), tr("Old value"), tr("New value"),
                                     tr("Result"), tr("Message")},
                                    this)),
-      m_lineStatus(new QLabel(this)), m_loadStatus(new QLabel(this)),
-      m_errorStatus(new QLabel(this))
+      m_lineStatus(new ElidedLabel(this)), m_loadStatus(new QLabel(this)),
+      m_errorStatus(new ElidedLabel(this))
 {
     setObjectName(QStringLiteral("mainWindow"));
     // An administrator can fix read-only mode for a control room in the system-wide
@@ -92,10 +94,14 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
     connect(m_connectionBar, &ConnectionBar::disconnectRequested, this, &MainWindow::disconnectLine);
 
     m_navigation->setObjectName(QStringLiteral("navigation"));
-    m_navigation->addItem(tr("Overview"));
-    m_navigation->addItem(tr("Traffic and statistics"));
-    m_navigation->addItem(tr("Alarm journal"));
-    m_navigation->addItem(tr("Write audit log"));
+    // Short names with a state icon; what does not fit ends in "…" and is in the tooltip.
+    m_navigation->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_navigation->setTextElideMode(Qt::ElideRight);
+    m_navigation->setIconSize(QSize(16, 16));
+    for (const QString &page : {tr("Overview"), tr("Traffic and statistics"), tr("Alarm journal"), tr("Write audit log")}) {
+        auto *item = new QListWidgetItem(page, m_navigation);
+        item->setToolTip(page);
+    }
     m_pages->addWidget(m_overview);
     m_pages->addWidget(m_traffic);
     m_pages->addWidget(m_journalView);
@@ -124,16 +130,26 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
     auto *sideLayout = new QVBoxLayout(side);
     sideLayout->setContentsMargins(0, 0, 0, 0);
     sideLayout->addWidget(m_navigation);
-    auto *sideButtons = new QHBoxLayout;
-    sideButtons->addWidget(addButton);
-    sideButtons->addWidget(scanButton);
-    sideButtons->addWidget(removeButton);
+    // Two buttons a row keep the list narrow and the pages wide.
+    auto *sideButtons = new QGridLayout;
+    sideButtons->addWidget(addButton, 0, 0);
+    sideButtons->addWidget(scanButton, 0, 1);
+    sideButtons->addWidget(removeButton, 1, 0);
     sideLayout->addLayout(sideButtons);
     auto *split = new QSplitter(this);
     split->setObjectName(QStringLiteral("mainSplitter"));
     split->addWidget(side);
     split->addWidget(m_pages);
     split->setStretchFactor(1, 4);
+    split->setCollapsible(0, false);
+    split->setCollapsible(1, false);
+    // The list as wide as its page names, a short device name ("dTRON 300 @ 247") and
+    // its buttons; the pages get the rest.
+    const int listWidth = std::max({m_navigation->sizeHintForColumn(0),
+                                    m_navigation->fontMetrics().horizontalAdvance(QStringLiteral("dTRON 300 @ 247")) + 16 + 12})
+            + 2 * m_navigation->frameWidth() + 8;
+    side->setMinimumWidth(std::max(listWidth, sideButtons->minimumSize().width()));
+    split->setSizes({side->minimumWidth(), 1280 - side->minimumWidth()});
     setCentralWidget(split);
 
     m_lineStatus->setObjectName(QStringLiteral("lineStatus"));
@@ -149,15 +165,14 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
         statusBar()->addPermanentWidget(mode);
     }
     // A record the logs could not keep is no passing error: it stays until the end.
-    auto *logFailure = new QLabel(this);
+    auto *logFailure = new ElidedLabel(this);
     logFailure->setObjectName(QStringLiteral("logFailureStatus"));
     logFailure->setStyleSheet(QStringLiteral("background: #ffd6d6; color: #600000; padding: 0 6px"));
     logFailure->hide();
     statusBar()->addPermanentWidget(logFailure);
     for (EventLog *log : {m_journalLog, m_auditLog}) {
         connect(log, &EventLog::writeFailed, logFailure, [logFailure](const QString &message) {
-            logFailure->setText(tr("Not logged: %1").arg(message));
-            logFailure->setToolTip(message);
+            logFailure->setFullText(tr("Not logged: %1").arg(message));
             logFailure->show();
         });
     }
@@ -173,6 +188,7 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
             if (m_devices[index].page)
                 m_devices[index].page->setCondition(condition);
         }
+        updateNavigationItem(id);
     });
     auto *statusTimer = new QTimer(this);
     connect(statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
@@ -271,20 +287,20 @@ void MainWindow::startDemo()
 {
     m_demo = std::make_unique<DemoLine>(m_registry);
     connect(m_demo.get(), &DemoLine::failed, this, [this](const QString &reason) {
-        m_lineStatus->setText(tr("Demo line failed: %1").arg(reason));
+        m_lineStatus->setFullText(tr("Demo line failed: %1").arg(reason));
     });
     connect(m_demo.get(), &DemoLine::ready, this, [this](const QString &port) {
         const LineFormat f = m_demo->format();
         m_connectionBar->setSettings(port, f.baudRate, f.formatName());
         if (!connectLine()) {
-            m_lineStatus->setText(m_bus.lastError());
+            m_lineStatus->setFullText(m_bus.lastError());
             return;
         }
         for (const auto &[family, address] : m_demo->devices())
             addDevice(m_registry.family(family), address);
         emit demoReady();
     });
-    m_lineStatus->setText(tr("Starting the simulated demo line..."));
+    m_lineStatus->setFullText(tr("Starting the simulated demo line..."));
     m_demo->start();
 }
 
@@ -337,17 +353,18 @@ void MainWindow::updateStatus()
     }
     const int perSecond = requests - m_requestsAtLastStatus;
     m_requestsAtLastStatus = requests;
-    m_lineStatus->setText(m_bus.state() == LineState::Connected ? tr("Line: %1").arg(m_bus.settings().portName)
-                                                                : m_connectionBar->findChild<QLabel *>(QStringLiteral("lineState"))->text());
+    m_lineStatus->setFullText(m_bus.state() == LineState::Connected
+                                      ? tr("Line: %1").arg(m_bus.settings().portName)
+                                      : m_connectionBar->findChild<QLabel *>(QStringLiteral("lineState"))->text());
     m_loadStatus->setText(tr("%1 requests/s").arg(perSecond));
     // Repeated errors are throttled: the newest one, at most once every 5 s.
     const qint64 now = m_bus.clockMs();
     if (!m_lastError.isEmpty() && (m_lastErrorShownMs < 0 || now - m_lastErrorShownMs >= 5000)) {
-        m_errorStatus->setText(tr("%n error(s); last: %1", nullptr, errors).arg(m_lastError));
+        m_errorStatus->setFullText(tr("%n error(s); last: %1", nullptr, errors).arg(m_lastError));
         m_lastErrorShownMs = now;
         m_lastError.clear();
     } else if (errors == 0) {
-        m_errorStatus->setText(tr("no errors"));
+        m_errorStatus->setFullText(tr("no errors"));
     }
 }
 
@@ -366,13 +383,40 @@ bool MainWindow::addDevice(std::shared_ptr<const RegisterMap> map, quint8 addres
     auto *tile = new DeviceTile(id, *map, address, values, alarms, m_overview);
     tile->setCondition(m_bus.condition(id));
     m_overview->addTile(tile);
-    m_navigation->addItem(QStringLiteral("%1 @ %2").arg(map->name).arg(address));
+    m_navigation->addItem(QStringLiteral("%1 @ %2").arg(map->shortName).arg(address));
     m_devices << DeviceEntry{id, values, alarms, tile, nullptr, nullptr};
+    auto update = [this, id] { updateNavigationItem(id); };
+    connect(alarms, &AlarmBitsModel::activeAlarmsChanged, this, update);
+    connect(alarms, &AlarmBitsModel::alarmsKnownChanged, this, update);
+    connect(alarms, &QAbstractItemModel::dataChanged, this, update);
+    updateNavigationItem(id);
     connect(tile, &DeviceTile::activated, this, [this](DeviceId device) {
         if (const int index = indexOf(device); index >= 0)
             m_navigation->setCurrentRow(firstDeviceRow + index);
     });
     return true;
+}
+
+void MainWindow::updateNavigationItem(DeviceId id)
+{
+    const int index = indexOf(id);
+    QListWidgetItem *item = index >= 0 ? m_navigation->item(firstDeviceRow + index) : nullptr;
+    if (!item)
+        return;
+    const DeviceCondition condition = m_bus.condition(id);
+    const AlarmBitsModel &alarms = *m_devices[index].alarms;
+    const auto kind = DeviceStateIcon::kindOf(condition, alarms.activeAlarms(), alarms.alarmsKnown());
+    // Repainting an icon for every poll block would cost; only a change is drawn.
+    if (item->data(Qt::UserRole).toInt() != int(kind) + 1) {
+        item->setData(Qt::UserRole, int(kind) + 1);
+        item->setIcon(DeviceStateIcon::icon(kind));
+    }
+    const std::shared_ptr<const RegisterMap> map = m_bus.deviceMap(id);
+    const QString tip = QStringLiteral("%1\n%2\n%3\n%4")
+                                .arg(item->text(), map->name, DeviceTile::conditionText(condition),
+                                     DeviceTile::alarmsText(condition, alarms));
+    if (item->toolTip() != tip)
+        item->setToolTip(tip);
 }
 
 void MainWindow::showOverview()

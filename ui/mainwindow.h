@@ -26,6 +26,7 @@ class DevicePage;
 class EventLog;
 class EventLogView;
 class DeviceTile;
+class ElidedLabel;
 class FamilyRegistry;
 class OverviewPage;
 class TrafficView;
@@ -93,6 +94,8 @@ private:
     // rows), -1 when it is gone. Tiles and callbacks keep ids, never positions.
     int indexOf(DeviceId id) const;
     void onNavigation(int row);
+    // The device's list entry: its state icon and a tooltip with the full name and state.
+    void updateNavigationItem(DeviceId id);
 
     void buildMenus();
     void startDemo();
@@ -118,9 +121,9 @@ private:
     EventLog *m_auditLog;
     EventLogView *m_journalView;
     EventLogView *m_auditView;
-    QLabel *m_lineStatus;
+    ElidedLabel *m_lineStatus;
     QLabel *m_loadStatus;
-    QLabel *m_errorStatus;
+    ElidedLabel *m_errorStatus;
     mutable QList<DeviceEntry> m_devices;
     int m_requestsAtLastStatus = 0;
     QString m_lastError;

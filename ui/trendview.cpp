@@ -33,9 +33,14 @@ TrendView::TrendView(LiveValuesModel *values, QWidget *parent)
       m_valueAxis(new QValueAxis)
 {
     m_choice->setObjectName(QStringLiteral("trendChoice"));
+    // A long signal name wraps within the list, which never scrolls sideways.
+    m_choice->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_choice->setWordWrap(true);
+    m_choice->setResizeMode(QListView::Adjust);
     for (int row = 0; row < m_values->rowCount(); ++row) {
         const QModelIndex label = m_values->index(row, LiveValuesModel::LabelColumn);
         auto *item = new QListWidgetItem(label.data().toString(), m_choice);
+        item->setToolTip(label.data().toString());
         item->setData(Qt::UserRole, row);
         item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
         item->setCheckState(Qt::Unchecked);

@@ -33,6 +33,8 @@ QString entryNotes(const RegisterEntry &e)
         parts << QStringLiteral("range %1 to %2")
                          .arg(e.minimum ? ValueCodec::formatFloat(*e.minimum) : QStringLiteral("-"),
                               e.maximum ? ValueCodec::formatFloat(*e.maximum) : QStringLiteral("-"));
+    if (!e.configuredUnit.isEmpty())
+        parts << QStringLiteral("unit configured on the device: %1").arg(e.configuredUnit);
     if (e.activationMask)
         parts << QStringLiteral("activation %1").arg(formatAddress(*e.activationMask));
     if (e.restoreValue)
@@ -65,6 +67,11 @@ QJsonObject entryJson(const RegisterEntry &e)
     QJsonObject o{{"address", formatAddress(e.address)}, {"id", e.id}, {"label", e.label},
                   {"type", valueTypeName(e.type)}, {"words", e.wordCount()}, {"access", accessName(e.access)},
                   {"storage", storageName(e.storage)}, {"unit", e.unit}, {"group", e.group}};
+    if (!e.configuredUnit.isEmpty())
+        o.insert("configuredUnit", e.configuredUnit);
+    // The precision the values are shown with, the unit's default where the map names none.
+    if (e.type == ValueType::Float)
+        o.insert(e.precision.kind == DisplayPrecision::Kind::Decimals ? "decimals" : "significantDigits", e.precision.digits);
     if (e.type == ValueType::Text)
         o.insert("bytes", e.textBytes);
     if (e.minimum)
@@ -146,7 +153,7 @@ int MapCommands::families(const QStringList &arguments)
 
 QString MapCommands::csvHeader()
 {
-    return QStringLiteral("address,bit,id,label,type,words,access,storage,unit,group,notes");
+    return QStringLiteral("address,bit,id,label,type,words,access,storage,unit,group,notes,precision");
 }
 
 QStringList MapCommands::csvRows(const RegisterMap &map)
@@ -156,13 +163,14 @@ QStringList MapCommands::csvRows(const RegisterMap &map)
         const QString address = formatAddress(e.address);
         rows << QStringList{address, QString(), e.id, csvField(e.label), valueTypeName(e.type),
                             QString::number(e.wordCount()), accessName(e.access), storageName(e.storage),
-                            csvField(e.unit), csvField(e.group), csvField(entryNotes(e))}
+                            csvField(e.unit), csvField(e.group), csvField(entryNotes(e)),
+                            e.type == ValueType::Float ? e.precision.name() : QString()}
                         .join(QLatin1Char(','));
         for (const BitDefinition &b : e.bits) {
             rows << QStringList{address, QString::number(b.bit), e.id + QLatin1Char('.') + b.id, csvField(b.label),
                                 b.width > 1 ? QStringLiteral("uint16") : QStringLiteral("bool"), QStringLiteral("1"),
                                 accessName(e.access), storageName(e.storage), QString(), csvField(e.group),
-                                csvField(bitNotes(b))}
+                                csvField(bitNotes(b)), QString()}
                             .join(QLatin1Char(','));
         }
     }
@@ -213,7 +221,11 @@ int MapCommands::map(const QStringList &arguments)
                          {"processingTimeMaxMs", p.processingTimeMaxMs},
                          {"turnaroundMs", p.turnaroundMs},
                          {"busErrorTimeoutMs", p.busErrorTimeoutMs ? QJsonValue(*p.busErrorTimeoutMs) : QJsonValue()}};
-    QJsonObject root{{"family", map->family}, {"name", map->name}, {"models", QJsonArray::fromStringList(map->models)},
+    QJsonObject configuredUnits;
+    for (auto it = map->configuredUnits.cbegin(); it != map->configuredUnits.cend(); ++it)
+        configuredUnits.insert(it.key(), it.value());
+    QJsonObject root{{"family", map->family}, {"name", map->name}, {"shortName", map->shortName},
+                     {"models", QJsonArray::fromStringList(map->models)}, {"configuredUnits", configuredUnits},
                      {"manual", map->manual}, {"protocol", protocol}, {"exceptions", exceptions},
                      {"entries", entries}};
     if (map->errorValues)

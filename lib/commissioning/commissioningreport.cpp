@@ -1,6 +1,7 @@
 #include "commissioning/commissioningreport.h"
 
 #include "commissioning/parameterset.h"
+#include "protocol/valueformat.h"
 
 #include <algorithm>
 
@@ -32,9 +33,8 @@ QString CommissioningReport::valueText(const RegisterEntry &entry) const
     const EntryState *s = m_states(entry.id);
     if (!s || !s->hasValue())
         return tr("not read");
-    QString text = s->value.display;
-    if (s->value.isOk() && !entry.unit.isEmpty())
-        text += QLatin1Char(' ') + entry.unit;
+    // As the HMI shows it: the entry's precision, the locale's decimal sign, the unit.
+    QString text = ValueFormat::withUnit(s->value, entry);
     switch (s->validity) {
     case Validity::Current:
         return text;

@@ -1,6 +1,7 @@
 #include "models/livevaluesmodel.h"
 
 #include "models/valuetext.h"
+#include "protocol/valueformat.h"
 
 #include <QCoreApplication>
 
@@ -88,6 +89,8 @@ QVariant LiveValuesModel::data(const QModelIndex &index, int role) const
         const double v = state->value.value.toDouble(&ok);
         return ok ? QVariant(v) : QVariant();
     }
+    case ValueWithUnitRole:
+        return ValueText::value(state, e);
     case ErrorValueRole:
         return state && state->isCurrent() && !state->value.isOk();
     case Qt::TextAlignmentRole:
@@ -95,13 +98,29 @@ QVariant LiveValuesModel::data(const QModelIndex &index, int role) const
                 ? QVariant(Qt::AlignRight | Qt::AlignVCenter)
                 : QVariant();
     case Qt::ToolTipRole: {
-        QString tip = tr("%1, register %2, %3").arg(e.id, formatAddress(e.address), valueTypeName(e.type));
+        // Whole texts first: a narrow column elides section, signal, value or status, and
+        // the tooltip is where they are read in full.
+        const QString label = QCoreApplication::translate("jumo::maps", e.label.toUtf8().constData());
+        const QString section = QCoreApplication::translate("jumo::maps", e.group.toUtf8().constData());
+        QStringList lines;
+        if (index.column() == SectionColumn)
+            lines << section << label;
+        else
+            lines << label << section;
+        if (index.column() == ValueColumn && validity != Validity::Unknown)
+            lines << tr("Value: %1").arg(ValueText::value(state, e));
+        lines << tr("%1, register %2, %3").arg(e.id, formatAddress(e.address), valueTypeName(e.type));
+        if (const QString note = ValueText::unitNote(e, *m_map); !note.isEmpty())
+            lines << note;
+        if (index.column() == StatusColumn || validity != Validity::Current || (state && !state->value.isOk()))
+            lines << tr("Status: %1").arg(ValueText::status(state, *m_map, m_bus->clockMs()));
         if (validity == Validity::Unknown && state && state->hasValue())
-            tip += QLatin1Char('\n')
-                    + tr("Last known value: %1, %2 s ago").arg(state->value.display).arg((m_bus->clockMs() - state->goodMs) / 1000);
+            lines << tr("Last known value: %1, %2 s ago")
+                             .arg(ValueFormat::withUnit(state->value, e))
+                             .arg((m_bus->clockMs() - state->goodMs) / 1000);
         if (!e.notes.isEmpty())
-            tip += QLatin1Char('\n') + e.notes;
-        return tip;
+            lines << e.notes;
+        return lines.join(QLatin1Char('\n'));
     }
     case Qt::DisplayRole:
         break;
@@ -117,9 +136,9 @@ QVariant LiveValuesModel::data(const QModelIndex &index, int role) const
     case ValueColumn:
         // Error values show as what they are, never as a number; an unknown value shows
         // no number at all.
-        return validity == Validity::Unknown || !state || !state->hasValue() ? ValueText::noValue() : state->value.display;
+        return ValueText::number(state, e);
     case UnitColumn:
-        return e.unit;
+        return ValueText::unit(e);
     case StatusColumn:
         return ValueText::status(state, *m_map, m_bus->clockMs());
     case AgeColumn:

@@ -19,7 +19,8 @@ public:
     enum Role { EntryIdRole = Qt::UserRole + 1, StatusNameRole,
                 ValidityRole,    // int(Validity): current, stale or unknown
                 AgeMsRole, ErrorValueRole,
-                NumericRole };   // double, only for a current good number
+                NumericRole,     // double, only for a current good number
+                ValueWithUnitRole };   // "91.9 V", as tiles and controls show it
 
     LiveValuesModel(Bus *bus, DeviceId device, QObject *parent = nullptr);
 

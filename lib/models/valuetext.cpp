@@ -1,6 +1,7 @@
 #include "models/valuetext.h"
 
 #include "protocol/valuecodec.h"
+#include "protocol/valueformat.h"
 
 namespace jumo {
 
@@ -13,9 +14,27 @@ QString ValueText::value(const EntryState *state, const RegisterEntry &entry)
 {
     if (!state || state->validity == Validity::Unknown || !state->hasValue())
         return noValue();
-    if (!state->value.isOk() || entry.unit.isEmpty())
-        return state->value.display;
-    return state->value.display + QLatin1Char(' ') + entry.unit;
+    return ValueFormat::withUnit(state->value, entry);
+}
+
+QString ValueText::number(const EntryState *state, const RegisterEntry &entry)
+{
+    if (!state || state->validity == Validity::Unknown || !state->hasValue())
+        return noValue();
+    return ValueFormat::value(state->value, entry);
+}
+
+QString ValueText::unit(const RegisterEntry &entry)
+{
+    return entry.configuredUnit.isEmpty() ? entry.unit : tr("(configured)");
+}
+
+QString ValueText::unitNote(const RegisterEntry &entry, const RegisterMap &map)
+{
+    if (entry.configuredUnit.isEmpty())
+        return {};
+    return tr("Unit as configured on the device: %1")
+            .arg(QCoreApplication::translate("jumo::maps", map.configuredUnits.value(entry.configuredUnit).toUtf8().constData()));
 }
 
 QString ValueText::reason(ReadError error, int exceptionCode, const RegisterMap &map)

@@ -60,9 +60,9 @@ private:
 
     std::optional<RegisterMap> parseMap(const QJsonObject &root)
     {
-        checkKeys(root, {"format", "family", "name", "models", "manual", "description", "protocol",
-                         "identify", "scanPriority", "exceptions", "errorValues", "simulation", "overview", "identity",
-                         "entries"},
+        checkKeys(root, {"format", "family", "name", "shortName", "models", "manual", "description", "protocol",
+                         "identify", "scanPriority", "exceptions", "errorValues", "configuredUnits", "simulation",
+                         "overview", "identity", "entries"},
                   QString());
         RegisterMap map;
         map.sourceFile = source();
@@ -71,6 +71,11 @@ private:
         if (!map.family.isEmpty() && !isId(map.family))
             fail(QString(), tr("family id '%1' must be lower case letters, digits and '_'").arg(map.family));
         map.name = requireString(root, "name", QString());
+        map.shortName = optionalString(root, "shortName", QString());
+        if (root.contains("shortName") && (map.shortName.trimmed().isEmpty() || map.shortName.size() > 24))
+            fail(QString(), tr("'shortName' must be 1 to 24 characters, not '%1'").arg(map.shortName.left(40)));
+        if (map.shortName.isEmpty())
+            map.shortName = map.name;
         map.manual = optionalString(root, "manual", QString());
         map.description = optionalString(root, "description", QString());
         map.models = stringList(root, "models", QString());
@@ -80,6 +85,7 @@ private:
         parseIdentify(root.value("identify"), map.identify);
         parseExceptions(root.value("exceptions"), map.exceptions);
         parseErrorValues(root, map.errorValues);
+        parseConfiguredUnits(root.value("configuredUnits"), map.configuredUnits);
 
         const QJsonValue entries = root.value("entries");
         if (!entries.isArray() || entries.toArray().isEmpty()) {
@@ -91,6 +97,11 @@ private:
         for (const QJsonValue &value : entries.toArray()) {
             if (std::optional<RegisterEntry> e = parseEntry(value, index++))
                 parsed << *e;
+        }
+        for (const RegisterEntry &e : std::as_const(parsed)) {
+            if (!e.configuredUnit.isEmpty() && !map.configuredUnits.contains(e.configuredUnit))
+                fail(tr("entry '%1' (%2)").arg(e.id, formatAddress(e.address)),
+                     tr("'configuredUnit' names '%1', which 'configuredUnits' does not define").arg(e.configuredUnit));
         }
         checkEntries(parsed);
         map.setEntries(std::move(parsed));
@@ -243,6 +254,50 @@ private:
                               requireString(o, "invalid", where)};
     }
 
+    void parseConfiguredUnits(const QJsonValue &value, QMap<QString, QString> &out)
+    {
+        const QString where = QStringLiteral("configuredUnits");
+        if (value.isUndefined())
+            return;
+        if (!value.isObject()) {
+            fail(QString(), tr("'configuredUnits' must be an object mapping ids to what decides the unit"));
+            return;
+        }
+        const QJsonObject o = value.toObject();
+        for (auto it = o.begin(); it != o.end(); ++it) {
+            if (!isId(it.key()))
+                fail(where, tr("'%1' is no id (lower case letters, digits and '_')").arg(it.key().left(40)));
+            else if (!it.value().isString() || it.value().toString().trimmed().isEmpty())
+                fail(where, tr("'%1' needs a text that says what decides the unit").arg(it.key()));
+            else
+                out.insert(it.key(), it.value().toString());
+        }
+    }
+
+    // Floats only: "decimals" (0..6) or "significantDigits" (1..7, a float's own), not
+    // both; without either, the unit's default.
+    void parsePrecision(const QJsonObject &o, RegisterEntry &e, const QString &where)
+    {
+        const bool hasDecimals = o.contains("decimals");
+        const bool hasSignificant = o.contains("significantDigits");
+        if ((hasDecimals || hasSignificant) && e.type != ValueType::Float) {
+            fail(where, tr("'decimals' and 'significantDigits' are only for floats"));
+            return;
+        }
+        if (hasDecimals && hasSignificant) {
+            fail(where, tr("give 'decimals' or 'significantDigits', not both"));
+            return;
+        }
+        e.precision = DisplayPrecision::defaultForUnit(e.unit);
+        if (const std::optional<int> n = optionalInt(o, "decimals", 0, 6, where)) {
+            e.precision = DisplayPrecision::decimals(*n);
+            e.precisionFromMap = true;
+        } else if (const std::optional<int> n = optionalInt(o, "significantDigits", 1, 7, where)) {
+            e.precision = DisplayPrecision::significant(*n);
+            e.precisionFromMap = true;
+        }
+    }
+
     std::optional<RegisterEntry> parseEntry(const QJsonValue &value, int index)
     {
         if (!value.isObject()) {
@@ -257,8 +312,8 @@ private:
                 : tr("entry '%1' (%2)").arg(rawId, o.value("address").toString());
         const qsizetype errorsBefore = errors().size();
 
-        checkKeys(o, {"address", "id", "label", "type", "bytes", "words", "access", "storage", "unit", "group",
-                      "min", "max", "values", "bits", "activation", "action", "control", "restoreValue", "precondition",
+        checkKeys(o, {"address", "id", "label", "type", "bytes", "words", "access", "storage", "unit", "configuredUnit",
+                      "decimals", "significantDigits", "group", "min", "max", "values", "bits", "activation", "action", "control", "restoreValue", "precondition",
                       "reserved", "alias", "notes", "erratum"},
                   where);
         e.address = parseHex16(o.value("address"), "address", where).value_or(0);
@@ -307,6 +362,14 @@ private:
         }
 
         e.unit = optionalString(o, "unit", where);
+        e.configuredUnit = optionalString(o, "configuredUnit", where);
+        if (!e.configuredUnit.isEmpty() && !e.unit.isEmpty())
+            fail(where, tr("give 'unit' or 'configuredUnit', not both"));
+        if ((!e.unit.isEmpty() || !e.configuredUnit.isEmpty())
+            && (e.type == ValueType::Bool || e.type == ValueType::Enum || e.type == ValueType::Bitfield
+                || e.type == ValueType::Text))
+            fail(where, tr("a unit is only for numbers"));
+        parsePrecision(o, e, where);
         e.minimum = optionalNumber(o, "min", where);
         e.maximum = optionalNumber(o, "max", where);
         if (e.minimum && e.maximum && *e.minimum > *e.maximum)

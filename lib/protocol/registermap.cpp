@@ -71,6 +71,34 @@ std::optional<BitKind> bitKindFromName(const QString &name) { return lookup(bitK
 QString wordOrderName(WordOrder order) { return nameOf(wordOrderNames, order); }
 std::optional<WordOrder> wordOrderFromName(const QString &name) { return lookup(wordOrderNames, name); }
 
+DisplayPrecision DisplayPrecision::defaultForUnit(const QString &unit)
+{
+    // As an engineer writes them: voltages to a tenth, currents, power and resistance
+    // measured to four significant digits (0.512 A, 19.99 A, 1838 W), percentages,
+    // temperatures and angles to a tenth, mains frequency to a hundredth.
+    static const QHash<QString, DisplayPrecision> byUnit{
+        {QStringLiteral("V"), decimals(1)},          {QStringLiteral("mV"), decimals(2)},
+        {QStringLiteral("A"), significant(4)},       {QStringLiteral("mA"), decimals(2)},
+        {QStringLiteral("W"), significant(4)},       {QStringLiteral("kW"), significant(4)},
+        {QStringLiteral("Ω"), significant(4)},       {QStringLiteral("%"), decimals(1)},
+        {QStringLiteral("°C"), decimals(1)},         {QStringLiteral("°F"), decimals(1)},
+        {QStringLiteral("K"), decimals(1)},          {QStringLiteral("°"), decimals(1)},
+        {QStringLiteral("Hz"), decimals(2)},         {QStringLiteral("s"), decimals(1)},
+        {QStringLiteral("min"), decimals(1)},        {QStringLiteral("h"), decimals(1)},
+    };
+    // No unit, or one set on the device: a process value, shown as the controllers'
+    // own displays show it by default, to a tenth. Anything else: four digits.
+    if (unit.isEmpty())
+        return decimals(1);
+    return byUnit.value(unit, significant(4));
+}
+
+QString DisplayPrecision::name() const
+{
+    return QStringLiteral("%1:%2").arg(kind == Kind::Decimals ? QLatin1String("decimals") : QLatin1String("significant"))
+            .arg(digits);
+}
+
 int RegisterEntry::wordCount() const
 {
     if (reservedWords > 0)

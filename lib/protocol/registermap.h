@@ -35,6 +35,23 @@ std::optional<BitKind> bitKindFromName(const QString &name);
 QString wordOrderName(WordOrder order);
 std::optional<WordOrder> wordOrderFromName(const QString &name);
 
+// How many digits a number is shown with: a fixed number of decimals (setpoints,
+// percentages, temperatures), or significant digits (measured values over decades).
+struct DisplayPrecision
+{
+    enum class Kind { Decimals, Significant };
+    Kind kind = Kind::Decimals;
+    int digits = 1;
+
+    static DisplayPrecision decimals(int n) { return {Kind::Decimals, n}; }
+    static DisplayPrecision significant(int n) { return {Kind::Significant, n}; }
+    // The default for a float in this unit when its map names no precision.
+    static DisplayPrecision defaultForUnit(const QString &unit);
+    // "decimals:1", "significant:4": the map CSV's column.
+    QString name() const;
+    bool operator==(const DisplayPrecision &) const = default;
+};
+
 struct BitDefinition
 {
     int bit = 0;
@@ -63,6 +80,12 @@ struct RegisterEntry
     Access access = Access::Read;
     Storage storage = Storage::None;
     QString unit;
+    // When the unit is set on the device (the process value's unit, what an alarm
+    // monitors): the id of the map's configuredUnits text that says so; unit is empty.
+    QString configuredUnit;
+    // Floats only: the map's precision, or the default for the unit.
+    DisplayPrecision precision;
+    bool precisionFromMap = false;
     QString group;
     std::optional<double> minimum;
     std::optional<double> maximum;
@@ -166,6 +189,7 @@ class RegisterMap
 public:
     QString family;
     QString name;
+    QString shortName;   // for lists: "IPC 300"; the name when the map has none
     QStringList models;
     QString manual;
     QString description;
@@ -178,6 +202,8 @@ public:
     std::optional<SimulationSpec> simulation;
     QStringList overview;   // key values of the overview tile
     QStringList identity;   // entries that identify the device (name, version, serial...)
+    // Units set on the device: id to what decides the unit, for the entries that name it.
+    QMap<QString, QString> configuredUnits;
 
     const QList<RegisterEntry> &entries() const { return m_entries; }
     void setEntries(QList<RegisterEntry> entries);

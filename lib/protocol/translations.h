@@ -8,8 +8,12 @@ class QCoreApplication;
 
 namespace jumo {
 
-// Installs the translation for the locale on the application; returns whether one was
-// found (English needs none).
+// Installs the translation for the locale on the application, in place of one installed
+// before; returns whether one was found (English needs none).
 bool installTranslations(QCoreApplication &app, const QLocale &locale = QLocale());
+
+// The HMI's language: its translation, and the locale numbers are written in, so a
+// German HMI shows "91,9 V" on an English system too (QLocale::setDefault).
+bool useLanguage(QCoreApplication &app, const QLocale &locale);
 
 } // namespace jumo

@@ -12,6 +12,7 @@
 #include "controlspanel.h"
 #include "devicepage.h"
 #include "devicetile.h"
+#include "elidedlabel.h"
 #include "ledgrid.h"
 #include "ledindicator.h"
 #include "livevaluesview.h"
@@ -27,6 +28,9 @@
 #include <QCheckBox>
 #include <QElapsedTimer>
 #include <QLabel>
+#include <QLineEdit>
+#include <QRegularExpression>
+#include <QScopeGuard>
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
@@ -70,6 +74,7 @@ private slots:
     void connectScanAndSeeLiveValuesMove();
     void alarmLedTurnsOn();
     void setpointIsConfirmedByReadBack();
+    void germanNumbersInAndOut();
     void readOnlyDisablesControlsAndSendsNothing();
     void errorValueShowsAsOverrange();
     void journalAndAuditSurviveARestart();
@@ -212,6 +217,30 @@ void tst_Hmi::setpointIsConfirmedByReadBack()
     QVERIFY2(row->stateText().startsWith("Not written"), qPrintable(row->stateText()));
     QTest::qWait(300);
     QCOMPARE(m_sim.writeFrames(), before);
+}
+
+void tst_Hmi::germanNumbersInAndOut()
+{
+    // The HMI in German: the setpoint typed with a comma, the values shown with one.
+    const QLocale before;
+    QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+    const auto restore = qScopeGuard([before] { QLocale::setDefault(before); });
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    ControlRow *row = window->devicePage("ipc300", 1)->controls()->row("input_setpoint");
+    QVERIFY(row);
+    QCOMPARE(row->findChild<QLineEdit *>("input_input_setpoint")->placeholderText(), QString("0,0 to 100,0 %"));
+    row->setInputValue("36,5");
+    QTest::mouseClick(row->findChild<QPushButton *>("write_input_setpoint"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(row->stateText().startsWith("Confirmed"), 20000);
+    QCOMPARE(m_sim.line().device(1)->number("input_setpoint"), 36.5);
+    // Shown as the table shows it: one decimal, the German comma, the unit.
+    LiveValuesView *view = window->devicePage("ipc300", 1)->valuesView();
+    QTRY_COMPARE_WITH_TIMEOUT(view->displayedValue("input_setpoint"), QString("36,5"), 20000);
+    DeviceTile *tile = window->deviceTile("ipc300", 1);
+    window->showOverview();
+    QTRY_VERIFY_WITH_TIMEOUT(tile->valuesText().contains(QRegularExpression("Load voltage: \\d+,\\d V")), 20000);
+    QVERIFY2(tile->valuesText().contains(QRegularExpression("Load current: \\d+,\\d+ A")), qPrintable(tile->valuesText()));
 }
 
 void tst_Hmi::readOnlyDisablesControlsAndSendsNothing()
@@ -501,7 +530,7 @@ void tst_Hmi::lostAuditRecordShowsInTheStatusBar()
     QVERIFY(QDir().mkpath(logs + QStringLiteral("/write-audit.jsonl")));   // a folder where the log goes
     auto window = connectedWindow(false, logs);
     QVERIFY(window);
-    auto *status = window->findChild<QLabel *>("logFailureStatus");
+    auto *status = window->findChild<ElidedLabel *>("logFailureStatus");
     QVERIFY(status);
     QVERIFY(!status->isVisible());
     ControlRow *row = window->devicePage("ipc300", 1)->controls()->row("input_setpoint");
@@ -509,7 +538,7 @@ void tst_Hmi::lostAuditRecordShowsInTheStatusBar()
     QTest::mouseClick(row->findChild<QPushButton *>("write_input_setpoint"), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(row->stateText().startsWith("Confirmed"), 20000);
     QTRY_VERIFY(status->isVisible());
-    QVERIFY2(status->text().contains("write-audit.jsonl: Is a directory"), qPrintable(status->text()));
+    QVERIFY2(status->fullText().contains("write-audit.jsonl: Is a directory"), qPrintable(status->fullText()));
 }
 
 void tst_Hmi::trendPauseLeavesAGap()

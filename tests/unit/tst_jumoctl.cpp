@@ -86,6 +86,10 @@ void tst_Jumoctl::mapCsvContract_data()
     QTest::newRow("quantrol activation bit") << "quantrol" << "0x0025,15,binary_output_control.activation,";
     QTest::newRow("dtron300 long") << "dtron300" << "0x005B,,program_run_time,";
     QTest::newRow("tya200 setpoint") << "tya200" << "0x010A,,setpoint,";
+    QTest::newRow("ipc300 load voltage: unit and precision")
+            << "ipc300" << "0x00AF,,load_voltage,Load voltage,float,2,R,,V,5.2.1 RMS measured values,,decimals:1";
+    QTest::newRow("dtron300 process value: unit set on the device")
+            << "dtron300" << "0x0043,,filtered_process_value,Filtered process value,float,2,R,,,5.1 Process data,unit configured on the device: process_value,decimals:1";
 }
 
 void tst_Jumoctl::mapCsvContract()
@@ -96,7 +100,7 @@ void tst_Jumoctl::mapCsvContract()
     QCOMPARE(r.code, 0);
     QVERIFY2(r.err.isEmpty(), qPrintable(r.err));
     const QStringList lines = r.out.split('\n', Qt::SkipEmptyParts);
-    QCOMPARE(lines.first(), QString("address,bit,id,label,type,words,access,storage,unit,group,notes"));
+    QCOMPARE(lines.first(), QString("address,bit,id,label,type,words,access,storage,unit,group,notes,precision"));
     bool found = false;
     for (const QString &line : lines)
         found |= line.startsWith(row);
@@ -113,8 +117,14 @@ void tst_Jumoctl::mapCsvContract()
     for (qsizetype i = 1; i < lines.size(); ++i) {
         QVERIFY2(address.match(lines[i]).hasMatch(), qPrintable(lines[i]));
         const QStringList fields = splitCsv(lines[i]);
-        QCOMPARE(fields.size(), 11);
+        QCOMPARE(fields.size(), 12);
         QVERIFY2(types.contains(fields[4]), qPrintable(lines[i]));
+        // Every float shows its display precision, nothing else has one.
+        static const QRegularExpression precision("^(decimals:[0-6]|significant:[1-7])$");
+        if (fields[4] == "float")
+            QVERIFY2(precision.match(fields[11]).hasMatch(), qPrintable(lines[i]));
+        else
+            QVERIFY2(fields[11].isEmpty(), qPrintable(lines[i]));
         QVERIFY2(QStringList({"R", "W", "RW"}).contains(fields[6]), qPrintable(lines[i]));
     }
 }
@@ -128,6 +138,21 @@ void tst_Jumoctl::mapJson()
     QCOMPARE(root.value("protocol").toObject().value("maxReadWords").toInt(), 127);
     QVERIFY(root.value("entries").toArray().size() > 100);
     QCOMPARE(root.value("exceptions").toObject().value("6").toString().isEmpty(), false);
+    // Names for lists, units set on the device, and each float's display precision.
+    QCOMPARE(root.value("shortName").toString(), QString("TYA 200"));
+    QVERIFY(root.value("configuredUnits").toObject().value("monitored").toString().contains("V, A, W"));
+    QJsonObject current, alarmLimit;
+    for (const QJsonValue &e : root.value("entries").toArray()) {
+        if (e.toObject().value("id") == QString("load_current"))
+            current = e.toObject();
+        if (e.toObject().value("id") == QString("alarm_min_limit"))
+            alarmLimit = e.toObject();
+    }
+    QCOMPARE(current.value("unit").toString(), QString("A"));
+    QCOMPARE(current.value("significantDigits").toInt(), 4);
+    QVERIFY(!current.contains("decimals"));
+    QCOMPARE(alarmLimit.value("configuredUnit").toString(), QString("monitored"));
+    QCOMPARE(alarmLimit.value("decimals").toInt(), 1);
 }
 
 void tst_Jumoctl::planListsRequests()

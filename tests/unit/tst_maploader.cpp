@@ -93,6 +93,7 @@ private slots:
     void refusesBadMap_data();
     void refusesBadMap();
     void refusesMalformedJson();
+    void precisionFromTheMapOrTheUnit();
     void builtinMapsLoad();
     void userFolderReplacesBuiltinAndReportsBrokenFiles();
     void twoUserFilesOfOneFamilyAreRefused();
@@ -247,6 +248,91 @@ void tst_MapLoader::refusesBadMap_data()
     QTest::newRow("exception code 02") << Mutation([](QJsonObject &m) {
         m["exceptions"] = QJsonObject{{"02", "Invalid address"}};
     }) << "exceptions" << "'02' is not an exception code with a text";
+    QTest::newRow("decimals as a string") << Mutation([](QJsonObject &m) {
+        editEntry(m, 0, [](QJsonObject &e) { e["decimals"] = "1"; });
+    }) << "entry 'value_a' (0x0000)" << "'decimals' must be a whole number 0..6, not 1";
+    QTest::newRow("decimals beyond a float") << Mutation([](QJsonObject &m) {
+        editEntry(m, 0, [](QJsonObject &e) { e["decimals"] = 7; });
+    }) << "entry 'value_a' (0x0000)" << "'decimals' must be a whole number 0..6, not 7";
+    QTest::newRow("negative decimals") << Mutation([](QJsonObject &m) {
+        editEntry(m, 0, [](QJsonObject &e) { e["decimals"] = -1; });
+    }) << "entry 'value_a' (0x0000)" << "'decimals' must be a whole number 0..6, not -1";
+    QTest::newRow("fraction of a decimal") << Mutation([](QJsonObject &m) {
+        editEntry(m, 0, [](QJsonObject &e) { e["decimals"] = 1.5; });
+    }) << "entry 'value_a' (0x0000)" << "'decimals' must be a whole number 0..6, not 1.5";
+    QTest::newRow("no significant digit") << Mutation([](QJsonObject &m) {
+        editEntry(m, 0, [](QJsonObject &e) { e["significantDigits"] = 0; });
+    }) << "entry 'value_a' (0x0000)" << "'significantDigits' must be a whole number 1..7, not 0";
+    QTest::newRow("more significant digits than a float has") << Mutation([](QJsonObject &m) {
+        editEntry(m, 0, [](QJsonObject &e) { e["significantDigits"] = 9; });
+    }) << "entry 'value_a' (0x0000)" << "'significantDigits' must be a whole number 1..7, not 9";
+    QTest::newRow("decimals and significant digits") << Mutation([](QJsonObject &m) {
+        editEntry(m, 0, [](QJsonObject &e) {
+            e["decimals"] = 1;
+            e["significantDigits"] = 4;
+        });
+    }) << "entry 'value_a' (0x0000)" << "give 'decimals' or 'significantDigits', not both";
+    QTest::newRow("decimals of an enum") << Mutation([](QJsonObject &m) {
+        editEntry(m, 1, [](QJsonObject &e) { e["decimals"] = 1; });
+    }) << "entry 'mode' (0x0002)" << "'decimals' and 'significantDigits' are only for floats";
+    QTest::newRow("unit of a text") << Mutation([](QJsonObject &m) {
+        editEntry(m, 3, [](QJsonObject &e) { e["unit"] = "V"; });
+    }) << "entry 'name' (0x0004)" << "a unit is only for numbers";
+    QTest::newRow("configured unit nobody defines") << Mutation([](QJsonObject &m) {
+        editEntry(m, 0, [](QJsonObject &e) { e["configuredUnit"] = "process_value"; });
+    }) << "entry 'value_a' (0x0000)" << "'configuredUnit' names 'process_value', which 'configuredUnits' does not define";
+    QTest::newRow("unit and configured unit") << Mutation([](QJsonObject &m) {
+        m["configuredUnits"] = QJsonObject{{"process_value", "as set on the device"}};
+        editEntry(m, 0, [](QJsonObject &e) {
+            e["unit"] = "V";
+            e["configuredUnit"] = "process_value";
+        });
+    }) << "entry 'value_a' (0x0000)" << "give 'unit' or 'configuredUnit', not both";
+    QTest::newRow("configured unit without a text") << Mutation([](QJsonObject &m) {
+        m["configuredUnits"] = QJsonObject{{"process_value", 1}};
+    }) << "configuredUnits" << "'process_value' needs a text that says what decides the unit";
+    QTest::newRow("configured unit with a bad id") << Mutation([](QJsonObject &m) {
+        m["configuredUnits"] = QJsonObject{{"Process Value", "as set"}};
+    }) << "configuredUnits" << "'Process Value' is no id";
+    QTest::newRow("configured units as a list") << Mutation([](QJsonObject &m) {
+        m["configuredUnits"] = QJsonArray{"process_value"};
+    }) << "test.json" << "'configuredUnits' must be an object";
+    QTest::newRow("short name longer than a list has room for") << Mutation([](QJsonObject &m) {
+        m["shortName"] = "A short name that is not short at all";
+    }) << "test.json" << "'shortName' must be 1 to 24 characters";
+    QTest::newRow("blank short name") << Mutation([](QJsonObject &m) { m["shortName"] = " "; })
+                                      << "test.json" << "'shortName' must be 1 to 24 characters";
+    QTest::newRow("short name as a number") << Mutation([](QJsonObject &m) { m["shortName"] = 300; })
+                                            << "test.json" << "'shortName' must be a string, not 300";
+}
+
+void tst_MapLoader::precisionFromTheMapOrTheUnit()
+{
+    QJsonObject map = validMap();
+    map["shortName"] = "Test";
+    map["configuredUnits"] = QJsonObject{{"process_value", "as set on the device"}};
+    editEntry(map, 0, [](QJsonObject &e) { e["unit"] = "A"; });
+    appendEntry(map, QJsonObject{{"address", "0x0010"}, {"id", "voltage"}, {"label", "Voltage"}, {"type", "float"},
+                                 {"access", "R"}, {"group", "1 Test"}, {"unit", "V"}, {"significantDigits", 3}});
+    appendEntry(map, QJsonObject{{"address", "0x0012"}, {"id", "pv"}, {"label", "Process value"}, {"type", "float"},
+                                 {"access", "R"}, {"group", "1 Test"}, {"configuredUnit", "process_value"},
+                                 {"decimals", 2}});
+    appendEntry(map, QJsonObject{{"address", "0x0014"}, {"id", "ratio"}, {"label", "Ratio"}, {"type", "float"},
+                                 {"access", "R"}, {"group", "1 Test"}});
+    const MapLoadResult r = MapLoader::loadData(QJsonDocument(map).toJson(), "test.json");
+    QVERIFY2(r.ok(), qPrintable(r.errors.join('\n')));
+    QCOMPARE(r.map->shortName, QString("Test"));
+    QCOMPARE(r.map->entry("value_a")->precision, DisplayPrecision::significant(4));   // amperes by default
+    QVERIFY(!r.map->entry("value_a")->precisionFromMap);
+    QCOMPARE(r.map->entry("voltage")->precision, DisplayPrecision::significant(3));
+    QVERIFY(r.map->entry("voltage")->precisionFromMap);
+    QCOMPARE(r.map->entry("pv")->precision, DisplayPrecision::decimals(2));
+    QCOMPARE(r.map->entry("pv")->configuredUnit, QString("process_value"));
+    QCOMPARE(r.map->configuredUnits.value("process_value"), QString("as set on the device"));
+    QCOMPARE(r.map->entry("ratio")->precision, DisplayPrecision::decimals(1));
+    // Without a short name, lists show the name.
+    const MapLoadResult plain = MapLoader::loadData(QJsonDocument(validMap()).toJson(), "test.json");
+    QCOMPARE(plain.map->shortName, QString("Test device"));
 }
 
 void tst_MapLoader::refusesBadMap()
@@ -278,6 +364,14 @@ void tst_MapLoader::builtinMapsLoad()
     const FamilyRegistry registry = FamilyRegistry::load({}, true);
     QVERIFY2(registry.errors().isEmpty(), qPrintable(registry.errors().join('\n')));
     QCOMPARE(registry.familyIds(), QStringList({"dtron300", "ipc300", "quantrol", "tya200"}));
+    // Every float of the built-in maps has its unit, fixed or set on the device.
+    for (const auto &map : registry.families()) {
+        QVERIFY2(!map->shortName.isEmpty() && map->shortName.size() <= 12, qPrintable(map->shortName));
+        for (const RegisterEntry &e : map->entries()) {
+            if (e.type == ValueType::Float && !e.reserved)
+                QVERIFY2(!e.unit.isEmpty() || !e.configuredUnit.isEmpty(), qPrintable(map->family + ": " + e.id));
+        }
+    }
 }
 
 void tst_MapLoader::userFolderReplacesBuiltinAndReportsBrokenFiles()

@@ -1,0 +1,104 @@
+#include "protocol/valueformat.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace jumo {
+
+namespace {
+
+QLocale withoutGroups(QLocale locale)
+{
+    locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator | QLocale::RejectGroupSeparator);
+    return locale;
+}
+
+bool isNumeric(ValueType type)
+{
+    switch (type) {
+    case ValueType::Float:
+    case ValueType::Int16:
+    case ValueType::UInt16:
+    case ValueType::Int32:
+    case ValueType::UInt32:
+        return true;
+    default:
+        return false;
+    }
+}
+
+} // namespace
+
+QString ValueFormat::number(double value, DisplayPrecision precision, const QLocale &locale)
+{
+    if (!std::isfinite(value))
+        return QString::number(value);
+    int decimals = precision.digits;
+    if (precision.kind == DisplayPrecision::Kind::Significant && value != 0) {
+        const int magnitude = int(std::floor(std::log10(std::fabs(value))));
+        decimals = std::clamp(precision.digits - 1 - magnitude, 0, 9);
+        // 9.9996 to four digits is 10.00, not 10.000: rounding may add a digit in front.
+        const double scale = std::pow(10.0, decimals);
+        if (decimals > 0 && std::fabs(std::round(value * scale) / scale) >= std::pow(10.0, magnitude + 1))
+            --decimals;
+    } else if (precision.kind == DisplayPrecision::Kind::Significant) {
+        decimals = std::max(0, precision.digits - 1);
+    }
+    // A value that rounds to zero shows no sign: "-0.0" is no reading anyone writes down.
+    const double scale = std::pow(10.0, decimals);
+    if (std::round(std::fabs(value) * scale) == 0)
+        value = 0;
+    return withoutGroups(locale).toString(value, 'f', decimals);
+}
+
+QString ValueFormat::value(const DecodedValue &v, const RegisterEntry &entry, const QLocale &locale)
+{
+    if (!v.isOk() || !isNumeric(entry.type))
+        return v.display;
+    if (entry.type == ValueType::Float)
+        return number(v.value.toDouble(), entry.precision, locale);
+    return withoutGroups(locale).toString(v.value.toLongLong());
+}
+
+QString ValueFormat::joinUnit(const QString &number, const QString &unit)
+{
+    if (unit.isEmpty())
+        return number;
+    // Angles sit on the number (37.5°); every other unit is spaced (91.9 V, 45.0 %, 20.0 °C).
+    if (unit == QStringLiteral("°"))
+        return number + unit;
+    return number + QLatin1Char(' ') + unit;
+}
+
+QString ValueFormat::withUnit(const DecodedValue &v, const RegisterEntry &entry, const QLocale &locale)
+{
+    const QString text = value(v, entry, locale);
+    return v.isOk() && isNumeric(entry.type) ? joinUnit(text, entry.unit) : text;
+}
+
+QString ValueFormat::limit(double value, const RegisterEntry &entry, const QLocale &locale)
+{
+    if (entry.type != ValueType::Float)
+        return withoutGroups(locale).toString(qint64(value));
+    // A limit is exact: 0.5 stays 0.5 where values show whole numbers, and 100 stays 100.
+    const QString shown = number(value, entry.precision, locale);
+    if (withoutGroups(locale).toDouble(shown) == value)
+        return shown;
+    return withoutGroups(locale).toString(value, 'g', 7);
+}
+
+std::optional<QString> ValueFormat::parseNumber(const QString &text, const QLocale &locale)
+{
+    const QString t = text.trimmed();
+    bool ok = false;
+    const double v = withoutGroups(locale).toDouble(t, &ok);
+    if (ok && std::isfinite(v))
+        return QString::number(v, 'g', QLocale::FloatingPointShortest);
+    // The C locale's way works everywhere: 42.5 is never a German 425.
+    const double c = withoutGroups(QLocale::c()).toDouble(t, &ok);
+    if (ok && std::isfinite(c))
+        return QString::number(c, 'g', QLocale::FloatingPointShortest);
+    return std::nullopt;
+}
+
+} // namespace jumo

@@ -1,0 +1,38 @@
+// Numbers as an engineer writes them, for people: the entry's precision, the locale's
+// decimal sign, no thousands separators, the unit ("91,9 V" in German). Machine outputs
+// (CSV, JSON, parameter files) never come here: they keep the codec's own texts.
+#pragma once
+
+#include "protocol/registermap.h"
+#include "protocol/valuecodec.h"
+
+#include <QCoreApplication>
+#include <QLocale>
+
+#include <optional>
+
+namespace jumo {
+
+class ValueFormat
+{
+    Q_DECLARE_TR_FUNCTIONS(jumo::ValueFormat)
+
+public:
+    static QString number(double value, DisplayPrecision precision, const QLocale &locale = QLocale());
+    // A reading without its unit: numbers by the entry's precision and the locale;
+    // enums, texts, bit fields and error values as the codec words them.
+    static QString value(const DecodedValue &v, const RegisterEntry &entry, const QLocale &locale = QLocale());
+    // The same with the entry's unit where it has one.
+    static QString withUnit(const DecodedValue &v, const RegisterEntry &entry, const QLocale &locale = QLocale());
+    // "12.5 %", "37.5°": a number and a unit, spaced as the unit wants.
+    static QString joinUnit(const QString &number, const QString &unit);
+    // A limit of the entry (its min or max) as the entry's values are shown.
+    static QString limit(double value, const RegisterEntry &entry, const QLocale &locale = QLocale());
+    // What a person typed for a number, in the locale's way ("42,5") or with a dot, as
+    // the codec's text ("42.5"); nullopt when it is no number. Thousands separators are
+    // refused: "1.500" in German is 1.5, never 1500, so nothing is written a thousand
+    // times too large.
+    static std::optional<QString> parseNumber(const QString &text, const QLocale &locale = QLocale());
+};
+
+} // namespace jumo
