@@ -3,9 +3,59 @@
 #include <QDateTime>
 #include <QJsonDocument>
 
+#include <algorithm>
+
 namespace jumo {
 
 namespace {
+
+// Whether the ASCII needle (lower case) is in text, regardless of case.
+bool containsFolded(QByteArrayView text, QByteArrayView needle)
+{
+    const auto fold = [](char c) { return c >= 'A' && c <= 'Z' ? char(c + ('a' - 'A')) : c; };
+    return std::search(text.begin(), text.end(), needle.begin(), needle.end(),
+                       [&fold](char a, char b) { return fold(a) == b; })
+         != text.end();
+}
+
+// Whether a value of the line (a string or a bare number, true, false, null; never a
+// key) may hold the needle: a quick look at the line as it is, before it is parsed.
+// A string with escapes may hold it in another spelling: maybe.
+bool valueMayContain(QByteArrayView line, QByteArrayView needle)
+{
+    const auto endsBareValue = [](char c) { return c == ',' || c == '}' || c == ']' || c == ' ' || c == '\t'; };
+    const qsizetype n = line.size();
+    qsizetype i = 0;
+    while (i < n) {
+        const char c = line[i];
+        if (c == '"') {
+            const qsizetype start = ++i;
+            bool escaped = false;
+            while (i < n && line[i] != '"') {
+                escaped = escaped || line[i] == '\\';
+                i += line[i] == '\\' ? 2 : 1;
+            }
+            const qsizetype end = std::min(i, n);
+            ++i;
+            qsizetype next = i;
+            while (next < n && (line[next] == ' ' || line[next] == '\t'))
+                ++next;
+            if (next < n && line[next] == ':')
+                continue;   // a key
+            if (escaped || containsFolded(line.sliced(start, end - start), needle))
+                return true;
+        } else if (c == ',' || c == ':' || c == '{' || c == '}' || c == '[' || c == ']' || c == ' ' || c == '\t') {
+            ++i;
+        } else {
+            const qsizetype start = i;
+            while (i < n && !endsBareValue(line[i]))
+                ++i;
+            if (containsFolded(line.sliced(start, i - start), needle))
+                return true;
+        }
+    }
+    return false;
+}
 
 const QString shownTimeFormat = QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz");
 
@@ -43,15 +93,8 @@ bool RecordFilter::matches(QByteArrayView line)
         return false;
     if (m_text.isEmpty())
         return true;
-    if (m_rawSearch) {
-        m_lowered.resize(line.size());
-        for (qsizetype i = 0; i < line.size(); ++i) {
-            const char c = line[i];
-            m_lowered[i] = c >= 'A' && c <= 'Z' ? char(c + ('a' - 'A')) : c;
-        }
-        if (QByteArrayView(m_lowered).indexOf(m_needle) < 0)
-            return false;
-    }
+    if (m_rawSearch && !valueMayContain(line, m_needle))
+        return false;
     const QJsonDocument doc = QJsonDocument::fromJson(line.toByteArray());
     if (!doc.isObject())
         return false;

@@ -1,6 +1,7 @@
 // Which records of an event log a view shows, read straight from the log's lines: a
 // text found, regardless of case, in the shown text of any column (the time as shown,
-// in local time). Lines that cannot contain the text are passed over without parsing.
+// in local time). Lines whose values cannot contain the text are passed over without
+// parsing them.
 #pragma once
 
 #include <QByteArray>
@@ -33,7 +34,6 @@ private:
     QStringList m_columns;
     QByteArray m_needle;        // lower-case UTF-8, for the raw line
     bool m_rawSearch = false;   // the text appears in the line as it is shown
-    QByteArray m_lowered;
     QString m_minuteStored;     // "yyyy-MM-ddTHH:mm" and its local "yyyy-MM-dd HH:mm"
     QString m_minuteShown;
 };
