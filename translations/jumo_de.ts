@@ -320,7 +320,7 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::CommandLineTool</name>
     <message>
-        <location filename="../app/cli/commandlinetool.cpp" line="+20"/>
+        <location filename="../app/cli/commandlinetool.cpp" line="+23"/>
         <source>Usage: jumoctl COMMAND [options] [arguments]
 
 Commissioning and monitoring of JUMO power and process controllers over Modbus RTU.
@@ -385,7 +385,17 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
 </translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+54"/>
+        <source>jumoctl: the output could not be written: %1</source>
+        <translation>jumoctl: die Ausgabe konnte nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write failed</source>
+        <translation>Schreiben fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location line="+32"/>
         <source>warning: refused map file: %1</source>
         <translation>Warnung: Map-Datei abgelehnt: %1</translation>
     </message>
@@ -762,7 +772,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DataLogger</name>
     <message>
-        <location filename="../lib/logs/datalogger.cpp" line="+19"/>
+        <location filename="../lib/logs/datalogger.cpp" line="+26"/>
         <source>choose at least one value, an interval of at least 100 ms and files of at least 1 KiB</source>
         <translation>mindestens einen Wert, ein Intervall von mindestens 100 ms und Dateien von mindestens 1 KiB wählen</translation>
     </message>
@@ -772,8 +782,9 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>der Ordner %1 kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location line="+30"/>
-        <location line="+37"/>
+        <location line="+36"/>
+        <location line="+15"/>
+        <location line="+21"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -781,7 +792,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DataLoggingDialog</name>
     <message>
-        <location filename="../ui/dataloggingdialog.cpp" line="+22"/>
+        <location filename="../ui/dataloggingdialog.cpp" line="+23"/>
         <source>Data logging</source>
         <translation>Datenaufzeichnung</translation>
     </message>
@@ -796,7 +807,17 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation> MiB</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
+        <source>all</source>
+        <translation>alle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> newest files</source>
+        <translation> neueste Dateien</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Stopped: %1</source>
         <translation>Angehalten: %1</translation>
     </message>
@@ -809,6 +830,11 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <location line="+1"/>
         <source>New file after:</source>
         <translation>Neue Datei nach:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keep:</source>
+        <translation>Behalten:</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -829,7 +855,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Not started: %1</source>
         <translation>Nicht gestartet: %1</translation>
     </message>
@@ -986,48 +1012,134 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::EventLog</name>
     <message>
-        <location filename="../lib/logs/eventlog.cpp" line="+29"/>
-        <source>cannot read %1</source>
-        <translation>%1 kann nicht gelesen werden</translation>
-    </message>
-    <message>
-        <location line="+46"/>
+        <location filename="../lib/logs/eventlog.cpp" line="+158"/>
         <source>cannot write %1</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+62"/>
+        <source>the file is replaced again and again</source>
+        <translation>die Datei wird immer wieder ersetzt</translation>
+    </message>
+    <message>
+        <location line="-72"/>
+        <location line="+72"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
 </context>
 <context>
+    <name>jumo::EventLogModel</name>
+    <message>
+        <location filename="../lib/models/eventlogmodel.cpp" line="+73"/>
+        <source>unreadable record at byte %1 of %2</source>
+        <translation>unlesbarer Eintrag bei Byte %1 von %2</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::EventLogReader</name>
+    <message>
+        <location filename="../lib/logs/eventlogreader.cpp" line="+17"/>
+        <source>cannot read %1</source>
+        <translation>%1 kann nicht gelesen werden</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::EventLogScanner</name>
+    <message>
+        <location filename="../lib/logs/eventlogscanner.cpp" line="+36"/>
+        <source>cannot read %1</source>
+        <translation>%1 kann nicht gelesen werden</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+136"/>
+        <source>%n record(s) exported to %1</source>
+        <translation>
+            <numerusform>%n Eintrag nach %1 exportiert</numerusform>
+            <numerusform>%n Einträge nach %1 exportiert</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>jumo::EventLogView</name>
     <message>
-        <location filename="../ui/eventlogview.cpp" line="+33"/>
+        <location filename="../ui/eventlogview.cpp" line="+39"/>
         <source>Filter: device, entry, kind, text...</source>
         <translation>Filter: Gerät, Eintrag, Art, Text...</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-9"/>
         <source>Export CSV...</source>
         <translation>CSV exportieren...</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+3"/>
+        <location line="+19"/>
+        <location line="+13"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-13"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+4"/>
+        <source>Exporting to %1...</source>
+        <translation>Export nach %1...</translation>
+    </message>
+    <message>
+        <location line="+38"/>
         <source>Kept in %1</source>
         <translation>Gespeichert in %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+25"/>
+        <source>%n record(s)</source>
+        <translation>
+            <numerusform>%n Eintrag</numerusform>
+            <numerusform>%n Einträge</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n record(s) shown, reading older ones...</source>
+        <translation>
+            <numerusform>%n Eintrag angezeigt, ältere werden gelesen...</numerusform>
+            <numerusform>%n Einträge angezeigt, ältere werden gelesen...</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>the newest %n record(s); scroll down for older ones</source>
+        <translation>
+            <numerusform>der neueste Eintrag; nach unten blättern für ältere</numerusform>
+            <numerusform>die neuesten %n Einträge; nach unten blättern für ältere</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n matching record(s)</source>
+        <translation>
+            <numerusform>%n passender Eintrag</numerusform>
+            <numerusform>%n passende Einträge</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n matching record(s) so far, searching...</source>
+        <translation>
+            <numerusform>bisher %n passender Eintrag, Suche läuft...</numerusform>
+            <numerusform>bisher %n passende Einträge, Suche läuft...</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>the newest %n matching record(s); scroll down for older ones</source>
+        <translation>
+            <numerusform>der neueste passende Eintrag; nach unten blättern für ältere</numerusform>
+            <numerusform>die neuesten %n passenden Einträge; nach unten blättern für ältere</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1041,13 +1153,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::FileSaver</name>
     <message>
-        <location filename="../lib/protocol/filesaver.cpp" line="+16"/>
-        <location line="+19"/>
+        <location filename="../lib/protocol/filesaver.cpp" line="+53"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location line="-19"/>
+        <location line="-39"/>
         <source>not a regular file</source>
         <translation>keine reguläre Datei</translation>
     </message>
@@ -1125,7 +1236,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+64"/>
+        <location filename="../app/cli/linecommands.cpp" line="+68"/>
         <source>the audit log did not take a record: %1</source>
         <translation>das Audit-Protokoll hat einen Eintrag nicht aufgenommen: %1</translation>
     </message>
@@ -1374,13 +1485,13 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+387"/>
+        <location line="+393"/>
         <location line="+150"/>
         <source>FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="-535"/>
+        <location line="-541"/>
         <source>Entry ids.</source>
         <translation>Kennungen der Einträge.</translation>
     </message>
@@ -1426,12 +1537,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>--verify erwartet Adressen 1..255, nicht &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+291"/>
+        <location line="+297"/>
         <source>cannot read %1</source>
         <translation>%1 kann nicht gelesen werden</translation>
     </message>
     <message>
-        <location line="-660"/>
+        <location line="-666"/>
         <source>Never write to the line (control-room mode; the system configuration can set it for everyone).</source>
         <translation>Nie auf die Leitung schreiben (Leitwarten-Modus; die Systemkonfiguration kann ihn für alle festlegen).</translation>
     </message>
@@ -1564,7 +1675,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>&apos;%1&apos; ist kein lesbarer Eintrag von %2</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+103"/>
         <source>no differences</source>
         <translation>keine Unterschiede</translation>
     </message>
@@ -1675,12 +1786,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>%1 hat nicht geantwortet: kein Bericht geschrieben</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+20"/>
         <source>no report written: its writes of today are unknown: %1</source>
         <translation>kein Bericht geschrieben: die Schreibvorgänge von heute sind unbekannt: %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+11"/>
         <source>report of %1 written to %2</source>
         <translation>Bericht von %1 in %2 geschrieben</translation>
     </message>
@@ -1850,12 +1961,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
     </message>
     <message>
         <location line="+6"/>
-        <location line="+221"/>
+        <location line="+230"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-212"/>
+        <location line="-221"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -1895,12 +2006,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>NUR LESEN</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <source>Not logged: %1</source>
-        <translation>Nicht protokolliert: %1</translation>
+        <location line="+411"/>
+        <source>Data logging of %1 stopped: %2</source>
+        <translation>Datenaufzeichnung von %1 angehalten: %2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-377"/>
         <source>address %1: %2</source>
         <translation>Adresse %1: %2</translation>
     </message>
@@ -1950,7 +2061,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Datenaufzeichnung</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+7"/>
         <source>Commissioning &amp;report of the shown device...</source>
         <translation>Inbetriebnahme&amp;bericht des angezeigten Geräts...</translation>
     </message>
@@ -1961,14 +2072,22 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Bericht</translation>
     </message>
     <message>
-        <location line="-31"/>
+        <location line="-27"/>
         <location line="+9"/>
-        <location line="+14"/>
+        <location line="+10"/>
         <source>Open the page of a device first.</source>
         <translation>Zuerst die Seite eines Geräts öffnen.</translation>
     </message>
+    <message numerus="yes">
+        <location line="-87"/>
+        <source>Not logged (%n record(s) so far): %1</source>
+        <translation>
+            <numerusform>Nicht protokolliert (bisher %n Eintrag): %1</numerusform>
+            <numerusform>Nicht protokolliert (bisher %n Einträge): %1</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+4"/>
+        <location line="+91"/>
         <source>Commissioning report</source>
         <translation>Inbetriebnahmebericht</translation>
     </message>
@@ -2088,7 +2207,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Zuerst mit einer Leitung verbinden.</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+30"/>
         <source>no device %1@%2</source>
         <translation>kein Gerät %1@%2</translation>
     </message>
@@ -3178,12 +3297,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RegularFile</name>
     <message>
-        <location filename="../lib/protocol/regularfile.cpp" line="+32"/>
+        <location filename="../lib/protocol/regularfile.cpp" line="+49"/>
         <source>%1: not a regular file</source>
         <translation>%1: keine reguläre Datei</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+32"/>
         <source>%1: too big (%2 bytes, at most %3)</source>
         <translation>%1: zu groß (%2 Bytes, höchstens %3)</translation>
     </message>

@@ -16,7 +16,8 @@ namespace jumo {
 
 DataLoggingDialog::DataLoggingDialog(Bus *bus, DeviceId device, DataLogger *logger, QWidget *parent)
     : QDialog(parent), m_bus(bus), m_device(device), m_logger(logger), m_entries(new QListWidget(this)),
-      m_interval(new QSpinBox(this)), m_maxSize(new QSpinBox(this)), m_folder(new QLineEdit(this)),
+      m_interval(new QSpinBox(this)), m_maxSize(new QSpinBox(this)), m_keepFiles(new QSpinBox(this)),
+      m_folder(new QLineEdit(this)),
       m_startStop(new QPushButton(this)), m_state(new QLabel(this))
 {
     setWindowTitle(tr("Data logging"));
@@ -38,6 +39,11 @@ DataLoggingDialog::DataLoggingDialog(Bus *bus, DeviceId device, DataLogger *logg
     m_maxSize->setRange(1, 2048);
     m_maxSize->setValue(10);
     m_maxSize->setSuffix(tr(" MiB"));
+    m_keepFiles->setObjectName(QStringLiteral("keepFiles"));
+    m_keepFiles->setRange(0, 100000);
+    m_keepFiles->setSpecialValueText(tr("all"));
+    m_keepFiles->setSuffix(tr(" newest files"));
+    m_keepFiles->setValue(0);
     m_folder->setText(EventLog::defaultFolder() + QStringLiteral("/data"));
     connect(m_startStop, &QPushButton::clicked, this, &DataLoggingDialog::toggle);
     connect(m_logger, &DataLogger::failed, this, [this](const QString &reason) {
@@ -47,6 +53,7 @@ DataLoggingDialog::DataLoggingDialog(Bus *bus, DeviceId device, DataLogger *logg
     auto *form = new QFormLayout;
     form->addRow(tr("Interval:"), m_interval);
     form->addRow(tr("New file after:"), m_maxSize);
+    form->addRow(tr("Keep:"), m_keepFiles);
     form->addRow(tr("Folder:"), m_folder);
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     buttons->addButton(m_startStop, QDialogButtonBox::ActionRole);
@@ -73,6 +80,7 @@ void DataLoggingDialog::toggle()
     settings.folder = m_folder->text().trimmed();
     settings.intervalMs = m_interval->value();
     settings.maxFileBytes = qint64(m_maxSize->value()) * 1024 * 1024;
+    settings.keepFiles = m_keepFiles->value();
     for (int i = 0; i < m_entries->count(); ++i) {
         if (m_entries->item(i)->checkState() == Qt::Checked)
             settings.entries << qMakePair(m_device, m_entries->item(i)->data(Qt::UserRole).toString());
@@ -92,6 +100,7 @@ void DataLoggingDialog::refresh()
     m_entries->setEnabled(!running);
     m_interval->setEnabled(!running);
     m_maxSize->setEnabled(!running);
+    m_keepFiles->setEnabled(!running);
     m_folder->setEnabled(!running);
 }
 

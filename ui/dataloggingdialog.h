@@ -1,5 +1,6 @@
 // Starts and stops CSV data logging of chosen values of a device: which values, how
-// often, where, and how large a file may grow before the next one starts.
+// often, where, how large a file may grow before the next one starts, and how many of
+// the files written are kept.
 #pragma once
 
 #include "logs/datalogger.h"
@@ -31,6 +32,7 @@ private:
     QListWidget *m_entries;
     QSpinBox *m_interval;
     QSpinBox *m_maxSize;
+    QSpinBox *m_keepFiles;
     QLineEdit *m_folder;
     QPushButton *m_startStop;
     QLabel *m_state;

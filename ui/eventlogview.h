@@ -1,12 +1,15 @@
 // A page for an event log (alarm journal or write audit log): the records in a table,
-// a filter over all columns, and CSV export.
+// newest first, older ones loaded as the table is scrolled down to them; a filter over
+// all columns (searched in the background as the user types); CSV export of the log.
 #pragma once
 
 #include <QWidget>
 
+class QLabel;
 class QLineEdit;
-class QSortFilterProxyModel;
+class QPushButton;
 class QTableView;
+class QTimer;
 
 namespace jumo {
 
@@ -20,16 +23,21 @@ class EventLogView : public QWidget
 public:
     EventLogView(EventLog *log, const QStringList &columns, const QStringList &titles, QWidget *parent = nullptr);
 
+    EventLogModel *model() const { return m_model; }
+    QTableView *table() const { return m_table; }
     int visibleRows() const;
+    // At once (typing waits for a pause first).
     void setFilter(const QString &text);
 
 private:
-    EventLog *m_log;
-    QStringList m_columns;
+    void updateState();
+
     EventLogModel *m_model;
-    QSortFilterProxyModel *m_filter;
     QTableView *m_table;
     QLineEdit *m_filterEdit;
+    QTimer *m_typing;
+    QLabel *m_state;
+    QPushButton *m_exportButton;
 };
 
 } // namespace jumo

@@ -71,7 +71,7 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
                                     tr("Result"), tr("Message")},
                                    this)),
       m_lineStatus(new ElidedLabel(this)), m_loadStatus(new QLabel(this)),
-      m_errorStatus(new ElidedLabel(this))
+      m_errorStatus(new ElidedLabel(this)), m_logFailure(new ElidedLabel(this))
 {
     setObjectName(QStringLiteral("mainWindow"));
     // An administrator can fix read-only mode for a control room in the system-wide
@@ -165,17 +165,30 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
         statusBar()->addPermanentWidget(mode);
     }
     // A record the logs could not keep is no passing error: it stays until the end.
-    auto *logFailure = new ElidedLabel(this);
-    logFailure->setObjectName(QStringLiteral("logFailureStatus"));
-    logFailure->setStyleSheet(QStringLiteral("background: #ffd6d6; color: #600000; padding: 0 6px"));
-    logFailure->hide();
-    statusBar()->addPermanentWidget(logFailure);
+    m_logFailure->setObjectName(QStringLiteral("logFailureStatus"));
+    m_logFailure->setStyleSheet(QStringLiteral("background: #ffd6d6; color: #600000; padding: 0 6px"));
+    m_logFailure->hide();
+    statusBar()->addPermanentWidget(m_logFailure);
+    const EventLog::Rotation rotation = EventLog::Rotation::fromSettings(settings());
     for (EventLog *log : {m_journalLog, m_auditLog}) {
-        connect(log, &EventLog::writeFailed, logFailure, [logFailure](const QString &message) {
-            logFailure->setFullText(tr("Not logged: %1").arg(message));
-            logFailure->show();
+        log->setRotation(rotation);
+        connect(log, &EventLog::writeFailed, this, [this, log](const QString &message) {
+            ++m_unloggedRecords;
+            showLogFailure(QStringLiteral("logs"),
+                           tr("Not logged (%n record(s) so far): %1", nullptr, m_unloggedRecords).arg(message));
+            // The journal has the start of a failure of the audit log and its end, not
+            // every record lost in between.
+            if (log == m_auditLog && log->unwrittenRecords() == 1)
+                journalLogEvent(QString(), QStringLiteral("write_audit_log"), QStringLiteral("Write audit log"),
+                                QStringLiteral("not written: %1").arg(message));
         });
     }
+    connect(m_auditLog, &EventLog::writeRecovered, this, [this](int lost) {
+        journalLogEvent(QString(), QStringLiteral("write_audit_log"), QStringLiteral("Write audit log"),
+                        QStringLiteral("written again; %1 record(s) lost").arg(lost));
+    });
+    // The report lists the writes of the session: kept here, the log may be large.
+    connect(m_auditLog, &EventLog::appended, this, [this](const QJsonObject &record) { m_sessionWrites << record; });
     connect(&m_bus, &Bus::stateChanged, this, &MainWindow::onStateChanged);
     connect(&m_bus, &Bus::lineError, this, [this](const QString &message) { m_lastError = message; });
     connect(&m_bus, &Bus::traffic, this, [this](const TrafficRecord &record) {
@@ -242,12 +255,8 @@ void MainWindow::buildMenus()
             QMessageBox::information(this, tr("Data logging"), tr("Open the page of a device first."));
             return;
         }
-        // One logger per device, kept while the window lives, so logging goes on when
-        // the dialog is closed.
-        DeviceEntry &d = m_devices[index];
-        if (!d.logger)
-            d.logger = new DataLogger(&m_bus, this);
-        DataLoggingDialog dialog(&m_bus, d.id, d.logger, this);
+        const DeviceId id = m_devices[index].id;
+        DataLoggingDialog dialog(&m_bus, id, dataLogger(id), this);
         dialog.exec();
     });
     devices->addAction(tr("Commissioning &report of the shown device..."), this, [this] {
@@ -536,9 +545,8 @@ bool MainWindow::writeReport(const QString &family, quint8 address, const QStrin
                                    [this, id = d.id](const QString &entry) { return m_bus.entryState(id, entry); });
         const QString device = QStringLiteral("%1@%2").arg(family).arg(address);
         QList<QJsonObject> writes;
-        for (const QJsonObject &r : m_auditLog->records()) {
-            if (r.value("device").toString() == device
-                && QDateTime::fromString(r.value("time").toString(), Qt::ISODateWithMs) >= m_sessionStart)
+        for (const QJsonObject &r : std::as_const(m_sessionWrites)) {
+            if (r.value("device").toString() == device)
                 writes << r;
         }
         report.setWrites(writes);
@@ -547,6 +555,46 @@ bool MainWindow::writeReport(const QString &family, quint8 address, const QStrin
     if (error)
         *error = tr("no device %1@%2").arg(family).arg(address);
     return false;
+}
+
+DataLogger *MainWindow::dataLogger(DeviceId id)
+{
+    const int index = indexOf(id);
+    if (index < 0)
+        return nullptr;
+    // One logger per device, kept while the window lives, so logging goes on when the
+    // dialog is closed.
+    DeviceEntry &d = m_devices[index];
+    if (!d.logger) {
+        d.logger = new DataLogger(&m_bus, this);
+        connect(d.logger, &DataLogger::failed, this, [this, id](const QString &reason) {
+            const auto map = m_bus.deviceMap(id);
+            const QString device = map ? QStringLiteral("%1@%2").arg(map->family).arg(m_bus.deviceAddress(id)) : QString();
+            showLogFailure(QStringLiteral("data ") + device, tr("Data logging of %1 stopped: %2").arg(device, reason));
+            journalLogEvent(device, QStringLiteral("data_logging"), QStringLiteral("Data logging"),
+                            QStringLiteral("stopped: %1").arg(reason));
+        });
+    }
+    return d.logger;
+}
+
+void MainWindow::showLogFailure(const QString &source, const QString &message)
+{
+    m_logFailures.insert(source, message);
+    const QStringList all = m_logFailures.values();
+    m_logFailure->setFullText(all.join(QStringLiteral("; ")));
+    m_logFailure->show();
+}
+
+void MainWindow::journalLogEvent(const QString &device, const QString &id, const QString &label, const QString &state)
+{
+    m_journalLog->append(QJsonObject{{"device", device},
+                                     {"register", QString()},
+                                     {"bit", QString()},
+                                     {"id", id},
+                                     {"label", label},
+                                     {"kind", QStringLiteral("log")},
+                                     {"state", state}});
 }
 
 void MainWindow::restoreSettings()

@@ -5,7 +5,8 @@
 
 #include "bus/bus.h"
 
-#include <QDateTime>
+#include <QJsonObject>
+#include <QMap>
 #include <QMainWindow>
 #include <QSettings>
 
@@ -60,6 +61,10 @@ public:
     EventLogView *journalView() const { return m_journalView; }
     EventLogView *auditView() const { return m_auditView; }
 
+    // The data logger of a device, made when first asked for; a failure shows in the
+    // status bar and the journal.
+    DataLogger *dataLogger(DeviceId id);
+
     bool connectLine();
     void disconnectLine();
     // Adds a device to the line, the list and the overview; its page is made when shown.
@@ -104,6 +109,10 @@ private:
     void updateStatus();
     void restoreSettings();
     void saveSettings();
+    // A log that failed to keep a record, in the status bar until the window closes
+    // (the newest message of each source).
+    void showLogFailure(const QString &source, const QString &message);
+    void journalLogEvent(const QString &device, const QString &id, const QString &label, const QString &state);
     QSettings &settings();
 
     const FamilyRegistry &m_registry;
@@ -124,11 +133,14 @@ private:
     ElidedLabel *m_lineStatus;
     QLabel *m_loadStatus;
     ElidedLabel *m_errorStatus;
+    ElidedLabel *m_logFailure;
+    int m_unloggedRecords = 0;
+    QMap<QString, QString> m_logFailures;
+    QList<QJsonObject> m_sessionWrites;   // audit records appended by this window
     mutable QList<DeviceEntry> m_devices;
     int m_requestsAtLastStatus = 0;
     QString m_lastError;
     qint64 m_lastErrorShownMs = -1;
-    QDateTime m_sessionStart = QDateTime::currentDateTimeUtc();
 };
 
 } // namespace jumo

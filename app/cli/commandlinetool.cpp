@@ -1,10 +1,13 @@
 #include "commandlinetool.h"
 
+#include "exitcodes.h"
 #include "protocol/familyregistry.h"
 #include "linecommands.h"
 #include "mapcommands.h"
 #include "modbuslogging.h"
 #include "portcommands.h"
+
+#include <QFileDevice>
 
 namespace jumo {
 
@@ -59,6 +62,26 @@ void CommandLineTool::interrupt(int signal)
 
 std::optional<int> CommandLineTool::run(const QStringList &arguments)
 {
+    const std::optional<int> code = runCommand(arguments);
+    return code ? std::optional<int>(checkOutput(*code)) : std::nullopt;
+}
+
+int CommandLineTool::checkOutput(int code)
+{
+    // Output that went nowhere (stdout on a full disk) is no success: a script reading
+    // the file would take a part for the whole.
+    m_out.flush();
+    const auto *file = qobject_cast<const QFileDevice *>(m_out.device());
+    if (m_out.status() != QTextStream::WriteFailed && (!file || file->error() == QFileDevice::NoError))
+        return code;
+    m_err << tr("jumoctl: the output could not be written: %1")
+                     .arg(file && file->error() != QFileDevice::NoError ? file->errorString() : tr("write failed"))
+          << Qt::endl;
+    return code == exitcode::Ok ? exitcode::Failed : code;
+}
+
+std::optional<int> CommandLineTool::runCommand(const QStringList &arguments)
+{
     showModbusLogging(false);   // a line command's --verbose turns it on
     static const QStringList helpWords{QStringLiteral("--help"), QStringLiteral("--help-all"), QStringLiteral("-h"),
                                        QStringLiteral("help")};
@@ -93,7 +116,7 @@ std::optional<int> CommandLineTool::run(const QStringList &arguments)
         return maps.decode(rest);
     if (LineCommands::commands().contains(command)) {
         m_lineCommands = std::make_unique<LineCommands>(registry, m_out, m_err);
-        connect(m_lineCommands.get(), &LineCommands::finished, this, &CommandLineTool::finished);
+        connect(m_lineCommands.get(), &LineCommands::finished, this, [this](int code) { emit finished(checkOutput(code)); });
         return m_lineCommands->run(command, rest);
     }
 

@@ -1,5 +1,6 @@
 // The jumoctl command dispatcher: picks the command from the arguments, gives every
-// command its own --help, and reports errors on stderr with a non-zero exit code.
+// command its own --help, and reports errors on stderr with a non-zero exit code (also
+// when its output could not be written).
 #pragma once
 
 #include <QObject>
@@ -32,6 +33,9 @@ signals:
     void finished(int exitCode);
 
 private:
+    std::optional<int> runCommand(const QStringList &arguments);
+    // The exit code, made a failure when the output could not be written (said on stderr).
+    int checkOutput(int code);
     QString usage() const;
 
     QTextStream &m_out;

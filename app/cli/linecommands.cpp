@@ -11,6 +11,7 @@
 #include "commissioning/commissioningreport.h"
 #include "bus/devicescanner.h"
 #include "logs/eventlog.h"
+#include "logs/eventlogreader.h"
 #include "protocol/familyregistry.h"
 #include "protocol/filesaver.h"
 #include "protocol/printable.h"
@@ -21,8 +22,10 @@
 #include "systemsettings.h"
 
 #include <QDateTime>
+#include <QFileDevice>
 #include <QFileInfo>
 #include <QRegularExpression>
+#include <QSettings>
 
 #include <csignal>
 #include <QJsonArray>
@@ -57,8 +60,9 @@ LineCommands::LineCommands(const FamilyRegistry &registry, QTextStream &out, QTe
     : QObject(parent), m_registry(registry), m_out(out), m_err(err)
 {
     // Writes from the command line are audited like the HMI's, in the same log.
-    m_audit = new EventLog(EventLog::defaultFolder() + QStringLiteral("/write-audit.jsonl"), this,
-                           EventLog::Open::AppendOnly);
+    m_audit = new EventLog(EventLog::defaultFolder() + QStringLiteral("/write-audit.jsonl"), this);
+    // Rotated as the HMI rotates it: the same settings.
+    m_audit->setRotation(EventLog::Rotation::fromSettings(QSettings(QStringLiteral("jumo"), QStringLiteral("jumo-hmi"))));
     new WriteAudit(&m_bus, m_audit, this);
     connect(m_audit, &EventLog::writeFailed, this, [this](const QString &message) {
         m_err << tr("the audit log did not take a record: %1").arg(message) << Qt::endl;
@@ -696,6 +700,12 @@ void LineCommands::startMonitor(const QStringList &ids, int interval)
             }
             m_out.flush();
         }
+        // Polling on into output that goes nowhere would only hide the failure.
+        const auto *output = qobject_cast<const QFileDevice *>(m_out.device());
+        if (m_out.status() == QTextStream::WriteFailed || (output && output->error() != QFileDevice::NoError)) {
+            finish(exitcode::Failed);
+            return;
+        }
         ++target->cycles;
         if (m_cyclesWanted > 0
             && std::all_of(m_targets.cbegin(), m_targets.cend(), [this](const Target &t) { return t.cycles >= m_cyclesWanted; }))
@@ -943,19 +953,23 @@ void LineCommands::startReport(const QString &path)
         }
         CommissioningReport report(*t.map, t.address, [this, id](const QString &entry) { return m_bus.entryState(id, entry); });
         // The command line has no session: its writes of today stand in for one.
-        const EventLog audit(EventLog::defaultFolder() + QStringLiteral("/write-audit.jsonl"));
+        // Read back from the newest to the first record before today, so that a large
+        // log costs no more than its recent part.
+        EventLogReader audit(EventLog::defaultFolder() + QStringLiteral("/write-audit.jsonl"));
+        const QString device = deviceName(*t.map, t.address);
+        const QDateTime since = QDateTime(QDate::currentDate(), QTime(0, 0));
+        QList<QJsonObject> writes;
+        while (const std::optional<QJsonObject> r = audit.previous()) {
+            const QDateTime time = QDateTime::fromString(r->value("time").toString(), Qt::ISODateWithMs);
+            if (time.isValid() && time < since)
+                break;
+            if (r->value("device").toString() == device)
+                writes.prepend(*r);
+        }
         if (!audit.lastError().isEmpty()) {
             m_err << tr("no report written: its writes of today are unknown: %1").arg(audit.lastError()) << Qt::endl;
             finish(exitcode::Failed);
             return;
-        }
-        const QString device = deviceName(*t.map, t.address);
-        const QDateTime since = QDateTime(QDate::currentDate(), QTime(0, 0));
-        QList<QJsonObject> writes;
-        for (const QJsonObject &r : audit.records()) {
-            if (r.value("device").toString() == device
-                && QDateTime::fromString(r.value("time").toString(), Qt::ISODateWithMs) >= since)
-                writes << r;
         }
         report.setWrites(writes);
         QString error;

@@ -3,6 +3,13 @@
 
 #include <QDateTime>
 #include <QDir>
+#include <QLoggingCategory>
+
+#include <cerrno>
+#include <cstring>
+#include <unistd.h>
+
+Q_DECLARE_LOGGING_CATEGORY(lcLog)
 
 namespace jumo {
 
@@ -14,7 +21,7 @@ DataLogger::DataLogger(Bus *bus, QObject *parent) : QObject(parent), m_bus(bus)
 bool DataLogger::start(const Settings &settings, QString *error)
 {
     stop();
-    if (settings.entries.isEmpty() || settings.intervalMs < 100 || settings.maxFileBytes < 1024) {
+    if (settings.entries.isEmpty() || settings.intervalMs < 100 || settings.maxFileBytes < 1024 || settings.keepFiles < 0) {
         if (error)
             *error = tr("choose at least one value, an interval of at least 100 ms and files of at least 1 KiB");
         return false;
@@ -27,8 +34,10 @@ bool DataLogger::start(const Settings &settings, QString *error)
     }
     m_files.clear();
     m_rows = 0;
-    if (!openNewFile(error))
+    if (!openNewFile(error)) {
+        m_file.close();
         return false;
+    }
     m_timer.start(settings.intervalMs);
     return true;
 }
@@ -36,28 +45,74 @@ bool DataLogger::start(const Settings &settings, QString *error)
 void DataLogger::stop()
 {
     m_timer.stop();
-    if (m_file.isOpen())
-        m_file.close();
+    QString error;
+    if (!closeFile(&error))
+        emit failed(error);
+}
+
+void DataLogger::fail(const QString &reason)
+{
+    m_timer.stop();
+    m_file.close();
+    emit failed(reason);
+}
+
+bool DataLogger::closeFile(QString *error)
+{
+    if (!m_file.isOpen())
+        return true;
+    const bool ok = ::fdatasync(m_file.handle()) == 0;
+    const int code = errno;
+    m_file.close();
+    if (!ok && error)
+        *error = tr("cannot write %1: %2").arg(m_file.fileName(), QString::fromLocal8Bit(std::strerror(code)));
+    return ok;
+}
+
+bool DataLogger::write(const QByteArray &rows, QString *error)
+{
+    // Straight to the file, so that a write cut short (a full disk) is told with the
+    // system's reason, which QFile leaves out then.
+    qint64 written = 0;
+    while (written < rows.size()) {
+        const ssize_t n = ::write(m_file.handle(), rows.constData() + written, size_t(rows.size() - written));
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0) {
+            if (error)
+                *error = tr("cannot write %1: %2")
+                                 .arg(m_file.fileName(), QString::fromLocal8Bit(std::strerror(n < 0 ? errno : ENOSPC)));
+            return false;
+        }
+        written += n;
+    }
+    return true;
 }
 
 bool DataLogger::openNewFile(QString *error)
 {
-    if (m_file.isOpen())
-        m_file.close();
+    if (!closeFile(error))
+        return false;
     const QDateTime now = QDateTime::currentDateTime();
     QString name = QDir(m_settings.folder).filePath(QStringLiteral("jumo-data-%1.csv").arg(now.toString(QStringLiteral("yyyyMMdd-HHmmss"))));
     for (int n = 2; QFile::exists(name); ++n)   // two files within one second
         name = QDir(m_settings.folder)
                        .filePath(QStringLiteral("jumo-data-%1-%2.csv").arg(now.toString(QStringLiteral("yyyyMMdd-HHmmss"))).arg(n));
     m_file.setFileName(name);
-    if (!m_file.open(QIODevice::WriteOnly | QIODevice::Text)) {
+    if (!m_file.open(QIODevice::WriteOnly | QIODevice::Unbuffered)) {
         if (error)
             *error = tr("cannot write %1: %2").arg(name, m_file.errorString());
         return false;
     }
-    m_file.write("time,device,id,value,unit,status\n");
     m_fileDate = now.date();
     m_files << name;
+    if (!write("time,device,id,value,unit,status\n", error))
+        return false;
+    while (m_settings.keepFiles > 0 && m_files.size() > m_settings.keepFiles) {
+        const QString oldest = m_files.takeFirst();
+        if (!QFile::remove(oldest))
+            qCWarning(lcLog).noquote() << "cannot remove" << oldest;
+    }
     return true;
 }
 
@@ -66,13 +121,13 @@ void DataLogger::sample()
     if (m_file.size() >= m_settings.maxFileBytes || QDate::currentDate() != m_fileDate) {
         QString error;
         if (!openNewFile(&error)) {
-            stop();
-            emit failed(error);
+            fail(error);
             return;
         }
     }
     const QString time = QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs);
     QByteArray rows;
+    int count = 0;
     for (const auto &[device, id] : std::as_const(m_settings.entries)) {
         const auto map = m_bus->deviceMap(device);
         if (!map)
@@ -86,15 +141,14 @@ void DataLogger::sample()
                         .arg(m_bus->deviceAddress(device))
                         .arg(id, value, e ? e->unit : QString(), s ? s->statusName() : QStringLiteral("not_read"))
                         .toUtf8();
-        ++m_rows;
+        ++count;
     }
-    if (m_file.write(rows) < 0) {
-        const QString reason = tr("cannot write %1: %2").arg(m_file.fileName(), m_file.errorString());
-        stop();
-        emit failed(reason);
+    QString error;
+    if (!write(rows, &error)) {
+        fail(error);
         return;
     }
-    m_file.flush();
+    m_rows += count;
 }
 
 } // namespace jumo

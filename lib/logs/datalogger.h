@@ -1,6 +1,8 @@
 // Logs chosen live values of chosen devices to CSV files at a fixed interval, starting a
-// new file when one grows past a size or the day changes. Rows are the same as
-// "jumoctl monitor --csv": time,device,id,value,unit,status.
+// new file when one grows past a size or the day changes, keeping the newest files it
+// wrote when asked to. Rows are the same as "jumoctl monitor --csv":
+// time,device,id,value,unit,status. Every write is checked: logging stops and says why
+// (failed) rather than go on with rows that never reach the disk.
 #pragma once
 
 #include "bus/bus.h"
@@ -21,6 +23,7 @@ public:
         QString folder;
         int intervalMs = 1000;
         qint64 maxFileBytes = 10 * 1024 * 1024;
+        int keepFiles = 0;   // of the files this logger wrote, the newest kept; 0: all
         QList<QPair<DeviceId, QString>> entries;   // device, entry id
     };
 
@@ -39,6 +42,11 @@ signals:
 private:
     void sample();
     bool openNewFile(QString *error);
+    bool write(const QByteArray &rows, QString *error);
+    // Flushed and synced, so that a power cut after a new file started loses nothing of
+    // the old one.
+    bool closeFile(QString *error);
+    void fail(const QString &reason);
 
     Bus *m_bus;
     Settings m_settings;

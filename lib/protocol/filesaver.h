@@ -5,7 +5,9 @@
 #pragma once
 
 #include <QByteArray>
+#include <QByteArrayView>
 #include <QCoreApplication>
+#include <QSaveFile>
 #include <QString>
 
 namespace jumo {
@@ -15,8 +17,26 @@ class FileSaver
     Q_DECLARE_TR_FUNCTIONS(jumo::FileSaver)
 
 public:
+    // A file written in parts (an export of a large log): write() as often as needed,
+    // then commit(). Destroyed without a commit, nothing replaces the previous file.
+    explicit FileSaver(const QString &path);
+    ~FileSaver();
+    FileSaver(const FileSaver &) = delete;
+    FileSaver &operator=(const FileSaver &) = delete;
+
+    // false once any write failed; later writes are ignored.
+    bool write(QByteArrayView data);
     // On failure: false, and "cannot write PATH: reason" in error.
+    bool commit(QString *error);
+
+    // The whole file at once.
     static bool save(const QString &path, const QByteArray &data, QString *error);
+
+private:
+    QString m_path;
+    QSaveFile m_file;
+    bool m_ok = false;
+    QString m_reason;
 };
 
 } // namespace jumo

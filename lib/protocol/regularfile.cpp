@@ -15,24 +15,12 @@ QString systemError(int code)
     return QString::fromLocal8Bit(std::strerror(code));
 }
 
-// Opens with O_NONBLOCK, so that a FIFO does not wait for a writer, looks at what was
-// opened, and hands a regular file on to QFile in blocking mode.
+// Hands a regular file opened by RegularFile::openDescriptor on to QFile.
 bool openRegular(QFile &file, const QString &path, int flags, QIODevice::OpenMode mode, QString *error)
 {
-    const int fd = ::open(QFile::encodeName(path).constData(), flags | O_NONBLOCK | O_CLOEXEC | O_NOCTTY, 0644);
-    if (fd < 0) {
-        if (error)
-            *error = QStringLiteral("%1: %2").arg(path, systemError(errno));
+    const int fd = RegularFile::openDescriptor(path, flags, error);
+    if (fd < 0)
         return false;
-    }
-    struct stat info = {};
-    if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
-        ::close(fd);
-        if (error)
-            *error = RegularFile::tr("%1: not a regular file").arg(path);
-        return false;
-    }
-    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
     if (!file.open(fd, mode, QFileDevice::AutoCloseHandle)) {
         ::close(fd);
         if (error)
@@ -43,6 +31,27 @@ bool openRegular(QFile &file, const QString &path, int flags, QIODevice::OpenMod
 }
 
 } // namespace
+
+// Opens with O_NONBLOCK, so that a FIFO does not wait for a writer, looks at what was
+// opened, and leaves a regular file in blocking mode.
+int RegularFile::openDescriptor(const QString &path, int flags, QString *error)
+{
+    const int fd = ::open(QFile::encodeName(path).constData(), flags | O_NONBLOCK | O_CLOEXEC | O_NOCTTY, 0644);
+    if (fd < 0) {
+        if (error)
+            *error = QStringLiteral("%1: %2").arg(path, systemError(errno));
+        return -1;
+    }
+    struct stat info = {};
+    if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
+        ::close(fd);
+        if (error)
+            *error = tr("%1: not a regular file").arg(path);
+        return -1;
+    }
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+    return fd;
+}
 
 bool RegularFile::openForReading(QFile &file, const QString &path, QString *error)
 {

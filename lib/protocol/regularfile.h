@@ -26,6 +26,9 @@ public:
     // file; false with the reason in error. Never blocks on a FIFO.
     static bool openForReading(QFile &file, const QString &path, QString *error);
     static bool openForAppending(QFile &file, const QString &path, QString *error);
+    // The same for a plain descriptor (open(2) flags; O_CREAT creates with mode 0644):
+    // the descriptor of a regular file, else -1 with the reason in error.
+    static int openDescriptor(const QString &path, int flags, QString *error);
 };
 
 } // namespace jumo

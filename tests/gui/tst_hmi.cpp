@@ -3,11 +3,16 @@
 // an error value shown as what it is; bits switched one at a time; a pulled line shown
 // as such everywhere; a paused trend never joins the points around the pause; stale
 // alarm words never read as a live all-clear; a device of another family at an address is
-// refused (nothing shown, nothing written), also when it replaces the right one.
+// refused (nothing shown, nothing written), also when it replaces the right one; a log
+// that cannot keep a record (a full disk) shows in the status bar and the journal; a large
+// journal opens at its newest records and pages back.
 #include "bitswitches.h"
 #include "connectionbar.h"
 #include "controlrow.h"
 #include "logs/eventlog.h"
+#include "logrecords.h"
+#include "models/eventlogmodel.h"
+#include "smalldisk.h"
 #include "eventlogview.h"
 #include "controlspanel.h"
 #include "devicepage.h"
@@ -35,7 +40,10 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QJsonDocument>
+#include <QLineEdit>
 #include <QSpinBox>
+#include <QTableView>
 #include <QTest>
 
 using namespace jumo;
@@ -63,6 +71,26 @@ void clickAndConfirm(QPushButton *button)
     QCOMPARE(answered, 1);
 }
 
+// The states of the journal's records of a kind of log event (write_audit_log, data_logging).
+QStringList journalStates(const MainWindow &window, const QString &id)
+{
+    QStringList out;
+    for (const QJsonObject &r : logRecords(window.alarmJournal()->path())) {
+        if (r.value("id").toString() == id && r.value("kind").toString() == "log")
+            out << r.value("state").toString();
+    }
+    return out;
+}
+
+bool visibleMessageBox()
+{
+    for (QWidget *w : QApplication::topLevelWidgets()) {
+        if (qobject_cast<QMessageBox *>(w) && w->isVisible())
+            return true;
+    }
+    return false;
+}
+
 } // namespace
 
 class tst_Hmi : public QObject
@@ -83,6 +111,8 @@ private slots:
     void pulledLineShowsEverywhere();
     void tileOpensItsOwnDeviceAfterARemoval();
     void lostAuditRecordShowsInTheStatusBar();
+    void fullDiskShowsInTheStatusBarAndJournal();
+    void largeJournalShowsNewestAndPagesBack();
     void trendPauseLeavesAGap();
     void staleAlarmsAreNotShownAsLive();
     void wrongFamilyIsRefused();
@@ -185,7 +215,7 @@ void tst_Hmi::alarmLedTurnsOn()
 
     // The journal has the alarm set and cleared, with device and register.
     QStringList states;
-    for (const QJsonObject &r : window->alarmJournal()->records()) {
+    for (const QJsonObject &r : logRecords(window->alarmJournal()->path())) {
         if (r.value("id").toString() == "malfunction_signal_1.fuse_failure") {
             QCOMPARE(r.value("device").toString(), QString("ipc300@1"));
             QCOMPARE(r.value("register").toString(), QString("0x00ED"));
@@ -195,7 +225,7 @@ void tst_Hmi::alarmLedTurnsOn()
     }
     QCOMPARE(states, QStringList({"set", "cleared"}));
     window->journalView()->setFilter("fuse");
-    QCOMPARE(window->journalView()->visibleRows(), 2);
+    QTRY_COMPARE(window->journalView()->visibleRows(), 2);
 }
 
 void tst_Hmi::setpointIsConfirmedByReadBack()
@@ -266,7 +296,7 @@ void tst_Hmi::readOnlyDisablesControlsAndSendsNothing()
     QTest::qWait(500);
     QCOMPARE(m_sim.writeFrames(), before);
     // The audit log has the refusal.
-    const QJsonObject last = window->auditLog()->records().last();
+    const QJsonObject last = logRecords(window->auditLog()->path()).last();
     QCOMPARE(last.value("device").toString(), QString("ipc300@1"));
     QCOMPARE(last.value("entry").toString(), QString("input_setpoint"));
     QCOMPARE(last.value("new").toString(), QString("12"));
@@ -279,16 +309,16 @@ void tst_Hmi::journalAndAuditSurviveARestart()
     auto window = connectedWindow(false);
     QVERIFY(window);
     bool refusal = false;
-    for (const QJsonObject &r : window->auditLog()->records())
+    for (const QJsonObject &r : logRecords(window->auditLog()->path()))
         refusal |= r.value("result").toString() == "read_only";
     QVERIFY(refusal);
     bool cleared = false;
-    for (const QJsonObject &r : window->alarmJournal()->records())
+    for (const QJsonObject &r : logRecords(window->alarmJournal()->path()))
         cleared |= r.value("id").toString() == "malfunction_signal_1.fuse_failure" && r.value("state").toString() == "cleared";
     QVERIFY(cleared);
     window->showDevice("ipc300", 1);
     window->auditView()->setFilter("read_only");
-    QVERIFY(window->auditView()->visibleRows() >= 1);
+    QTRY_VERIFY(window->auditView()->visibleRows() >= 1);
 }
 
 void tst_Hmi::errorValueShowsAsOverrange()
@@ -460,7 +490,7 @@ void tst_Hmi::pulledLineShowsEverywhere()
 
     // The journal has the loss of each device.
     const auto communication = [&](const QString &device, const QString &state) {
-        for (const QJsonObject &r : window->alarmJournal()->records()) {
+        for (const QJsonObject &r : logRecords(window->alarmJournal()->path())) {
             if (r.value("id").toString() == "communication" && r.value("device").toString() == device
                 && r.value("state").toString() == state
                 && QDateTime::fromString(r.value("time").toString(), Qt::ISODateWithMs) >= pulledAt.addSecs(-1))
@@ -539,6 +569,146 @@ void tst_Hmi::lostAuditRecordShowsInTheStatusBar()
     QTRY_VERIFY_WITH_TIMEOUT(row->stateText().startsWith("Confirmed"), 20000);
     QTRY_VERIFY(status->isVisible());
     QVERIFY2(status->fullText().contains("write-audit.jsonl: Is a directory"), qPrintable(status->fullText()));
+    // A second lost record: the status bar counts it, the journal has the failure once,
+    // and nothing pops up.
+    row->setInputValue("38.5");
+    QTest::mouseClick(row->findChild<QPushButton *>("write_input_setpoint"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(row->stateText().startsWith("Confirmed") && row->stateText().contains("38.5"), 20000);
+    QTRY_VERIFY2(status->fullText().contains("2 record(s)"), qPrintable(status->fullText()));
+    QCOMPARE(journalStates(*window, "write_audit_log"),
+             QStringList{"not written: cannot write " + logs + "/write-audit.jsonl: Is a directory"});
+    QVERIFY(!visibleMessageBox());
+}
+
+void tst_Hmi::fullDiskShowsInTheStatusBarAndJournal()
+{
+    // The audit log and the data logger write to a small disk that fills up; the
+    // journal is on another one and tells what was lost.
+    SmallDisk disk;
+    if (!disk.mount(256))
+        QSKIP("no small tmpfs can be mounted here (needs root)");
+    const QString logs = m_dir.filePath(QStringLiteral("logs-full-disk"));
+    QVERIFY(QDir().mkpath(logs));
+    QVERIFY(QFile::link(disk.filePath("write-audit.jsonl"), logs + "/write-audit.jsonl"));
+    auto window = connectedWindow(false, logs);
+    QVERIFY(window);
+    auto *status = window->findChild<ElidedLabel *>("logFailureStatus");
+    DevicePage *page = window->devicePage("ipc300", 1);
+    DataLogger *logger = window->dataLogger(page->device());
+    DataLogger::Settings settings;
+    settings.folder = disk.filePath("data");
+    settings.intervalMs = 100;
+    settings.entries = {{page->device(), "load_current"}};
+    QString error;
+    QVERIFY2(logger->start(settings, &error), qPrintable(error));
+    QTRY_VERIFY_WITH_TIMEOUT(logger->rowsWritten() > 0, 20000);
+    QVERIFY(!status->isVisible());
+
+    disk.fill();
+    ControlRow *row = page->controls()->row("input_setpoint");
+    row->setInputValue("37.5");
+    QTest::mouseClick(row->findChild<QPushButton *>("write_input_setpoint"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(row->stateText().startsWith("Confirmed") && row->stateText().contains("37.5"), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(!logger->isRunning(), 20000);
+    QTRY_VERIFY(status->isVisible());
+    QVERIFY2(status->fullText().contains("write-audit.jsonl: No space left on device"), qPrintable(status->fullText()));
+    QVERIFY2(status->fullText().contains("Data logging of ipc300@1 stopped: cannot write " + disk.path()),
+             qPrintable(status->fullText()));
+    QCOMPARE(journalStates(*window, "write_audit_log"),
+             QStringList{"not written: cannot write " + logs + "/write-audit.jsonl: No space left on device"});
+    const QStringList logging = journalStates(*window, "data_logging");
+    QCOMPARE(logging.size(), 1);
+    QVERIFY2(logging.first().startsWith("stopped: cannot write " + disk.path()) && logging.first().endsWith("No space left on device"),
+             qPrintable(logging.first()));
+    QVERIFY(!visibleMessageBox());
+
+    // Room again: the next record is kept, and the journal says how many were lost.
+    disk.free();
+    row->setInputValue("34.5");
+    QTest::mouseClick(row->findChild<QPushButton *>("write_input_setpoint"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(row->stateText().startsWith("Confirmed") && row->stateText().contains("34.5"), 20000);
+    QTRY_COMPARE(journalStates(*window, "write_audit_log").size(), 2);
+    QCOMPARE(journalStates(*window, "write_audit_log").last(), QString("written again; 1 record(s) lost"));
+    const QList<QJsonObject> audit = logRecords(window->auditLog()->path());
+    QCOMPARE(audit.size(), 1);
+    QCOMPARE(audit.last().value("new").toString(), QString("34.5"));
+}
+
+void tst_Hmi::largeJournalShowsNewestAndPagesBack()
+{
+    // 100000 records on disk: the page shows the newest at once and older ones as the
+    // table is scrolled down to them.
+    const QString logs = m_dir.filePath(QStringLiteral("large-logs"));
+    QVERIFY(QDir().mkpath(logs));
+    constexpr int records = 100000;
+    {
+        QFile f(logs + "/alarm-journal.jsonl");
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        const QDateTime start = QDateTime::currentDateTimeUtc().addDays(-2);
+        QByteArray data;
+        for (int n = 0; n < records; ++n) {
+            data += QJsonDocument(QJsonObject{{"time", start.addMSecs(n * 1000).toString(Qt::ISODateWithMs)},
+                                              {"device", "ipc300@1"}, {"register", "0x00ED"}, {"bit", 7},
+                                              {"id", QStringLiteral("record %1").arg(n)}, {"label", "Fuse failure"},
+                                              {"kind", "alarm"}, {"state", n % 2 ? "cleared" : "set"}})
+                            .toJson(QJsonDocument::Compact)
+                  + '\n';
+        }
+        QCOMPARE(f.write(data), data.size());
+    }
+    MainWindow::Options options;
+    options.settingsFile = m_dir.filePath("large.ini");
+    options.logFolder = logs;
+    MainWindow window(families(), options);
+    window.show();
+    window.findChild<QListWidget *>("navigation")->setCurrentRow(2);
+    EventLogView *view = window.journalView();
+    QVERIFY(view->isVisible());
+    QTableView *table = view->table();
+    EventLogModel *model = view->model();
+    constexpr int idColumn = 4;
+    auto idAt = [&](int row) { return model->index(row, idColumn).data().toString(); };
+    QTRY_VERIFY(model->rowCount() > 0);
+    QCOMPARE(idAt(0), QString("record 99999"));
+    QVERIFY(model->rowCount() < records);
+    QCOMPARE(table->indexAt(QPoint(1, 1)).row(), 0);   // the newest is in view
+    auto *state = view->findChild<QLabel *>("logState");
+    QTRY_VERIFY2(state->text().contains("scroll down for older ones"), qPrintable(state->text()));
+
+    // Scrolled down, again and again: older records come until the oldest.
+    for (int round = 0; round < 200 && !model->isComplete(); ++round) {
+        const int before = model->rowCount();
+        table->scrollToBottom();
+        QTRY_VERIFY(model->rowCount() > before || model->isComplete());
+    }
+    QVERIFY(model->isComplete());
+    QCOMPARE(model->rowCount(), records);
+    QCOMPARE(idAt(records - 1), QString("record 0"));
+    QCOMPARE(idAt(records / 2), QStringLiteral("record %1").arg(records / 2 - 1));
+    QCOMPARE(state->text(), QStringLiteral("%1 record(s)").arg(records));
+
+    // A new record while the user looks at the oldest: it comes on top, the user's
+    // view stays where it was.
+    const QString inView = model->index(table->indexAt(QPoint(1, 1)).row(), idColumn).data().toString();
+    QVERIFY(window.alarmJournal()->append(QJsonObject{{"device", "ipc300@1"}, {"id", "record new"}}));
+    QTRY_COMPARE(idAt(0), QString("record new"));
+    QCOMPARE(model->index(table->indexAt(QPoint(1, 1)).row(), idColumn).data().toString(), inView);
+    table->scrollToTop();
+    QCOMPARE(table->indexAt(QPoint(1, 1)).row(), 0);
+
+    // The filter searches all of it.
+    view->setFilter("record 54321");
+    QTRY_VERIFY(model->isComplete());
+    QCOMPARE(model->rowCount(), 1);
+    QCOMPARE(idAt(0), QString("record 54321"));
+    // Typed: the search starts when the typing pauses.
+    auto *filter = view->findChild<QLineEdit *>("logFilter");
+    filter->clear();
+    QTest::keyClicks(filter, "record 77777");
+    QTRY_COMPARE(model->filter(), QString("record 77777"));
+    QTRY_VERIFY(model->isComplete());
+    QCOMPARE(model->rowCount(), 1);
+    QCOMPARE(idAt(0), QString("record 77777"));
 }
 
 void tst_Hmi::trendPauseLeavesAGap()
@@ -608,7 +778,7 @@ namespace {
 
 bool hasRecord(MainWindow &window, const QString &device, const QString &stateStart)
 {
-    for (const QJsonObject &r : window.alarmJournal()->records()) {
+    for (const QJsonObject &r : logRecords(window.alarmJournal()->path())) {
         if (r.value("id").toString() == "communication" && r.value("device").toString() == device
             && r.value("state").toString().startsWith(stateStart))
             return true;

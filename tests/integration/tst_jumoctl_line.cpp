@@ -30,6 +30,7 @@ private slots:
     void readOnlyWriteSendsNothing();
     void monitorJsonl();
     void monitorCsv();
+    void monitorIntoAFullDiskStops();
     void absentDeviceIsATimeout();
     void badPortIsAClearError();
     void backupChangeDiffRestore();
@@ -191,6 +192,19 @@ void tst_JumoctlLine::monitorCsv()
     QCOMPARE(lines.size(), 1 + 3 * 2);
     QVERIFY(lines[1].contains(",ipc300@1,load_current,"));
     QVERIFY(lines[1].endsWith(",A,ok"));
+}
+
+void tst_JumoctlLine::monitorIntoAFullDiskStops()
+{
+    // Rows that go nowhere end the monitor with the reason; it does not poll on for ever.
+    QProcess p;
+    QSignalSpy finished(&p, &QProcess::finished);
+    p.setStandardOutputFile("/dev/full");
+    p.start(QStringLiteral(JUMOCTL_PATH), QStringList{"monitor"} + port() + QStringList{"ipc300@1", "--csv"});
+    QVERIFY(finished.wait(60000));   // the simulator lives in this process: its event loop runs meanwhile
+    QCOMPARE(p.exitCode(), 1);
+    const QByteArray err = p.readAllStandardError();
+    QVERIFY2(err.contains("jumoctl: the output could not be written: No space left on device"), err.constData());
 }
 
 void tst_JumoctlLine::absentDeviceIsATimeout()

@@ -30,7 +30,8 @@ SOURCE = os.path.dirname(os.path.dirname(HERE))
 
 # What the map format says about its keys (resources/maps/README.md).
 INT_KEYS = {"format", "scanPriority", "maxReadWords", "maxWriteWords", "addressMin", "addressMax",
-            "alwaysAnswersAddress", "busErrorTimeoutMs", "words", "bytes", "bit", "width", "exception"}
+            "alwaysAnswersAddress", "busErrorTimeoutMs", "words", "bytes", "bit", "width", "exception",
+            "decimals", "significantDigits"}
 NON_NEGATIVE_KEYS = INT_KEYS | {"processingTimeMaxMs", "turnaroundMs", "minResponseTimeMaxMs"}
 HUGE_REFUSED_KEYS = NON_NEGATIVE_KEYS   # every one of them has an upper bound
 BOOL_KEYS = {"broadcast", "reserved", "action", "answers"}

@@ -248,6 +248,13 @@ void tst_Jumoctl::realExecutableExitCodes()
     QVERIFY(p.waitForFinished(30000));
     QCOMPARE(p.exitCode(), 1);
     QVERIFY(p.readAllStandardError().contains("unknown family 'nope'"));
+    // Output into a full disk is a failure, not a short file and exit code 0.
+    p.setStandardOutputFile("/dev/full");
+    p.start(exe, {"map", "quantrol", "--csv"});
+    QVERIFY(p.waitForFinished(30000));
+    QCOMPARE(p.exitCode(), 1);
+    const QByteArray err = p.readAllStandardError();
+    QVERIFY2(err.contains("jumoctl: the output could not be written: No space left on device"), err.constData());
 }
 
 void tst_Jumoctl::helpAllIsHelp_data()
