@@ -103,8 +103,10 @@ void DeviceScanner::evaluate()
                     return;
                 }
                 // Nothing answers at this address, or it stopped answering part way.
-                if (std::any_of(m_cache.cbegin(), m_cache.cend(), [](const ProbeResult &r) { return !r.timedOut; }))
+                if (std::any_of(m_cache.cbegin(), m_cache.cend(), [](const ProbeResult &r) { return !r.timedOut; })) {
+                    emit answeredPartly(m_address);
                     emit unknownDevice(m_address);
+                }
                 nextAddress();
                 return;
             }

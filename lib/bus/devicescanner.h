@@ -31,6 +31,9 @@ signals:
     void found(int address, std::shared_ptr<const jumo::RegisterMap> family);
     // An address answered but matched no family.
     void unknownDevice(int address);
+    // Just before unknownDevice: the address answered some probes, then no more, so
+    // whether another family would have matched is not known.
+    void answeredPartly(int address);
 
 private:
     struct ProbeResult

@@ -26,8 +26,14 @@ IdentityCheck::IdentityCheck(Bus &bus, QList<std::shared_ptr<const RegisterMap>>
                 m_current.verdict = same ? Verdict::Confirmed : Verdict::OtherFamily;
                 m_current.found = family;
             });
-    connect(m_scanner.get(), &DeviceScanner::unknownDevice, this,
-            [this](int) { m_current.verdict = Verdict::UnknownDevice; });
+    // A device that stopped answering part way (replies lost on a noisy line) is not
+    // shown to be another one: refusing it would lock the right device out until it goes
+    // offline. It counts as silent and is asked again.
+    connect(m_scanner.get(), &DeviceScanner::answeredPartly, this, [this](int) { m_current.partial = true; });
+    connect(m_scanner.get(), &DeviceScanner::unknownDevice, this, [this](int) {
+        if (!m_current.partial)
+            m_current.verdict = Verdict::UnknownDevice;
+    });
     connect(m_scanner.get(), &Job::finished, this, &IdentityCheck::onScannerFinished);
 }
 
@@ -92,7 +98,7 @@ void IdentityCheck::checkNext()
         finish(refusals.isEmpty() ? Result::Succeeded : Result::Failed, refusals.join(QLatin1Char('\n')));
         return;
     }
-    m_current = Finding{m_claims.at(m_findings.size()), Verdict::Silent, nullptr};
+    m_current = Finding{m_claims.at(m_findings.size()), Verdict::Silent, nullptr, false};
     m_scanner->start(m_current.claim.address, m_current.claim.address);
 }
 

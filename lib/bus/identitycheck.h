@@ -29,6 +29,7 @@ public:
         Claim claim;
         Verdict verdict = Verdict::Silent;
         std::shared_ptr<const RegisterMap> found;   // OtherFamily: what answers instead
+        bool partial = false;                       // Silent: some probes were answered
     };
 
     IdentityCheck(Bus &bus, QList<std::shared_ptr<const RegisterMap>> families, QObject *parent = nullptr);

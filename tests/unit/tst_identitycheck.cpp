@@ -19,6 +19,7 @@ private slots:
     void verdicts();
     void everyClaimIsCheckedInTurn();
     void familiesWithTheSameProbesConfirmEachOther();
+    void aProbeLostPartWayIsNoWrongDevice();
 
 private:
     static QList<IdentityCheck::Finding> check(
@@ -110,6 +111,32 @@ void tst_IdentityCheck::familiesWithTheSameProbesConfirmEachOther()
     QCOMPARE(findings.size(), 1);
     QCOMPARE(findings[0].verdict, IdentityCheck::Verdict::Confirmed);
     QCOMPARE(result, Job::Result::Succeeded);
+}
+
+void tst_IdentityCheck::aProbeLostPartWayIsNoWrongDevice()
+{
+    // A quantrol answers its first probe (exception 02 at 0x4009); both tries of the
+    // second (0x0020) are lost on a noisy line. That is no answer, not another device:
+    // a wrong-device verdict would lock the right one out until it goes offline.
+    Line line({{"quantrol", 4}});
+    QVERIFY(line.bus->open());
+    int lost = 0;
+    line.transport->drop = [&lost](const ModbusRequest &r) {
+        return r.start == 0x0020 && lost < 2 && ++lost > 0;
+    };
+    IdentityCheck check(*line.bus, families().families());
+    QSignalSpy finished(&check, &Job::finished);
+    check.start({{4, families().family("quantrol")}});
+    QVERIFY(line.runUntil([&] { return finished.count() == 1; }, 60000));
+    QCOMPARE(lost, 2);
+    QCOMPARE(check.findings().size(), 1);
+    QCOMPARE(check.findings()[0].verdict, IdentityCheck::Verdict::Silent);
+    QVERIFY(!check.foundOtherDevice());
+
+    // Asked again once the line is quiet, it is confirmed.
+    check.start({{4, families().family("quantrol")}});
+    QVERIFY(line.runUntil([&] { return finished.count() == 2; }, 60000));
+    QCOMPARE(check.findings()[0].verdict, IdentityCheck::Verdict::Confirmed);
 }
 
 QTEST_GUILESS_MAIN(tst_IdentityCheck)
