@@ -723,11 +723,16 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
     </message>
     <message>
         <location line="+56"/>
+        <source>&apos;%1&apos; is no number that can be read one way only; write it without thousands separators</source>
+        <translation>„%1“ ist keine eindeutig lesbare Zahl; bitte ohne Tausenderpunkte schreiben</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>write %1 = %2</source>
         <translation>%1 = %2 schreiben</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+42"/>
         <source>switch &quot;%1&quot; on</source>
         <translation>„%1“ einschalten</translation>
     </message>
@@ -747,12 +752,12 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
         <translation>%1 aus</translation>
     </message>
     <message>
-        <location line="-79"/>
+        <location line="-94"/>
         <source>Read-only mode: nothing is written to the devices.</source>
         <translation>Nur-Lese-Modus: Es wird nichts auf die Geräte geschrieben.</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+65"/>
         <source>Confirm write</source>
         <translation>Schreiben bestätigen</translation>
     </message>
@@ -764,7 +769,7 @@ This changes what the device drives.</source>
 Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="-10"/>
         <source>Not written: %1</source>
         <translation>Nicht geschrieben: %1</translation>
     </message>
@@ -1166,7 +1171,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::IdentityCheck</name>
     <message>
-        <location filename="../lib/bus/identitycheck.cpp" line="+62"/>
+        <location filename="../lib/bus/identitycheck.cpp" line="+68"/>
         <source>%1: confirmed</source>
         <translation>%1: bestätigt</translation>
     </message>

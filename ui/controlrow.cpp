@@ -248,13 +248,30 @@ void ControlRow::writeInput()
     QString value = inputValue();
     if (value.isEmpty())
         return;
-    const QString typed = value;
+    QString shown = value;
     // A float as the locale writes it ("42,5"), or with a dot; the codec takes a dot.
     if (m_edit && m_entry.type == ValueType::Float) {
-        if (const std::optional<QString> number = ValueFormat::parseNumber(value))
-            value = *number;
+        const std::optional<QString> number = ValueFormat::parseNumber(value);
+        if (!number) {
+            // Never handed on as typed: the codec would read "1.500" as 1.5.
+            refuse(tr("'%1' is no number that can be read one way only; write it without thousands separators")
+                           .arg(value));
+            return;
+        }
+        value = *number;
+        // The question names the value that goes out, not the text it was read from.
+        QLocale locale;
+        locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
+        shown = locale.toString(value.toDouble(), 'g', QLocale::FloatingPointShortest);
     }
-    write(value, tr("write %1 = %2").arg(translatedLabel(m_entry.label), ValueFormat::joinUnit(typed, m_entry.unit)));
+    write(value, tr("write %1 = %2").arg(translatedLabel(m_entry.label), ValueFormat::joinUnit(shown, m_entry.unit)));
+}
+
+void ControlRow::refuse(const QString &reason)
+{
+    m_state->setStyleSheet(QStringLiteral("color: #b00000"));
+    m_state->setText(tr("Not written: %1").arg(reason));
+    m_state->show();
 }
 
 bool ControlRow::confirm(const QString &description) const
@@ -274,9 +291,7 @@ void ControlRow::write(const QString &value, const QString &description)
     // Check before asking: a value the device would refuse never gets a confirmation.
     const EncodeResult check = ValueCodec::encode(m_entry, m_map, value);
     if (!check.ok()) {
-        m_state->setStyleSheet(QStringLiteral("color: #b00000"));
-        m_state->setText(tr("Not written: %1").arg(check.error));
-        m_state->show();
+        refuse(check.error);
         return;
     }
     if (!m_readOnly && !confirm(description))

@@ -43,6 +43,8 @@ protected:
 private:
     bool m_dirty = true;
     void write(const QString &value, const QString &description);
+    // Shows why nothing was written, without asking anything.
+    void refuse(const QString &reason);
     void switchBit(const QString &bitId, bool on);
     bool confirm(const QString &description) const;
     void refreshCurrent();

@@ -1,5 +1,7 @@
 #include "protocol/valueformat.h"
 
+#include <QRegularExpression>
+
 #include <algorithm>
 #include <cmath>
 
@@ -90,6 +92,13 @@ QString ValueFormat::limit(double value, const RegisterEntry &entry, const QLoca
 std::optional<QString> ValueFormat::parseNumber(const QString &text, const QLocale &locale)
 {
     const QString t = text.trimmed();
+    // Where the dot groups thousands, "1.500" is what a person writes for 1500 as often
+    // as for 1.5: neither reading may be written, a value a thousand times off either way.
+    if (locale.groupSeparator() == QStringLiteral(".") && locale.decimalPoint() != QStringLiteral(".")) {
+        static const QRegularExpression grouped(QStringLiteral("^[+-]?\\d{1,3}(\\.\\d{3})+$"));
+        if (grouped.match(t).hasMatch())
+            return std::nullopt;
+    }
     bool ok = false;
     const double v = withoutGroups(locale).toDouble(t, &ok);
     if (ok && std::isfinite(v))

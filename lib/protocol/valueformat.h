@@ -30,8 +30,8 @@ public:
     static QString limit(double value, const RegisterEntry &entry, const QLocale &locale = QLocale());
     // What a person typed for a number, in the locale's way ("42,5") or with a dot, as
     // the codec's text ("42.5"); nullopt when it is no number. Thousands separators are
-    // refused: "1.500" in German is 1.5, never 1500, so nothing is written a thousand
-    // times too large.
+    // refused, and so is what only a thousands separator makes sense of: "1.500" in
+    // German may mean 1500 or 1.5, and either is a thousand times off the other.
     static std::optional<QString> parseNumber(const QString &text, const QLocale &locale = QLocale());
 };
 

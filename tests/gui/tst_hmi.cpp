@@ -264,6 +264,14 @@ void tst_Hmi::germanNumbersInAndOut()
     QTest::mouseClick(row->findChild<QPushButton *>("write_input_setpoint"), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(row->stateText().startsWith("Confirmed"), 20000);
     QCOMPARE(m_sim.line().device(1)->number("input_setpoint"), 36.5);
+    // "1.500" is 1500 to a German as often as 1.5: refused, nothing goes out.
+    const int writesBefore = m_sim.writeFrames();
+    row->setInputValue("1.500");
+    QTest::mouseClick(row->findChild<QPushButton *>("write_input_setpoint"), Qt::LeftButton);
+    QVERIFY2(row->stateText().startsWith("Not written"), qPrintable(row->stateText()));
+    QTest::qWait(300);
+    QCOMPARE(m_sim.writeFrames(), writesBefore);
+    QCOMPARE(m_sim.line().device(1)->number("input_setpoint"), 36.5);
     // Shown as the table shows it: one decimal, the German comma, the unit.
     LiveValuesView *view = window->devicePage("ipc300", 1)->valuesView();
     QTRY_COMPARE_WITH_TIMEOUT(view->displayedValue("input_setpoint"), QString("36,5"), 20000);

@@ -144,7 +144,12 @@ void tst_ValueFormat::parseNumber_data()
     QTest::addColumn<QString>("expected");   // empty: refused
     QTest::newRow("German comma") << "de" << "42,5" << "42.5";
     QTest::newRow("German with a dot") << "de" << "42.5" << "42.5";
-    QTest::newRow("German 1.500 is one and a half, never 1500") << "de" << "1.500" << "1.5";
+    QTest::newRow("German 1.500 is 1500 or 1.5: refused") << "de" << "1.500" << "";
+    QTest::newRow("German 12.345 is grouped or not: refused") << "de" << "-12.345" << "";
+    QTest::newRow("German 1.5 with a dot is no grouping") << "de" << "1.5" << "1.5";
+    QTest::newRow("German 1.5000 with a dot is no grouping") << "de" << "1.5000" << "1.5";
+    QTest::newRow("German 1,5e3") << "de" << "1,5e3" << "1500";
+    QTest::newRow("English 1.500 is one and a half") << "en" << "1.500" << "1.5";
     QTest::newRow("German thousands grouping refused as grouping") << "de" << "1.500,5" << "";
     QTest::newRow("English dot") << "en" << "42.5" << "42.5";
     QTest::newRow("English comma is no decimal sign") << "en" << "42,5" << "";
