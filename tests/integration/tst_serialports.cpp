@@ -220,6 +220,10 @@ void tst_SerialPorts::userOutsideTheGroupIsToldHowToJoin()
     };
 
     QString err;
+    // setpriv exits 127 when nobody cannot reach the program (a build folder below a
+    // private home directory): nothing to learn about the port then.
+    if (asNobody({"--version"}, &err).first == 127)
+        QSKIP("the user nobody cannot run jumoctl from this build folder");
     const auto [code, out] = asNobody({"read", "--port", link, "--baud", "19200", "ipc300@1", "load_current"}, &err);
     QCOMPARE(code, 1);
     const QString advice = QStringLiteral("no permission: %1 belongs to the group 'dialout'. Join it with 'sudo usermod "
