@@ -1491,12 +1491,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <message>
         <location line="+1"/>
         <location line="+393"/>
-        <location line="+150"/>
+        <location line="+153"/>
         <source>FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="-541"/>
+        <location line="-544"/>
         <source>Entry ids.</source>
         <translation>Kennungen der Einträge.</translation>
     </message>
@@ -1758,7 +1758,15 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+28"/>
+        <location line="+19"/>
+        <source>%n parameter(s) missing from the file are left as they are.</source>
+        <translation>
+            <numerusform>%n Parameter, der in der Datei fehlt, bleibt unverändert.</numerusform>
+            <numerusform>%n Parameter, die in der Datei fehlen, bleiben unverändert.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+12"/>
         <source>Write %n parameter(s) to the device? [y/N] </source>
         <translation>
             <numerusform>%n Parameter auf das Gerät schreiben? [j/N] </numerusform>
@@ -3320,9 +3328,19 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RtuTransport</name>
     <message>
-        <location filename="../lib/bus/rtutransport.cpp" line="+131"/>
+        <location filename="../lib/bus/rtutransport.cpp" line="+137"/>
+        <source>reply with function code %1 to a request with %2</source>
+        <translation>Antwort mit Funktionscode %1 auf eine Anfrage mit %2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>reply of %1 words where %2 were asked for</source>
         <translation>Antwort mit %1 Wörtern, angefragt waren %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>write reply names %1 word(s) at %2 where %3 at %4 were written</source>
+        <translation>Schreibantwort nennt %1 Wort/Wörter ab %2, geschrieben wurden %3 ab %4</translation>
     </message>
 </context>
 <context>

@@ -201,7 +201,7 @@ void ParametersDialog::restore(const QString &path, const std::function<bool(int
                     setStatus(tr("Refused: %1").arg(refused));
                     return;
                 }
-                const QList<ParameterDifference> d = device.differences(*file, map);
+                const QList<ParameterDifference> d = ParameterSet::toRestore(device.differences(*file, map));
                 showDifferences(d);
                 if (d.isEmpty()) {
                     setBusy(false);

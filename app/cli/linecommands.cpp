@@ -863,12 +863,15 @@ std::optional<int> LineCommands::parameters(const QString &command, const QStrin
             finish(1);
             return;
         }
-        const QList<ParameterDifference> differences = device.differences(*file, map);
-        printDifferences(differences, first, path);
+        const QList<ParameterDifference> shown = device.differences(*file, map);
+        printDifferences(shown, first, path);
         if (!restore) {
-            finish(differences.isEmpty() ? 0 : 1);
+            finish(shown.isEmpty() ? 0 : 1);
             return;
         }
+        const QList<ParameterDifference> differences = ParameterSet::toRestore(shown);
+        if (const int left = int(shown.size() - differences.size()); left > 0)
+            m_out << tr("%n parameter(s) missing from the file are left as they are.", nullptr, left) << Qt::endl;
         if (differences.isEmpty()) {
             finish(0);
             return;

@@ -115,16 +115,29 @@ void RtuTransport::onReplyFinished(QModbusReply *reply, const ModbusRequest &req
     reply->deleteLater();
     if (m_pending == reply)
         m_pending.clear();
-    ModbusResult result;
+    ModbusResult result = resultOf(request, reply->error(), reply->result(), reply->rawResult(), reply->errorString());
     const QList<QModbusDevice::IntermediateError> intermediate = reply->intermediateErrors();
     result.crcErrors = int(intermediate.count(QModbusDevice::ResponseCrcError));
     result.mismatches = int(intermediate.count(QModbusDevice::ResponseRequestMismatch));
-    const QModbusDevice::Error error = reply->error();
+    deliver(result);
+}
+
+ModbusResult RtuTransport::resultOf(const ModbusRequest &request, QModbusDevice::Error error,
+                                    const QModbusDataUnit &unit, const QModbusResponse &raw,
+                                    const QString &errorString)
+{
+    ModbusResult result;
     switch (error) {
     case QModbusDevice::NoError:
         result.status = ModbusResult::Status::Ok;
-        if (!request.isWrite() && !request.isBroadcast()) {
-            const QModbusDataUnit unit = reply->result();
+        if (request.isBroadcast())
+            break;
+        if (raw.isValid() && quint8(raw.functionCode()) != quint8(request.function)) {
+            result.status = ModbusResult::Status::BadReply;
+            result.errorText = tr("reply with function code %1 to a request with %2")
+                                       .arg(quint8(raw.functionCode()))
+                                       .arg(quint8(request.function));
+        } else if (!request.isWrite()) {
             // A reply of the wrong size is someone else's answer: never decode it.
             if (unit.valueCount() != request.count || unit.startAddress() != request.start) {
                 result.status = ModbusResult::Status::BadReply;
@@ -132,11 +145,21 @@ void RtuTransport::onReplyFinished(QModbusReply *reply, const ModbusRequest &req
             } else {
                 result.words = unit.values();
             }
+        } else if (!echoMatches(request, unit)) {
+            // Qt takes a write's echo as it comes: one naming other registers (or another
+            // value) does not confirm this write.
+            result.status = ModbusResult::Status::BadReply;
+            result.errorText = tr("write reply names %1 word(s) at %2 where %3 at %4 were written")
+                                       .arg(unit.valueCount())
+                                       .arg(unit.startAddress())
+                                       .arg(request.count)
+                                       .arg(request.start);
         }
         break;
     case QModbusDevice::ProtocolError:
         result.status = ModbusResult::Status::Exception;
-        result.exceptionCode = int(reply->rawResult().exceptionCode());
+        // Qt keeps the code as the first data byte; a frame without one has no code.
+        result.exceptionCode = raw.isException() && !raw.data().isEmpty() ? quint8(raw.data().at(0)) : 0;
         break;
     case QModbusDevice::TimeoutError:
         result.status = ModbusResult::Status::Timeout;
@@ -150,14 +173,22 @@ void RtuTransport::onReplyFinished(QModbusReply *reply, const ModbusRequest &req
         break;
     }
     if (result.status != ModbusResult::Status::Ok && result.errorText.isEmpty())
-        result.errorText = reply->errorString();
-    const QModbusResponse raw = reply->rawResult();
+        result.errorText = errorString;
     if (raw.isValid() || raw.isException()) {
-        QByteArray pdu(1, char(raw.functionCode() | (raw.isException() ? 0x80 : 0)));
+        QByteArray pdu(1, char(quint8(raw.functionCode()) | (raw.isException() ? 0x80 : 0)));
         pdu += raw.data();
         result.replyFrame = RtuFrame::build(request.slave, pdu);
     }
-    deliver(result);
+    return result;
+}
+
+bool RtuTransport::echoMatches(const ModbusRequest &request, const QModbusDataUnit &unit)
+{
+    if (unit.startAddress() != request.start)
+        return false;
+    if (request.function == ModbusRequest::Function::WriteSingle)
+        return unit.valueCount() == 1 && !request.words.isEmpty() && unit.value(0) == request.words.first();
+    return unit.valueCount() == request.count;
 }
 
 void RtuTransport::deliver(const ModbusResult &result)

@@ -7,7 +7,9 @@
 #include "bus/transport.h"
 #include "protocol/lineformat.h"
 
+#include <QModbusDataUnit>
 #include <QModbusDevice>
+#include <QModbusPdu>
 #include <QPointer>
 
 class QModbusReply;
@@ -29,7 +31,16 @@ public:
     void send(const ModbusRequest &request) override;
     double interFrameDelayMs() const override;
 
+    // What a finished reply means for the request it answers (Qt's error, the data unit
+    // it decoded, the response as received): words only from a reply that fits the
+    // request in function, address and size, the code of an exception, a write confirmed
+    // only by an echo of what was written. Apart from QModbusReply so it can be fuzzed.
+    static ModbusResult resultOf(const ModbusRequest &request, QModbusDevice::Error error,
+                                 const QModbusDataUnit &unit, const QModbusResponse &raw,
+                                 const QString &errorString);
+
 private:
+    static bool echoMatches(const ModbusRequest &request, const QModbusDataUnit &unit);
     void onReplyFinished(QModbusReply *reply, const ModbusRequest &request);
     void onErrorOccurred(QModbusDevice::Error error);
     void deliver(const ModbusResult &result);

@@ -156,7 +156,18 @@ QList<ParameterDifference> ParameterSet::differences(const ParameterSet &other, 
                                    values.value(id),
                                    other.values.value(id),
                                    here ? shown(values.value(id)) : QString(),
-                                   there ? shown(other.values.value(id)) : QString()};
+                                   there ? shown(other.values.value(id)) : QString(),
+                                   there};
+    }
+    return out;
+}
+
+QList<ParameterDifference> ParameterSet::toRestore(const QList<ParameterDifference> &differences)
+{
+    QList<ParameterDifference> out;
+    for (const ParameterDifference &d : differences) {
+        if (d.newHeld)
+            out << d;
     }
     return out;
 }

@@ -22,6 +22,7 @@ struct ParameterDifference
     QString newValue;   // the file (or the second file), exact
     QString oldDisplay; // as a person reads them ("33.3" for 33.2999992)
     QString newDisplay;
+    bool newHeld = true;  // false: the file (the second set) holds no value for this entry
 };
 
 class ParameterSet
@@ -53,6 +54,9 @@ public:
     // What differs from another set (this one is "old"), compared word by word as the
     // device stores the values, so 12.34 and 12.3400002 are the same.
     QList<ParameterDifference> differences(const ParameterSet &other, const RegisterMap &map) const;
+    // The differences a restore writes: only those the file holds a value for. An entry the
+    // file lacks (a partial or hand-made file) is shown by a compare and left alone.
+    static QList<ParameterDifference> toRestore(const QList<ParameterDifference> &differences);
 };
 
 } // namespace jumo

@@ -28,6 +28,7 @@ private slots:
     void incompatibility();
     void differencesCompareStoredWords();
     void zeroAndNegativeZeroAreEqual();
+    void restoreWritesOnlyWhatTheFileHolds();
 };
 
 void tst_ParameterSet::holdsParametersNotCommandsOrOutputs()
@@ -144,6 +145,26 @@ void tst_ParameterSet::zeroAndNegativeZeroAreEqual()
     QCOMPARE(a.differences(b, map("dtron300")).size(), 0);
     b.values.insert("setpoint_w3", "1e-45");   // the smallest float is no zero
     QCOMPARE(a.differences(b, map("dtron300")).size(), 1);
+}
+
+void tst_ParameterSet::restoreWritesOnlyWhatTheFileHolds()
+{
+    ParameterSet device;
+    device.family = "quantrol";
+    device.values.insert("setpoint_sp1", "25");
+    device.values.insert("setpoint_sp2", "30");
+    device.values.insert("limit_1_alarm_value", "150");
+    ParameterSet file;   // a partial file: no setpoint 2, no limit
+    file.family = "quantrol";
+    file.values.insert("setpoint_sp1", "26");
+    const QList<ParameterDifference> shown = device.differences(file, map("quantrol"));
+    QCOMPARE(shown.size(), 3);   // a compare shows what the file lacks
+    const QList<ParameterDifference> written = ParameterSet::toRestore(shown);
+    QCOMPARE(written.size(), 1);
+    QCOMPARE(written[0].id, QString("setpoint_sp1"));
+    QCOMPARE(written[0].newValue, QString("26"));
+    for (const ParameterDifference &d : shown)
+        QCOMPARE(d.newHeld, d.id == QLatin1String("setpoint_sp1"));
 }
 
 QTEST_GUILESS_MAIN(tst_ParameterSet)

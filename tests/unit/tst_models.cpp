@@ -1,0 +1,146 @@
+// The device models (live values, alarm bits, register map) under QAbstractItemModelTester
+// for every family, through a device's whole life on a line: first values, changing
+// values and alarm bits, lost replies, the adapter pulled, the device removed. The
+// tester checks every signal and index the models give; the test checks what they show.
+#include "bus/entrystate.h"
+#include "fakeline.h"
+#include "models/alarmbitsmodel.h"
+#include "models/livevaluesmodel.h"
+#include "models/registermapmodel.h"
+
+#include <QAbstractItemModelTester>
+#include <QtTest>
+
+using namespace jumo;
+using namespace jumo::test;
+
+class tst_Models : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void deviceModelsThroughALineLife_data();
+    void deviceModelsThroughALineLife();
+    void registerMapModelOfEveryFamily();
+};
+
+namespace {
+
+int rowsWithValidity(const QAbstractItemModel &model, int role, Validity validity)
+{
+    int n = 0;
+    for (int row = 0; row < model.rowCount(); ++row) {
+        const QModelIndex index = model.index(row, 0);
+        if (model.data(index, role).toInt() == int(validity))
+            ++n;
+    }
+    return n;
+}
+
+// Reads every cell in every role the views use, as a view would.
+void readAll(const QAbstractItemModel &model)
+{
+    for (int row = 0; row < model.rowCount(); ++row) {
+        for (int column = 0; column < model.columnCount(); ++column) {
+            const QModelIndex index = model.index(row, column);
+            for (int role = 0; role < Qt::UserRole + 16; ++role)
+                (void)model.data(index, role);
+        }
+    }
+}
+
+} // namespace
+
+void tst_Models::deviceModelsThroughALineLife_data()
+{
+    QTest::addColumn<QString>("family");
+    for (const char *family : {"ipc300", "tya200", "quantrol", "dtron300"})
+        QTest::newRow(family) << QString::fromLatin1(family);
+}
+
+void tst_Models::deviceModelsThroughALineLife()
+{
+    QFETCH(QString, family);
+    Line line({{family, 7}});
+    QVERIFY(line.bus->open());
+    const DeviceId device = line.bus->addDevice(families().family(family), 7);
+    LiveValuesModel values(line.bus.get(), device);
+    AlarmBitsModel alarms(line.bus.get(), device);
+    QAbstractItemModelTester valuesTester(&values, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QAbstractItemModelTester alarmsTester(&alarms, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QVERIFY(values.rowCount() > 10);
+    QVERIFY(alarms.rowCount() > 0);
+    // Before the first reply nothing is current and nobody can say "no alarm".
+    QCOMPARE(rowsWithValidity(values, LiveValuesModel::ValidityRole, Validity::Current), 0);
+    QVERIFY(!alarms.alarmsKnown());
+
+    QVERIFY(line.runUntil([&] { return alarms.alarmsKnown(); }, 20000));
+    line.run(3000);
+    const int current = rowsWithValidity(values, LiveValuesModel::ValidityRole, Validity::Current);
+    QVERIFY2(current > values.rowCount() / 2, qPrintable(QStringLiteral("%1 of %2 rows current").arg(current).arg(values.rowCount())));
+    readAll(values);
+    readAll(alarms);
+
+    // A bit set on the device is shown on (and counted, when it is an alarm). The dTRON
+    // has no alarm bits, only status bits (binary outputs, limit comparators).
+    int bitRow = -1;
+    for (const BitKind kind : {BitKind::Alarm, BitKind::Warning, BitKind::Status}) {
+        for (int row = 0; row < alarms.rowCount() && bitRow < 0; ++row) {
+            const QModelIndex index = alarms.index(row);
+            if (alarms.data(index, AlarmBitsModel::KindRole).toInt() == int(kind)
+                && alarms.data(index, AlarmBitsModel::BitStateRole).toInt() == int(AlarmBitsModel::BitState::Off)
+                && line.sim(7)->setFlag(alarms.data(index, AlarmBitsModel::ReferenceRole).toString(), true))
+                bitRow = row;
+        }
+    }
+    QVERIFY(bitRow >= 0);
+    const bool isAlarm = alarms.data(alarms.index(bitRow), AlarmBitsModel::KindRole).toInt() == int(BitKind::Alarm);
+    const int before = alarms.activeAlarms();
+    QVERIFY(line.runUntil([&] {
+        return alarms.data(alarms.index(bitRow), AlarmBitsModel::BitStateRole).toInt() == int(AlarmBitsModel::BitState::On);
+    }, 20000));
+    QCOMPARE(alarms.activeAlarms(), before + (isAlarm ? 1 : 0));
+
+    // Every reply lost: the values turn stale, then unknown once the device is offline.
+    line.transport->drop = [](const ModbusRequest &) { return true; };
+    QVERIFY(line.runUntil([&] { return rowsWithValidity(values, LiveValuesModel::ValidityRole, Validity::Current) == 0; },
+                          120000));
+    readAll(values);
+    readAll(alarms);
+    line.transport->drop = {};
+    QVERIFY(line.runUntil([&] { return rowsWithValidity(values, LiveValuesModel::ValidityRole, Validity::Current) > 0; },
+                          120000));
+
+    // The adapter is pulled: nothing stays current, and the alarm count is not a live one.
+    line.transport->pull();
+    QVERIFY(line.runUntil([&] { return rowsWithValidity(values, LiveValuesModel::ValidityRole, Validity::Current) == 0; },
+                          60000));
+    QVERIFY(!alarms.alarmsKnown() || alarms.alarmsStale());
+    readAll(values);
+    readAll(alarms);
+
+    // The device leaves the bus while its models are still shown.
+    line.bus->removeDevice(device);
+    line.run(2000);
+    readAll(values);
+    readAll(alarms);
+    QCOMPARE(rowsWithValidity(values, LiveValuesModel::ValidityRole, Validity::Current), 0);
+}
+
+void tst_Models::registerMapModelOfEveryFamily()
+{
+    RegisterMapModel model;
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QCOMPARE(model.rowCount(), 0);
+    for (const auto &map : families().families()) {
+        model.setMap(map);
+        QCOMPARE(model.map(), map);
+        QVERIFY(model.rowCount() > 10);
+        readAll(model);
+    }
+    model.setMap(nullptr);
+    QCOMPARE(model.rowCount(), 0);
+}
+
+QTEST_GUILESS_MAIN(tst_Models)
+#include "tst_models.moc"
