@@ -10,13 +10,13 @@
     </message>
     <message>
         <location line="+15"/>
-        <source>Family:</source>
-        <translation>Gerätefamilie:</translation>
+        <source>&amp;Family:</source>
+        <translation>&amp;Familie:</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Address:</source>
-        <translation>Adresse:</translation>
+        <source>&amp;Address:</source>
+        <translation>&amp;Adresse:</translation>
     </message>
 </context>
 <context>
@@ -564,12 +564,12 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
     <name>jumo::ConnectionBar</name>
     <message>
         <location filename="../ui/connectionbar.cpp" line="+21"/>
-        <location line="+106"/>
+        <location line="+112"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-101"/>
         <source>/dev/ttyUSB0</source>
         <translation>/dev/ttyUSB0</translation>
     </message>
@@ -584,19 +584,19 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
         <translation>Serielle Schnittstellen erneut auflisten</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>Port:</source>
-        <translation>Schnittstelle:</translation>
+        <location line="+15"/>
+        <source>&amp;Port:</source>
+        <translation>&amp;Port:</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>Baud:</source>
-        <translation>Baud:</translation>
+        <source>&amp;Baud:</source>
+        <translation>&amp;Baud:</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>Format:</source>
-        <translation>Format:</translation>
+        <source>Fo&amp;rmat:</source>
+        <translation>Fo&amp;rmat:</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -960,7 +960,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DeviceTile</name>
     <message>
-        <location filename="../ui/devicetile.cpp" line="+24"/>
+        <location filename="../ui/devicetile.cpp" line="+28"/>
         <source>address %1</source>
         <translation>Adresse %1</translation>
     </message>
@@ -1973,13 +1973,98 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Verbindung</translation>
     </message>
     <message>
+        <location line="+146"/>
+        <source>&amp;Line</source>
+        <translation>&amp;Leitung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Connect</source>
+        <translation>&amp;Verbinden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Trennen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Add a device...</source>
+        <translation>Gerät &amp;hinzufügen...</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>La&amp;nguage</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>&amp;Overview</source>
+        <translation>&amp;Übersicht</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Traffic and statistics</source>
+        <translation>Daten&amp;verkehr und Statistik</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Alarm &amp;journal</source>
+        <translation>Alarm&amp;journal</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Write audit log</source>
+        <translation>&amp;Schreibprotokoll</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Device pages</source>
+        <translation>&amp;Geräteseiten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Device %1 in the list</source>
+        <translation>Gerät %1 der Liste</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Next page</source>
+        <translation>&amp;Nächste Seite</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Previous page</source>
+        <translation>V&amp;orige Seite</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Next &amp;tab of the device page</source>
+        <translation>Nächster &amp;Reiter der Geräteseite</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Previous t&amp;ab of the device page</source>
+        <translation>Vorig&amp;er Reiter der Geräteseite</translation>
+    </message>
+    <message>
         <location line="+6"/>
-        <location line="+230"/>
+        <source>Go to the page &amp;list</source>
+        <translation>Zur Seiten&amp;liste</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <location line="+45"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-221"/>
+        <location line="-303"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -2014,17 +2099,17 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Entfernen</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+40"/>
         <source>READ-ONLY</source>
         <translation>NUR LESEN</translation>
     </message>
     <message>
-        <location line="+411"/>
+        <location line="+503"/>
         <source>Data logging of %1 stopped: %2</source>
         <translation>Datenaufzeichnung von %1 angehalten: %2</translation>
     </message>
     <message>
-        <location line="-377"/>
+        <location line="-469"/>
         <source>address %1: %2</source>
         <translation>Adresse %1: %2</translation>
     </message>
@@ -2039,27 +2124,27 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+8"/>
         <source>&amp;Devices</source>
         <translation>&amp;Geräte</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;Scan the line...</source>
         <translation>Leitung &amp;durchsuchen...</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;Remove the shown device</source>
         <translation>Angezeigtes Gerät &amp;entfernen</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>&amp;Parameters: back up, compare, restore...</source>
         <translation>&amp;Parameter: sichern, vergleichen, wiederherstellen...</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Parameters</source>
         <translation>Parameter</translation>
     </message>
@@ -2069,7 +2154,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>&amp;Datenaufzeichnung des angezeigten Geräts...</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Data logging</source>
         <translation>Datenaufzeichnung</translation>
     </message>
@@ -2079,20 +2164,20 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Inbetriebnahme&amp;bericht des angezeigten Geräts...</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <location line="+8"/>
         <source>Report</source>
         <translation>Bericht</translation>
     </message>
     <message>
-        <location line="-27"/>
-        <location line="+9"/>
+        <location line="-29"/>
         <location line="+10"/>
+        <location line="+11"/>
         <source>Open the page of a device first.</source>
         <translation>Zuerst die Seite eines Geräts öffnen.</translation>
     </message>
     <message numerus="yes">
-        <location line="-87"/>
+        <location line="-101"/>
         <source>Not logged (%n record(s) so far): %1</source>
         <translation>
             <numerusform>Nicht protokolliert (bisher %n Eintrag): %1</numerusform>
@@ -2100,7 +2185,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         </translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+105"/>
         <source>Commissioning report</source>
         <translation>Inbetriebnahmebericht</translation>
     </message>
@@ -2110,12 +2195,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>PDF (*.pdf);;HTML (*.html)</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>&amp;Language</source>
-        <translation>&amp;Sprache</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+8"/>
         <source>System language</source>
         <translation>Systemsprache</translation>
     </message>
@@ -2152,7 +2232,7 @@ Commissioning and monitoring of JUMO power and process controllers over Modbus R
 Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Modbus RTU.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+82"/>
         <source>Demo line failed: %1</source>
         <translation>Demo-Leitung fehlgeschlagen: %1</translation>
     </message>
@@ -2182,7 +2262,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Getrennt</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+24"/>
         <source>Line: %1</source>
         <translation>Leitung: %1</translation>
     </message>

@@ -27,8 +27,8 @@ AddDeviceDialog::AddDeviceDialog(const FamilyRegistry &registry, QWidget *parent
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto *form = new QFormLayout(this);
-    form->addRow(tr("Family:"), m_family);
-    form->addRow(tr("Address:"), m_address);
+    form->addRow(tr("&Family:"), m_family);
+    form->addRow(tr("&Address:"), m_address);
     form->addRow(buttons);
 }
 

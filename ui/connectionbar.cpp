@@ -46,12 +46,18 @@ ConnectionBar::ConnectionBar(QWidget *parent)
             emit connectRequested();
     });
     auto *layout = new QHBoxLayout(this);
-    layout->addWidget(new QLabel(tr("Port:"), this));
+    // Alt and the underlined letter reach each field from the keyboard.
+    auto buddy = [this](const QString &text, QWidget *field) {
+        auto *label = new QLabel(text, this);
+        label->setBuddy(field);
+        return label;
+    };
+    layout->addWidget(buddy(tr("&Port:"), m_port));
     layout->addWidget(m_port);
     layout->addWidget(refresh);
-    layout->addWidget(new QLabel(tr("Baud:"), this));
+    layout->addWidget(buddy(tr("&Baud:"), m_baud));
     layout->addWidget(m_baud);
-    layout->addWidget(new QLabel(tr("Format:"), this));
+    layout->addWidget(buddy(tr("Fo&rmat:"), m_format));
     layout->addWidget(m_format);
     layout->addWidget(m_button);
     layout->addWidget(m_state, 1);

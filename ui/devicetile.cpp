@@ -6,8 +6,11 @@
 #include "protocol/registermap.h"
 
 #include <QCoreApplication>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLocale>
+#include <QStyleOptionFocusRect>
+#include <QStylePainter>
 #include <QVBoxLayout>
 
 namespace jumo {
@@ -20,6 +23,7 @@ DeviceTile::DeviceTile(DeviceId device, const RegisterMap &map, quint8 address, 
     setObjectName(QStringLiteral("tile_%1_%2").arg(map.family).arg(address));
     setFrameShape(QFrame::StyledPanel);
     setCursor(Qt::PointingHandCursor);
+    setFocusPolicy(Qt::StrongFocus);
     setMinimumWidth(260);
     m_title->setText(QStringLiteral("<b>%1</b><br>%2").arg(map.name.toHtmlEscaped(), tr("address %1").arg(address)));
     m_title->setWordWrap(true);
@@ -166,6 +170,33 @@ void DeviceTile::mouseReleaseEvent(QMouseEvent *event)
 {
     QFrame::mouseReleaseEvent(event);
     emit activated(m_device);
+}
+
+void DeviceTile::keyPressEvent(QKeyEvent *event)
+{
+    switch (event->key()) {
+    case Qt::Key_Return:
+    case Qt::Key_Enter:
+    case Qt::Key_Space:
+        emit activated(m_device);
+        return;
+    default:
+        QFrame::keyPressEvent(event);
+    }
+}
+
+void DeviceTile::paintEvent(QPaintEvent *event)
+{
+    QFrame::paintEvent(event);
+    if (!hasFocus())
+        return;
+    // The tile with the keyboard focus carries the style's focus frame inside its border.
+    QStylePainter painter(this);
+    QStyleOptionFocusRect option;
+    option.initFrom(this);
+    option.rect = contentsRect().adjusted(1, 1, -1, -1);
+    option.backgroundColor = palette().color(QPalette::Window);
+    painter.drawPrimitive(QStyle::PE_FrameFocusRect, option);
 }
 
 void DeviceTile::showEvent(QShowEvent *event)

@@ -39,6 +39,9 @@ signals:
 protected:
     void showEvent(QShowEvent *event) override;
     void mouseReleaseEvent(QMouseEvent *event) override;
+    // The keyboard reaches each tile with Tab; Enter or Space opens the device.
+    void keyPressEvent(QKeyEvent *event) override;
+    void paintEvent(QPaintEvent *event) override;
 
 private:
     bool m_dirty = true;

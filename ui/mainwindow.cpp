@@ -87,10 +87,7 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
     toolbar->setObjectName(QStringLiteral("connectionToolBar"));
     toolbar->setMovable(false);
     toolbar->addWidget(m_connectionBar);
-    connect(m_connectionBar, &ConnectionBar::connectRequested, this, [this] {
-        if (!connectLine())
-            QMessageBox::warning(this, tr("Connect"), m_bus.lastError());
-    });
+    connect(m_connectionBar, &ConnectionBar::connectRequested, this, &MainWindow::requestConnect);
     connect(m_connectionBar, &ConnectionBar::disconnectRequested, this, &MainWindow::disconnectLine);
 
     m_navigation->setObjectName(QStringLiteral("navigation"));
@@ -117,13 +114,7 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
     addButton->setObjectName(QStringLiteral("addDeviceButton"));
     scanButton->setObjectName(QStringLiteral("scanButton"));
     removeButton->setObjectName(QStringLiteral("removeDeviceButton"));
-    connect(addButton, &QPushButton::clicked, this, [this] {
-        AddDeviceDialog dialog(m_registry, this);
-        if (dialog.exec() == QDialog::Accepted && dialog.family()) {
-            addDevice(dialog.family(), dialog.address());
-            showDevice(dialog.family()->family, dialog.address());
-        }
-    });
+    connect(addButton, &QPushButton::clicked, this, &MainWindow::addDeviceInteractively);
     connect(scanButton, &QPushButton::clicked, this, &MainWindow::openScanDialog);
     connect(removeButton, &QPushButton::clicked, this, &MainWindow::removeCurrentDevice);
     auto *side = new QWidget(this);
@@ -237,21 +228,34 @@ void MainWindow::buildMenus()
 {
     QMenu *file = menuBar()->addMenu(tr("&File"));
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu *line = menuBar()->addMenu(tr("&Line"));
+    m_connectAction = line->addAction(tr("&Connect"), QKeySequence(Qt::Key_F5), this, &MainWindow::requestConnect);
+    m_disconnectAction = line->addAction(tr("&Disconnect"), QKeySequence(Qt::SHIFT | Qt::Key_F5), this,
+                                         &MainWindow::disconnectLine);
+    m_disconnectAction->setEnabled(false);
+
     QMenu *devices = menuBar()->addMenu(tr("&Devices"));
-    devices->addAction(tr("&Scan the line..."), this, &MainWindow::openScanDialog);
-    devices->addAction(tr("&Remove the shown device"), this, &MainWindow::removeCurrentDevice);
-    devices->addAction(tr("&Parameters: back up, compare, restore..."), this, [this] {
-        const int index = m_navigation->currentRow() - firstDeviceRow;
-        if (index < 0 || index >= m_devices.size()) {
+    devices->addAction(tr("&Add a device..."), QKeySequence::New, this, &MainWindow::addDeviceInteractively);
+    devices->addAction(tr("&Scan the line..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), this,
+                       &MainWindow::openScanDialog);
+    devices->addAction(tr("&Remove the shown device"), QKeySequence(Qt::CTRL | Qt::Key_Delete), this,
+                       &MainWindow::removeCurrentDevice);
+    devices->addSeparator();
+    devices->addAction(tr("&Parameters: back up, compare, restore..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P),
+                       this, [this] {
+        const int index = currentDeviceIndex();
+        if (index < 0) {
             QMessageBox::information(this, tr("Parameters"), tr("Open the page of a device first."));
             return;
         }
         ParametersDialog dialog(&m_bus, m_devices[index].id, this);
         dialog.exec();
     });
-    devices->addAction(tr("&Data logging of the shown device..."), this, [this] {
-        const int index = m_navigation->currentRow() - firstDeviceRow;
-        if (index < 0 || index >= m_devices.size()) {
+    devices->addAction(tr("&Data logging of the shown device..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L),
+                       this, [this] {
+        const int index = currentDeviceIndex();
+        if (index < 0) {
             QMessageBox::information(this, tr("Data logging"), tr("Open the page of a device first."));
             return;
         }
@@ -259,9 +263,10 @@ void MainWindow::buildMenus()
         DataLoggingDialog dialog(&m_bus, id, dataLogger(id), this);
         dialog.exec();
     });
-    devices->addAction(tr("Commissioning &report of the shown device..."), this, [this] {
-        const int index = m_navigation->currentRow() - firstDeviceRow;
-        if (index < 0 || index >= m_devices.size()) {
+    devices->addAction(tr("Commissioning &report of the shown device..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R),
+                       this, [this] {
+        const int index = currentDeviceIndex();
+        if (index < 0) {
             QMessageBox::information(this, tr("Report"), tr("Open the page of a device first."));
             return;
         }
@@ -272,7 +277,9 @@ void MainWindow::buildMenus()
         if (!path.isEmpty() && !writeReport(m_bus.deviceMap(id)->family, m_bus.deviceAddress(id), path, &error))
             QMessageBox::warning(this, tr("Report"), error);
     });
-    QMenu *language = menuBar()->addMenu(tr("&Language"));
+
+    buildPageShortcuts(menuBar()->addMenu(tr("&View")));
+    QMenu *language = menuBar()->addMenu(tr("La&nguage"));
     for (const auto &[code, name] : {std::pair{"", QT_TR_NOOP("System language")}, std::pair{"en", "English"},
                                      std::pair{"de", "Deutsch"}}) {
         QAction *action = language->addAction(code[0] ? QString::fromUtf8(name) : tr(name));
@@ -290,6 +297,78 @@ void MainWindow::buildMenus()
                               "over Modbus RTU.")
                                    .arg(QStringLiteral(JUMO_VERSION)));
     });
+}
+
+void MainWindow::buildPageShortcuts(QMenu *view)
+{
+    view->addAction(tr("&Overview"), QKeySequence(Qt::CTRL | Qt::Key_0), this,
+                    [this] { showNavigationRow(overviewRow); });
+    view->addAction(tr("&Traffic and statistics"), QKeySequence(Qt::CTRL | Qt::Key_T), this,
+                    [this] { showNavigationRow(trafficRow); });
+    view->addAction(tr("Alarm &journal"), QKeySequence(Qt::CTRL | Qt::Key_J), this,
+                    [this] { showNavigationRow(journalRow); });
+    view->addAction(tr("&Write audit log"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A), this,
+                    [this] { showNavigationRow(auditRow); });
+    view->addSeparator();
+    // The first nine devices in the list, by their place in it.
+    QMenu *devicePages = view->addMenu(tr("&Device pages"));
+    for (int n = 1; n <= 9; ++n) {
+        QAction *action = devicePages->addAction(tr("Device %1 in the list").arg(n),
+                                                 QKeySequence(Qt::CTRL | Qt::Key(Qt::Key_0 + n)), this,
+                                                 [this, n] { showNavigationRow(firstDeviceRow + n - 1); });
+        action->setObjectName(QStringLiteral("showDevice%1").arg(n));
+    }
+    view->addAction(tr("&Next page"), QKeySequence(Qt::CTRL | Qt::Key_PageDown), this, [this] {
+        showNavigationRow((m_navigation->currentRow() + 1) % m_navigation->count());
+    });
+    view->addAction(tr("&Previous page"), QKeySequence(Qt::CTRL | Qt::Key_PageUp), this, [this] {
+        showNavigationRow((m_navigation->currentRow() + m_navigation->count() - 1) % m_navigation->count());
+    });
+    // The tabs of a device page, wherever the focus is in the window.
+    view->addAction(tr("Next &tab of the device page"), QKeySequence(Qt::CTRL | Qt::Key_Tab), this, [this] {
+        if (auto *page = qobject_cast<DevicePage *>(m_pages->currentWidget()))
+            page->tabs()->setCurrentIndex((page->tabs()->currentIndex() + 1) % page->tabs()->count());
+    });
+    view->addAction(tr("Previous t&ab of the device page"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Backtab), this,
+                    [this] {
+        if (auto *page = qobject_cast<DevicePage *>(m_pages->currentWidget()))
+            page->tabs()->setCurrentIndex((page->tabs()->currentIndex() + page->tabs()->count() - 1)
+                                          % page->tabs()->count());
+    });
+    view->addAction(tr("Go to the page &list"), QKeySequence(Qt::Key_F6), this, [this] { m_navigation->setFocus(); });
+}
+
+void MainWindow::showNavigationRow(int row)
+{
+    if (row < 0 || row >= m_navigation->count())
+        return;
+    m_navigation->setCurrentRow(row);
+    // The keyboard goes on in the page now shown.
+    if (QWidget *page = m_pages->currentWidget())
+        page->setFocus(Qt::ShortcutFocusReason);
+}
+
+void MainWindow::requestConnect()
+{
+    if (m_bus.state() != LineState::Disconnected)
+        return;
+    if (!connectLine())
+        QMessageBox::warning(this, tr("Connect"), m_bus.lastError());
+}
+
+void MainWindow::addDeviceInteractively()
+{
+    AddDeviceDialog dialog(m_registry, this);
+    if (dialog.exec() == QDialog::Accepted && dialog.family()) {
+        addDevice(dialog.family(), dialog.address());
+        showDevice(dialog.family()->family, dialog.address());
+    }
+}
+
+int MainWindow::currentDeviceIndex() const
+{
+    const int index = m_navigation->currentRow() - firstDeviceRow;
+    return index >= 0 && index < m_devices.size() ? index : -1;
 }
 
 void MainWindow::startDemo()
@@ -345,6 +424,10 @@ void MainWindow::onStateChanged(LineState state)
     case LineState::Disconnected:
         m_connectionBar->setConnected(false, tr("Disconnected"));
         break;
+    }
+    if (m_connectAction) {
+        m_connectAction->setEnabled(state == LineState::Disconnected);
+        m_disconnectAction->setEnabled(state != LineState::Disconnected);
     }
     updateStatus();
 }

@@ -14,6 +14,7 @@
 
 class QLabel;
 class QListWidget;
+class QMenu;
 class QStackedWidget;
 
 namespace jumo {
@@ -103,6 +104,13 @@ private:
     void updateNavigationItem(DeviceId id);
 
     void buildMenus();
+    // Keyboard: pages by number (Ctrl+0 overview, Ctrl+1..9 devices), next and previous.
+    void buildPageShortcuts(QMenu *view);
+    void showNavigationRow(int row);
+    void requestConnect();
+    void addDeviceInteractively();
+    // The device whose page is shown, or -1.
+    int currentDeviceIndex() const;
     void startDemo();
     void removeCurrentDevice();
     void onStateChanged(LineState state);
@@ -122,6 +130,8 @@ private:
     std::unique_ptr<DemoLine> m_demo;
     std::unique_ptr<QSettings> m_settings;
     ConnectionBar *m_connectionBar;
+    QAction *m_connectAction = nullptr;
+    QAction *m_disconnectAction = nullptr;
     QListWidget *m_navigation;
     QStackedWidget *m_pages;
     OverviewPage *m_overview;

@@ -5,7 +5,8 @@
 // alarm words never read as a live all-clear; a device of another family at an address is
 // refused (nothing shown, nothing written), also when it replaces the right one; a log
 // that cannot keep a record (a full disk) shows in the status bar and the journal; a large
-// journal opens at its newest records and pages back.
+// journal opens at its newest records and pages back; connect, add, open, write, scan
+// and disconnect with the keyboard alone.
 #include "bitswitches.h"
 #include "connectionbar.h"
 #include "controlrow.h"
@@ -30,6 +31,8 @@
 #include "trendview.h"
 
 #include <QApplication>
+#include <QComboBox>
+#include <QTabWidget>
 #include <QCheckBox>
 #include <QElapsedTimer>
 #include <QLabel>
@@ -69,6 +72,14 @@ void clickAndConfirm(QPushButton *button)
     QTest::mouseClick(button, Qt::LeftButton);
     answer.stop();
     QCOMPARE(answered, 1);
+}
+
+// Presses Tab in the window until the widget has the focus; false after a round.
+bool tabTo(QWidget *window, QWidget *target)
+{
+    for (int i = 0; i < 200 && !target->hasFocus(); ++i)
+        QTest::keyClick(QApplication::focusWidget() ? QApplication::focusWidget() : window, Qt::Key_Tab);
+    return target->hasFocus();
 }
 
 // The states of the journal's records of a kind of log event (write_audit_log, data_logging).
@@ -118,6 +129,7 @@ private slots:
     void wrongFamilyIsRefused();
     void swappedDeviceIsCheckedAgain();
     void scanDoesNotListTheAddressEveryDeviceAnswers();
+    void everythingFromTheKeyboard();
 
 private:
     // A window connected to the line with the IPC 300 at address 1 on its page.
@@ -905,6 +917,99 @@ void tst_Hmi::scanDoesNotListTheAddressEveryDeviceAnswers()
     dialog->accept();
     QVERIFY(!window->deviceTile("ipc300", 255));
     QVERIFY(!window->deviceTile("tya200", 255));
+}
+
+
+void tst_Hmi::everythingFromTheKeyboard()
+{
+    MainWindow::Options options;
+    options.settingsFile = m_dir.filePath("keyboard.ini");
+    options.logFolder = m_dir.filePath("logs-keyboard");
+    MainWindow window(families(), options);
+    window.connectionBar()->setSettings(m_line.masterEnd(), 19200, "8N1");
+    window.show();
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+
+    // F5 connects.
+    QTest::keyClick(&window, Qt::Key_F5);
+    QTRY_COMPARE(window.bus()->state(), LineState::Connected);
+
+    // Ctrl+N adds a device: the family chosen with the arrow keys, the address typed.
+    int ipcIndex = -1;
+    const auto all = families().families();
+    for (int i = 0; i < all.size(); ++i) {
+        if (all[i]->family == "ipc300")
+            ipcIndex = i;
+    }
+    QVERIFY(ipcIndex >= 0);
+    bool answered = false;
+    QTimer::singleShot(100, this, [&] {
+        QWidget *dialog = QApplication::activeModalWidget();
+        if (!dialog)
+            return;
+        auto *familyBox = dialog->findChild<QComboBox *>("familyBox");
+        QTest::keyClick(dialog, Qt::Key_F, Qt::AltModifier);   // the "Family" label's mnemonic
+        if (!familyBox || !familyBox->hasFocus())
+            return;
+        QTest::keyClick(familyBox, Qt::Key_Home);
+        for (int i = 0; i < ipcIndex; ++i)
+            QTest::keyClick(familyBox, Qt::Key_Down);
+        QTest::keyClick(dialog, Qt::Key_A, Qt::AltModifier);   // "Address"
+        QWidget *address = QApplication::focusWidget();
+        QTest::keyClick(address, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(address, "1");
+        answered = true;
+        QTest::keyClick(address, Qt::Key_Return);
+    });
+    QTest::keyClick(&window, Qt::Key_N, Qt::ControlModifier);
+    QVERIFY(answered);
+    DevicePage *page = window.devicePage("ipc300", 1);
+    QVERIFY(page);
+    QTRY_VERIFY(page->isVisible());
+    // (The offscreen platform does not give the activation back when a dialog closes.)
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+
+    // Ctrl+0 shows the overview; Tab reaches the device's tile and Enter opens its page.
+    QTest::keyClick(&window, Qt::Key_0, Qt::ControlModifier);
+    QTRY_VERIFY(!page->isVisible());
+    DeviceTile *tile = window.deviceTile("ipc300", 1);
+    QVERIFY(tile && tile->isVisible());
+    QVERIFY(tabTo(&window, tile));
+    QTest::keyClick(tile, Qt::Key_Return);
+    QTRY_VERIFY(page->isVisible());
+    // Ctrl+Tab goes through the page's tabs, to the controls.
+    const int start = page->tabs()->currentIndex();
+    QTest::keyClick(&window, Qt::Key_Tab, Qt::ControlModifier);
+    QCOMPARE(page->tabs()->currentIndex(), (start + 1) % page->tabs()->count());
+    for (int i = 0; i < page->tabs()->count() && page->tabs()->currentWidget() != page->controls(); ++i)
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab, Qt::ControlModifier);
+    QCOMPARE(page->tabs()->currentWidget(), page->controls());
+
+    // The setpoint typed and written with Enter, once the device is known to be an IPC 300.
+    QTRY_VERIFY_WITH_TIMEOUT(window.bus()->identities().isTrusted(page->device()), 20000);
+    ControlRow *row = page->controls()->row("input_setpoint");
+    QVERIFY(row);
+    auto *edit = row->findChild<QLineEdit *>("input_input_setpoint");
+    QVERIFY(edit);
+    QVERIFY(tabTo(&window, edit));
+    QTest::keyClicks(edit, "41.5");
+    QTest::keyClick(edit, Qt::Key_Return);
+    QTRY_VERIFY_WITH_TIMEOUT(row->stateText().startsWith("Confirmed"), 20000);
+    QCOMPARE(m_sim.line().device(1)->number("input_setpoint"), 41.5);
+
+    // Ctrl+Shift+S opens the scan dialog, Escape closes it; Shift+F5 disconnects.
+    QTest::keyClick(&window, Qt::Key_S, Qt::ControlModifier | Qt::ShiftModifier);
+    QPointer<ScanDialog> scan = window.findChild<ScanDialog *>("scanDialog");
+    QVERIFY(scan);
+    QTRY_VERIFY(scan->isVisible());
+    QTest::keyClick(scan, Qt::Key_Escape);
+    QTRY_VERIFY(!scan || !scan->isVisible());
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QTest::keyClick(&window, Qt::Key_F5, Qt::ShiftModifier);
+    QTRY_COMPARE(window.bus()->state(), LineState::Disconnected);
 }
 
 QTEST_MAIN(tst_Hmi)
