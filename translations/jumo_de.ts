@@ -960,7 +960,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DeviceTile</name>
     <message>
-        <location filename="../ui/devicetile.cpp" line="+28"/>
+        <location filename="../ui/devicetile.cpp" line="+27"/>
         <source>address %1</source>
         <translation>Adresse %1</translation>
     </message>
@@ -2053,18 +2053,18 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Vorig&amp;er Reiter der Geräteseite</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>Go to the page &amp;list</source>
         <translation>Zur Seiten&amp;liste</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+27"/>
         <location line="+45"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-303"/>
+        <location line="-314"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -2104,12 +2104,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>NUR LESEN</translation>
     </message>
     <message>
-        <location line="+503"/>
+        <location line="+514"/>
         <source>Data logging of %1 stopped: %2</source>
         <translation>Datenaufzeichnung von %1 angehalten: %2</translation>
     </message>
     <message>
-        <location line="-469"/>
+        <location line="-480"/>
         <source>address %1: %2</source>
         <translation>Adresse %1: %2</translation>
     </message>
@@ -2232,7 +2232,7 @@ Commissioning and monitoring of JUMO power and process controllers over Modbus R
 Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Modbus RTU.</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+93"/>
         <source>Demo line failed: %1</source>
         <translation>Demo-Leitung fehlgeschlagen: %1</translation>
     </message>

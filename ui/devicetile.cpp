@@ -9,8 +9,7 @@
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLocale>
-#include <QStyleOptionFocusRect>
-#include <QStylePainter>
+#include <QPainter>
 #include <QVBoxLayout>
 
 namespace jumo {
@@ -190,13 +189,12 @@ void DeviceTile::paintEvent(QPaintEvent *event)
     QFrame::paintEvent(event);
     if (!hasFocus())
         return;
-    // The tile with the keyboard focus carries the style's focus frame inside its border.
-    QStylePainter painter(this);
-    QStyleOptionFocusRect option;
-    option.initFrom(this);
-    option.rect = contentsRect().adjusted(1, 1, -1, -1);
-    option.backgroundColor = palette().color(QPalette::Window);
-    painter.drawPrimitive(QStyle::PE_FrameFocusRect, option);
+    // The tile with the keyboard focus has a frame in the highlight colour inside its
+    // border, plain to see across a room (the style's own focus mark is faint).
+    QPainter painter(this);
+    painter.setPen(QPen(palette().color(QPalette::Highlight), 3));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawRect(QRectF(rect()).adjusted(2.5, 2.5, -2.5, -2.5));
 }
 
 void DeviceTile::showEvent(QShowEvent *event)

@@ -329,12 +329,14 @@ void MainWindow::buildPageShortcuts(QMenu *view)
         if (auto *page = qobject_cast<DevicePage *>(m_pages->currentWidget()))
             page->tabs()->setCurrentIndex((page->tabs()->currentIndex() + 1) % page->tabs()->count());
     });
-    view->addAction(tr("Previous t&ab of the device page"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Backtab), this,
-                    [this] {
+    QAction *previousTab = view->addAction(tr("Previous t&ab of the device page"), this, [this] {
         if (auto *page = qobject_cast<DevicePage *>(m_pages->currentWidget()))
             page->tabs()->setCurrentIndex((page->tabs()->currentIndex() + page->tabs()->count() - 1)
                                           % page->tabs()->count());
     });
+    // X11 reports Shift+Tab as Backtab; the menu shows the first.
+    previousTab->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Tab),
+                               QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Backtab)});
     view->addAction(tr("Go to the page &list"), QKeySequence(Qt::Key_F6), this, [this] { m_navigation->setFocus(); });
 }
 
@@ -343,9 +345,18 @@ void MainWindow::showNavigationRow(int row)
     if (row < 0 || row >= m_navigation->count())
         return;
     m_navigation->setCurrentRow(row);
-    // The keyboard goes on in the page now shown.
-    if (QWidget *page = m_pages->currentWidget())
-        page->setFocus(Qt::ShortcutFocusReason);
+    // The keyboard goes on in the page now shown, at its first field (the overview: its
+    // first tile).
+    QWidget *page = m_pages->currentWidget();
+    if (!page)
+        return;
+    for (QWidget *w = page->nextInFocusChain(); w && w != page; w = w->nextInFocusChain()) {
+        if (page->isAncestorOf(w) && w->isVisible() && w->isEnabled() && (w->focusPolicy() & Qt::TabFocus)) {
+            w->setFocus(Qt::ShortcutFocusReason);
+            return;
+        }
+    }
+    page->setFocus(Qt::ShortcutFocusReason);
 }
 
 void MainWindow::requestConnect()

@@ -16,6 +16,9 @@ OverviewPage::OverviewPage(QWidget *parent) : QWidget(parent)
     auto *scroll = new QScrollArea(this);
     scroll->setWidget(inner);
     scroll->setWidgetResizable(true);
+    // Tab goes from tile to tile (the area scrolls to the one with the focus), not to the
+    // scroll area itself.
+    scroll->setFocusPolicy(Qt::NoFocus);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(scroll);
