@@ -3408,7 +3408,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RtuTransport</name>
     <message>
-        <location filename="../lib/bus/rtutransport.cpp" line="+137"/>
+        <location filename="../lib/bus/rtutransport.cpp" line="+143"/>
         <source>reply with function code %1 to a request with %2</source>
         <translation>Antwort mit Funktionscode %1 auf eine Anfrage mit %2</translation>
     </message>
@@ -3580,7 +3580,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::TrendView</name>
     <message>
-        <location filename="../ui/trendview.cpp" line="+51"/>
+        <location filename="../ui/trendview.cpp" line="+50"/>
         <source>1 minute</source>
         <translation>1 Minute</translation>
     </message>
@@ -3619,6 +3619,16 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="-3"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>Value (no unit)</source>
+        <translation>Wert (ohne Einheit)</translation>
     </message>
 </context>
 <context>

@@ -60,7 +60,7 @@ DevicePage::DevicePage(Bus *bus, int device, LiveValuesModel *values, AlarmBitsM
         m_program = program;
         m_tabs->addTab(m_program, tr("Program"));
     }
-    m_trend = new TrendView(m_values, this);
+    m_trend = new TrendView(m_values, bus->deviceMap(device)->overview, this);
     m_tabs->addTab(m_trend, tr("Trend"));
 
     auto *layout = new QVBoxLayout(this);

@@ -27,10 +27,9 @@
 
 namespace jumo {
 
-TrendView::TrendView(LiveValuesModel *values, QWidget *parent)
+TrendView::TrendView(LiveValuesModel *values, const QStringList &keyEntries, QWidget *parent)
     : QWidget(parent), m_values(values), m_choice(new QListWidget(this)), m_window(new QComboBox(this)),
-      m_chart(new QChart), m_view(new QChartView(m_chart, this)), m_timeAxis(new QDateTimeAxis),
-      m_valueAxis(new QValueAxis)
+      m_chart(new QChart), m_view(new QChartView(m_chart, this)), m_timeAxis(new QDateTimeAxis)
 {
     m_choice->setObjectName(QStringLiteral("trendChoice"));
     // A long signal name wraps within the list, which never scrolls sideways.
@@ -70,9 +69,10 @@ TrendView::TrendView(LiveValuesModel *values, QWidget *parent)
     });
 
     m_timeAxis->setFormat(QStringLiteral("HH:mm:ss"));
+    m_timeAxis->setTitleText(tr("Time"));
     m_chart->addAxis(m_timeAxis, Qt::AlignBottom);
-    m_chart->addAxis(m_valueAxis, Qt::AlignLeft);
     m_chart->legend()->setAlignment(Qt::AlignBottom);
+    m_chart->legend()->setShowToolTips(true);
     m_view->setRenderHint(QPainter::Antialiasing);
 
     auto *bar = new QHBoxLayout;
@@ -97,7 +97,64 @@ TrendView::TrendView(LiveValuesModel *values, QWidget *parent)
         if (first.column() <= LiveValuesModel::ValueColumn)
             onDataChanged(first.row(), last.row());
     });
+    for (const QString &id : keyEntries)
+        select(id, true);
     rescale();
+}
+
+QString TrendView::unitOf(int row) const
+{
+    return m_values->index(row, LiveValuesModel::UnitColumn).data().toString();
+}
+
+QValueAxis *TrendView::axisFor(const QString &unit, const QColor &color)
+{
+    for (const auto &[u, axis] : std::as_const(m_valueAxes)) {
+        if (u == unit)
+            return axis;
+    }
+    auto *axis = new QValueAxis;
+    axis->setTitleText(unit.isEmpty() ? tr("Value (no unit)") : unit);
+    // In the colour of the first trace on it, so each line finds its scale.
+    axis->setLinePenColor(color);
+    axis->setLabelsColor(color);
+    axis->setTitleBrush(color);
+    // Axes alternate left and right, so two units read side by side.
+    m_chart->addAxis(axis, m_valueAxes.size() % 2 == 0 ? Qt::AlignLeft : Qt::AlignRight);
+    m_valueAxes.append({unit, axis});
+    return axis;
+}
+
+void TrendView::dropUnusedAxes()
+{
+    for (qsizetype i = m_valueAxes.size() - 1; i >= 0; --i) {
+        bool used = false;
+        for (auto it = m_traces.cbegin(); it != m_traces.cend() && !used; ++it)
+            used = unitOf(it.key()) == m_valueAxes[i].first;
+        if (!used) {
+            m_chart->removeAxis(m_valueAxes[i].second);
+            delete m_valueAxes[i].second;
+            m_valueAxes.removeAt(i);
+        }
+    }
+}
+
+QStringList TrendView::selectedEntries() const
+{
+    QList<int> rows = m_traces.keys();
+    std::sort(rows.begin(), rows.end());
+    QStringList out;
+    for (int row : rows)
+        out << m_values->entryId(row);
+    return out;
+}
+
+QStringList TrendView::axisTitles() const
+{
+    QStringList out;
+    for (const auto &[unit, axis] : m_valueAxes)
+        out << axis->titleText();
+    return out;
 }
 
 void TrendView::setSelected(int row, bool on)
@@ -108,6 +165,8 @@ void TrendView::setSelected(int row, bool on)
             m_chart->removeSeries(s);
             delete s;
         }
+        dropUnusedAxes();
+        rescale();
         return;
     }
     if (m_traces.contains(row))
@@ -141,10 +200,14 @@ QLineSeries *TrendView::addSegment(int row, Trace &trace)
     auto *series = new QLineSeries;
     m_chart->addSeries(series);
     series->attachAxis(m_timeAxis);
-    series->attachAxis(m_valueAxis);
+    series->attachAxis(axisFor(unitOf(row), series->color()));
     if (trace.segments.isEmpty()) {
-        series->setName(m_values->index(row, LiveValuesModel::LabelColumn).data().toString() + QStringLiteral(" [")
-                        + m_values->index(row, LiveValuesModel::UnitColumn).data().toString() + QLatin1Char(']'));
+        // "Load voltage [V]"; a unit set on the device reads "(configured)" already.
+        const QString label = m_values->index(row, LiveValuesModel::LabelColumn).data().toString();
+        const QString unit = unitOf(row);
+        series->setName(unit.isEmpty()                       ? label
+                        : unit.startsWith(QLatin1Char('(')) ? label + QLatin1Char(' ') + unit
+                                                             : label + QStringLiteral(" [") + unit + QLatin1Char(']'));
     } else {
         // A continuation: the same colour, one legend entry for the whole trace.
         series->setPen(trace.segments.first()->pen());
@@ -202,22 +265,28 @@ void TrendView::rescale()
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     const qint64 span = m_window->currentData().toLongLong() * 1000;
     m_timeAxis->setRange(QDateTime::fromMSecsSinceEpoch(now - span), QDateTime::fromMSecsSinceEpoch(now));
-    double lo = std::numeric_limits<double>::max();
-    double hi = std::numeric_limits<double>::lowest();
-    for (const Trace &trace : std::as_const(m_traces)) {
-        for (const QLineSeries *s : trace.segments) {
-            for (const QPointF &p : s->points()) {
-                if (p.x() >= now - span) {
-                    lo = std::min(lo, p.y());
-                    hi = std::max(hi, p.y());
+    for (const auto &[unit, axis] : std::as_const(m_valueAxes)) {
+        double lo = std::numeric_limits<double>::max();
+        double hi = std::numeric_limits<double>::lowest();
+        for (auto it = m_traces.cbegin(); it != m_traces.cend(); ++it) {
+            if (unitOf(it.key()) != unit)
+                continue;
+            for (const QLineSeries *s : it.value().segments) {
+                for (const QPointF &p : s->points()) {
+                    if (p.x() >= now - span) {
+                        lo = std::min(lo, p.y());
+                        hi = std::max(hi, p.y());
+                    }
                 }
             }
         }
+        if (lo > hi) {
+            axis->setRange(0, 1);
+        } else {
+            axis->setRange(lo - (hi - lo) * 0.05 - 0.5, hi + (hi - lo) * 0.05 + 0.5);
+            axis->applyNiceNumbers();
+        }
     }
-    if (lo > hi)
-        m_valueAxis->setRange(0, 1);
-    else
-        m_valueAxis->setRange(lo - (hi - lo) * 0.05 - 0.5, hi + (hi - lo) * 0.05 + 0.5);
 }
 
 bool TrendView::exportCsv(const QString &path, QString *error) const

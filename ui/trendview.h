@@ -1,5 +1,6 @@
 // A trend of chosen live values of one device over a time window, with pause and CSV
-// export. Samples come from the live values model as the poll cycles deliver them; only
+// export. It opens with the device's key values (those of its overview tile) chosen, one
+// value axis per unit, titled with the unit. Samples come from the live values model as the poll cycles deliver them; only
 // current values are drawn. A value that turns stale or unknown ends its line: the trend
 // shows a gap until the value is current again, never a line across the outage.
 #pragma once
@@ -8,6 +9,7 @@
 #include <QWidget>
 
 class QChart;
+class QColor;
 class QChartView;
 class QComboBox;
 class QDateTimeAxis;
@@ -25,13 +27,18 @@ class TrendView : public QWidget
     Q_OBJECT
 
 public:
-    explicit TrendView(LiveValuesModel *values, QWidget *parent = nullptr);
+    // keyEntries: chosen from the start (the map's overview entries).
+    TrendView(LiveValuesModel *values, const QStringList &keyEntries, QWidget *parent = nullptr);
 
     bool exportCsv(const QString &path, QString *error = nullptr) const;
     // Chooses an entry for the trend (as ticking it in the list does).
     void select(const QString &entryId, bool on);
     // The drawn segments of an entry's trace: more than one means gaps.
     QList<QList<QPointF>> segments(const QString &entryId) const;
+    // The chosen entries, in the model's order.
+    QStringList selectedEntries() const;
+    // The value axes' titles (one axis per unit in use), in the order they were added.
+    QStringList axisTitles() const;
 
 private:
     void onDataChanged(int first, int last);
@@ -44,7 +51,12 @@ private:
     QChart *m_chart;
     QChartView *m_view;
     QDateTimeAxis *m_timeAxis;
-    QValueAxis *m_valueAxis;
+    // One value axis per unit of the chosen entries; made when first needed, removed
+    // when no trace uses it.
+    QValueAxis *axisFor(const QString &unit, const QColor &color);
+    void dropUnusedAxes();
+    QString unitOf(int row) const;
+    QList<QPair<QString, QValueAxis *>> m_valueAxes;
     // One trace per chosen entry: a series per unbroken stretch of current values.
     struct Trace
     {

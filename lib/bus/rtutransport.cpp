@@ -4,6 +4,7 @@
 #include "bus/serialportlist.h"
 #include "protocol/rtuframe.h"
 
+#include <QDataStream>
 #include <QLoggingCategory>
 #include <QModbusReply>
 #include <QModbusRtuSerialClient>
@@ -127,15 +128,20 @@ ModbusResult RtuTransport::resultOf(const ModbusRequest &request, QModbusDevice:
                                     const QString &errorString)
 {
     ModbusResult result;
+    // Qt 6.4 keeps an exception's function code sign-extended (0xFFFFFF83): its own
+    // isException(), isValid() and functionCode() load an enum out of range (undefined
+    // behaviour, caught by UBSan). The byte as received is read through its stream form.
+    const quint8 functionByte = rawFunctionByte(raw);
+    const bool exception = (functionByte & 0x80) || error == QModbusDevice::ProtocolError;
     switch (error) {
     case QModbusDevice::NoError:
         result.status = ModbusResult::Status::Ok;
         if (request.isBroadcast())
             break;
-        if (raw.isValid() && quint8(raw.functionCode()) != quint8(request.function)) {
+        if (functionByte != 0 && functionByte != quint8(request.function)) {
             result.status = ModbusResult::Status::BadReply;
             result.errorText = tr("reply with function code %1 to a request with %2")
-                                       .arg(quint8(raw.functionCode()))
+                                       .arg(functionByte)
                                        .arg(quint8(request.function));
         } else if (!request.isWrite()) {
             // A reply of the wrong size is someone else's answer: never decode it.
@@ -159,7 +165,7 @@ ModbusResult RtuTransport::resultOf(const ModbusRequest &request, QModbusDevice:
     case QModbusDevice::ProtocolError:
         result.status = ModbusResult::Status::Exception;
         // Qt keeps the code as the first data byte; a frame without one has no code.
-        result.exceptionCode = raw.isException() && !raw.data().isEmpty() ? quint8(raw.data().at(0)) : 0;
+        result.exceptionCode = exception && !raw.data().isEmpty() ? quint8(raw.data().at(0)) : 0;
         break;
     case QModbusDevice::TimeoutError:
         result.status = ModbusResult::Status::Timeout;
@@ -174,12 +180,20 @@ ModbusResult RtuTransport::resultOf(const ModbusRequest &request, QModbusDevice:
     }
     if (result.status != ModbusResult::Status::Ok && result.errorText.isEmpty())
         result.errorText = errorString;
-    if (raw.isValid() || raw.isException()) {
-        QByteArray pdu(1, char(quint8(raw.functionCode()) | (raw.isException() ? 0x80 : 0)));
+    if (functionByte != 0) {
+        QByteArray pdu(1, char(functionByte));
         pdu += raw.data();
         result.replyFrame = RtuFrame::build(request.slave, pdu);
     }
     return result;
+}
+
+quint8 RtuTransport::rawFunctionByte(const QModbusPdu &pdu)
+{
+    QByteArray bytes;
+    QDataStream stream(&bytes, QIODevice::WriteOnly);
+    stream << pdu;
+    return bytes.isEmpty() ? 0 : quint8(bytes.at(0));
 }
 
 bool RtuTransport::echoMatches(const ModbusRequest &request, const QModbusDataUnit &unit)

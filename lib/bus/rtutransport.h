@@ -41,6 +41,8 @@ public:
 
 private:
     static bool echoMatches(const ModbusRequest &request, const QModbusDataUnit &unit);
+    // The function code byte as received (0x80 set for an exception), 0 for no response.
+    static quint8 rawFunctionByte(const QModbusPdu &pdu);
     void onReplyFinished(QModbusReply *reply, const ModbusRequest &request);
     void onErrorOccurred(QModbusDevice::Error error);
     void deliver(const ModbusResult &result);

@@ -130,6 +130,7 @@ private slots:
     void swappedDeviceIsCheckedAgain();
     void scanDoesNotListTheAddressEveryDeviceAnswers();
     void everythingFromTheKeyboard();
+    void trendOpensWithTheKeyValues();
 
 private:
     // A window connected to the line with the IPC 300 at address 1 on its page.
@@ -1010,6 +1011,30 @@ void tst_Hmi::everythingFromTheKeyboard()
     QVERIFY(QTest::qWaitForWindowActive(&window));
     QTest::keyClick(&window, Qt::Key_F5, Qt::ShiftModifier);
     QTRY_COMPARE(window.bus()->state(), LineState::Disconnected);
+}
+
+void tst_Hmi::trendOpensWithTheKeyValues()
+{
+    // The trend needs no clicks: the tile's key values are plotted from the start, each
+    // unit on an axis of its own, titled with the unit.
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    DevicePage *page = window->devicePage("ipc300", 1);
+    TrendView *trend = page->trend();
+    QStringList chosen = trend->selectedEntries();
+    chosen.sort();
+    QCOMPARE(chosen, QStringList({"input_setpoint", "load_current", "load_voltage", "power"}));
+    QStringList titles = trend->axisTitles();
+    titles.sort();
+    QCOMPARE(titles, QStringList({"%", "A", "V", "W"}));
+    for (const QString &id : trend->selectedEntries())
+        QTRY_VERIFY_WITH_TIMEOUT(!trend->segments(id).isEmpty() && !trend->segments(id).first().isEmpty(), 20000);
+    // A trace taken away takes its axis with it when no other trace has that unit.
+    trend->select("load_current", false);
+    QVERIFY(!trend->axisTitles().contains("A"));
+    QCOMPARE(trend->axisTitles().size(), 3);
+    trend->select("load_current", true);
+    QVERIFY(trend->axisTitles().contains("A"));
 }
 
 QTEST_MAIN(tst_Hmi)
