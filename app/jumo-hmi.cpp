@@ -8,6 +8,8 @@
 #include "protocol/translations.h"
 #include "jumoversion.h"
 
+#include "theme.h"
+
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QElapsedTimer>
@@ -58,6 +60,10 @@ int main(int argc, char *argv[])
                       QApplication::translate("main", "Trust the named families without checking the devices' identity "
                                                       "registers (for devices that cannot report them); the write audit "
                                                       "log records it.")});
+    parser.addOption({QStringLiteral("theme"),
+                      QApplication::translate("main", "Colours for this run: system, light, dark or high-contrast "
+                                                      "(default: the theme chosen in the View menu, else system)."),
+                      QStringLiteral("name")});
     parser.addOption({QStringLiteral("report-startup"),
                       QApplication::translate("main", "Print on stderr when the first live value arrives.")});
     parser.addOption({QStringLiteral("verbose"),
@@ -70,6 +76,14 @@ int main(int argc, char *argv[])
     options.demo = parser.isSet(QStringLiteral("demo"));
     options.readOnly = parser.isSet(QStringLiteral("read-only"));
     options.identify = !parser.isSet(QStringLiteral("no-identify"));
+    options.theme = parser.value(QStringLiteral("theme"));
+    if (!options.theme.isEmpty() && !jumo::Theme::fromName(options.theme)) {
+        QTextStream(stderr) << QApplication::translate("main", "jumo-hmi: unknown theme '%1' (system, light, dark or "
+                                                               "high-contrast)")
+                                       .arg(options.theme)
+                            << Qt::endl;
+        return 2;
+    }
     jumo::MainWindow window(registry, options);
     if (!registry.errors().isEmpty())
         window.statusBar()->showMessage(QApplication::translate("main", "Map files refused: %1")

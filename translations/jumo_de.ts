@@ -64,7 +64,7 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::BitSwitches</name>
     <message>
-        <location filename="../ui/bitswitches.cpp" line="+42"/>
+        <location filename="../ui/bitswitches.cpp" line="+43"/>
         <source>The device does not report these bits: a write sets every bit as ticked here.</source>
         <translation>Das Gerät meldet diese Bits nicht zurück: Ein Schreiben setzt jedes Bit so, wie es hier angekreuzt ist.</translation>
     </message>
@@ -632,7 +632,7 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
 <context>
     <name>jumo::ControlRow</name>
     <message>
-        <location filename="../ui/controlrow.cpp" line="+58"/>
+        <location filename="../ui/controlrow.cpp" line="+59"/>
         <source>Precondition: %1</source>
         <translation>Voraussetzung: %1</translation>
     </message>
@@ -722,7 +722,7 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
         <translation>Gerät: %1</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+57"/>
         <source>&apos;%1&apos; is no number that can be read one way only; write it without thousands separators</source>
         <translation>„%1“ ist keine eindeutig lesbare Zahl; bitte ohne Tausenderpunkte schreiben</translation>
     </message>
@@ -901,7 +901,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DevicePage</name>
     <message>
-        <location filename="../ui/devicepage.cpp" line="+25"/>
+        <location filename="../ui/devicepage.cpp" line="+26"/>
         <source>Read-only mode: values are shown, nothing is written to the device.</source>
         <translation>Nur-Lese-Modus: Werte werden angezeigt, es wird nichts auf das Gerät geschrieben.</translation>
     </message>
@@ -942,7 +942,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Trend</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+27"/>
         <source>Wrong device: %1. Its values are not shown and nothing is written to it until the device at this address is of the family it was added as.</source>
         <translation>Falsches Gerät: %1. Seine Werte werden nicht angezeigt und nichts wird geschrieben, bis das Gerät an dieser Adresse zu der Familie gehört, als die es hinzugefügt wurde.</translation>
     </message>
@@ -960,13 +960,13 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DeviceTile</name>
     <message>
-        <location filename="../ui/devicetile.cpp" line="+27"/>
+        <location filename="../ui/devicetile.cpp" line="+28"/>
         <source>address %1</source>
         <translation>Adresse %1</translation>
     </message>
     <message>
         <location line="+59"/>
-        <location line="+78"/>
+        <location line="+99"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
@@ -1891,7 +1891,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 <context>
     <name>jumo::MainWindow</name>
     <message>
-        <location filename="../ui/mainwindow.cpp" line="+66"/>
+        <location filename="../ui/mainwindow.cpp" line="+68"/>
         <location line="+4"/>
         <source>Time</source>
         <translation>Zeit</translation>
@@ -1958,7 +1958,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Meldung</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+20"/>
         <source>JUMO HMI [read-only]</source>
         <translation>JUMO HMI [Nur-Lese-Modus]</translation>
     </message>
@@ -1973,7 +1973,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location line="+146"/>
+        <location line="+148"/>
         <source>&amp;Line</source>
         <translation>&amp;Leitung</translation>
     </message>
@@ -2058,13 +2058,18 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Zur Seiten&amp;liste</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+2"/>
+        <source>T&amp;heme</source>
+        <translation>&amp;Farbschema</translation>
+    </message>
+    <message>
+        <location line="+54"/>
         <location line="+45"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-314"/>
+        <location line="-345"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -2104,12 +2109,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>NUR LESEN</translation>
     </message>
     <message>
-        <location line="+514"/>
+        <location line="+545"/>
         <source>Data logging of %1 stopped: %2</source>
         <translation>Datenaufzeichnung von %1 angehalten: %2</translation>
     </message>
     <message>
-        <location line="-480"/>
+        <location line="-509"/>
         <source>address %1: %2</source>
         <translation>Adresse %1: %2</translation>
     </message>
@@ -2232,7 +2237,7 @@ Commissioning and monitoring of JUMO power and process controllers over Modbus R
 Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Modbus RTU.</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+122"/>
         <source>Demo line failed: %1</source>
         <translation>Demo-Leitung fehlgeschlagen: %1</translation>
     </message>
@@ -3505,6 +3510,29 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+3"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::Theme</name>
+    <message>
+        <location filename="../ui/theme.cpp" line="+230"/>
+        <source>&amp;System</source>
+        <translation>&amp;System</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Light</source>
+        <translation>&amp;Hell</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Dark</source>
+        <translation>&amp;Dunkel</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;High contrast</source>
+        <translation>Hoher &amp;Kontrast</translation>
     </message>
 </context>
 <context>
@@ -7379,7 +7407,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+34"/>
+        <location filename="../app/jumo-hmi.cpp" line="+36"/>
         <source>JUMO commissioning and monitoring HMI.</source>
         <translation>JUMO-HMI für Inbetriebnahme und Überwachung.</translation>
     </message>
@@ -7430,6 +7458,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+4"/>
+        <source>Colours for this run: system, light, dark or high-contrast (default: the theme chosen in the View menu, else system).</source>
+        <translation>Farben für diesen Lauf: system, light, dark oder high-contrast (Vorgabe: das im Menü Ansicht gewählte Farbschema, sonst system).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Print on stderr when the first live value arrives.</source>
         <translation>Auf stderr ausgeben, wann der erste Live-Wert eintrifft.</translation>
     </message>
@@ -7440,6 +7473,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+11"/>
+        <source>jumo-hmi: unknown theme &apos;%1&apos; (system, light, dark or high-contrast)</source>
+        <translation>jumo-hmi: unbekanntes Farbschema „%1“ (system, light, dark oder high-contrast)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Map files refused: %1</source>
         <translation>Map-Dateien abgelehnt: %1</translation>
     </message>

@@ -3,6 +3,7 @@
 #include "ledindicator.h"
 #include "models/bitstates.h"
 #include "protocol/bitwrite.h"
+#include "theme.h"
 
 #include <QCheckBox>
 #include <QCoreApplication>
@@ -42,7 +43,7 @@ BitSwitches::BitSwitches(const Bus *bus, DeviceId device, const RegisterMap &map
         auto *hint = new QLabel(tr("The device does not report these bits: a write sets every bit as ticked here."),
                                 this);
         hint->setWordWrap(true);
-        hint->setStyleSheet(QStringLiteral("color: gray"));
+        hint->setStyleSheet(QStringLiteral("color: %1").arg(Theme::color(Theme::Role::Hint).name()));
         grid->addWidget(hint, (i + 2) / 3, 0, 1, 3);
         return;
     }

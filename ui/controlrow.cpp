@@ -8,6 +8,7 @@
 #include "protocol/valuecodec.h"
 #include "protocol/valueformat.h"
 #include "flowlayout.h"
+#include "theme.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -63,7 +64,7 @@ ControlRow::ControlRow(Bus *bus, int device, const RegisterMap &map, const Regis
     if (!hints.isEmpty()) {
         auto *hint = new QLabel(hints.join(QLatin1Char('\n')), this);
         hint->setWordWrap(true);
-        hint->setStyleSheet(QStringLiteral("color: gray"));
+        hint->setStyleSheet(QStringLiteral("color: %1").arg(Theme::color(Theme::Role::Hint).name()));
         layout->addWidget(hint, 1, 0, 1, 3);
     }
 
@@ -152,20 +153,20 @@ void ControlRow::showWriteState(int state, const QString &message)
 {
     switch (WriteCommand::State(state)) {
     case WriteCommand::State::Pending:
-        m_state->setStyleSheet(QStringLiteral("color: #806000"));
+        m_state->setStyleSheet(QStringLiteral("color: %1").arg(Theme::color(Theme::Role::Pending).name()));
         m_state->setText(tr("Pending: %1").arg(message));
         break;
     case WriteCommand::State::Confirmed:
-        m_state->setStyleSheet(QStringLiteral("color: #207020"));
+        m_state->setStyleSheet(QStringLiteral("color: %1").arg(Theme::color(Theme::Role::Confirmed).name()));
         m_state->setText(tr("Confirmed: %1").arg(message));
         break;
     case WriteCommand::State::Refused:
-        m_state->setStyleSheet(QStringLiteral("color: #b00000"));
+        m_state->setStyleSheet(QStringLiteral("color: %1").arg(Theme::color(Theme::Role::Refused).name()));
         m_state->setText(tr("Refused: %1").arg(message));
         break;
     case WriteCommand::State::Unknown:
         // Neither done nor refused: only the device can tell, and nothing is resent.
-        m_state->setStyleSheet(QStringLiteral("color: #b05000; font-weight: bold"));
+        m_state->setStyleSheet(QStringLiteral("color: %1; font-weight: bold").arg(Theme::color(Theme::Role::Unknown).name()));
         m_state->setText(tr("Unknown, check the device: %1").arg(message));
         break;
     case WriteCommand::State::Idle:
@@ -202,7 +203,8 @@ void ControlRow::refreshCurrent()
     if (!current)
         text += QStringLiteral(" (%1)").arg(ValueText::status(state, m_map, m_bus->clockMs()));
     m_current->setText(text.trimmed());
-    m_current->setStyleSheet(current ? QString() : QStringLiteral("color: gray; font-style: italic"));
+    m_current->setStyleSheet(current ? QString()
+                                      : QStringLiteral("color: %1; font-style: italic").arg(Theme::color(Theme::Role::Hint).name()));
 }
 
 void ControlRow::setReadOnly(bool readOnly)
@@ -269,7 +271,7 @@ void ControlRow::writeInput()
 
 void ControlRow::refuse(const QString &reason)
 {
-    m_state->setStyleSheet(QStringLiteral("color: #b00000"));
+    m_state->setStyleSheet(QStringLiteral("color: %1").arg(Theme::color(Theme::Role::Refused).name()));
     m_state->setText(tr("Not written: %1").arg(reason));
     m_state->show();
 }

@@ -7,6 +7,7 @@
 #include "ledgrid.h"
 #include "models/livevaluesmodel.h"
 #include "livevaluesview.h"
+#include "theme.h"
 #include "trendview.h"
 
 #include <QLabel>
@@ -23,7 +24,7 @@ DevicePage::DevicePage(Bus *bus, int device, LiveValuesModel *values, AlarmBitsM
     setObjectName(QStringLiteral("device_%1_%2").arg(map.family).arg(bus->deviceAddress(device)));
     m_readOnlyBanner->setObjectName(QStringLiteral("readOnlyBanner"));
     m_readOnlyBanner->setText(tr("Read-only mode: values are shown, nothing is written to the device."));
-    m_readOnlyBanner->setStyleSheet(QStringLiteral("background: #fff3c0; color: #604000; padding: 4px"));
+    m_readOnlyBanner->setStyleSheet(Theme::bannerStyle(Theme::Role::InfoBanner, Theme::Role::InfoBannerText));
     m_readOnlyBanner->setWordWrap(true);
     m_readOnlyBanner->hide();
     m_identityBanner->setObjectName(QStringLiteral("identityBanner"));
@@ -78,6 +79,12 @@ void DevicePage::setReadOnly(bool readOnly)
         m_program->setReadOnly(readOnly);
 }
 
+void DevicePage::restyle(const DeviceCondition &condition)
+{
+    m_readOnlyBanner->setStyleSheet(Theme::bannerStyle(Theme::Role::InfoBanner, Theme::Role::InfoBannerText));
+    setCondition(condition);
+}
+
 void DevicePage::setCondition(const DeviceCondition &condition)
 {
     switch (condition.state) {
@@ -85,14 +92,14 @@ void DevicePage::setCondition(const DeviceCondition &condition)
         m_identityBanner->setText(tr("Wrong device: %1. Its values are not shown and nothing is written to it until "
                                      "the device at this address is of the family it was added as.")
                                           .arg(condition.detail));
-        m_identityBanner->setStyleSheet(QStringLiteral("background: #ffd0d0; color: #600000; padding: 4px"));
+        m_identityBanner->setStyleSheet(Theme::bannerStyle(Theme::Role::ErrorBanner, Theme::Role::ErrorBannerText));
         m_identityBanner->show();
         break;
     case DeviceCondition::State::Identifying:
         m_identityBanner->setText(condition.detail.isEmpty()
                                           ? tr("Checking that the device at this address is of this family.")
                                           : tr("Identity not confirmed: %1").arg(condition.detail));
-        m_identityBanner->setStyleSheet(QStringLiteral("background: #ececec; color: #303030; padding: 4px"));
+        m_identityBanner->setStyleSheet(Theme::bannerStyle(Theme::Role::NeutralBanner, Theme::Role::NeutralBannerText));
         m_identityBanner->show();
         break;
     default:

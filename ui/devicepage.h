@@ -40,6 +40,8 @@ public:
     ControlsPanel *parameters() const { return m_parameters; }
     QTabWidget *tabs() const { return m_tabs; }
     TrendView *trend() const { return m_trend; }
+    // Takes the colours of the theme now in use (banners).
+    void restyle(const DeviceCondition &condition);
 
 private:
     int m_device;

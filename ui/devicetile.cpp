@@ -4,6 +4,7 @@
 #include "models/livevaluesmodel.h"
 #include "models/valuetext.h"
 #include "protocol/registermap.h"
+#include "theme.h"
 
 #include <QCoreApplication>
 #include <QKeyEvent>
@@ -92,22 +93,26 @@ void DeviceTile::refresh()
         m_keyValues->setText(text);
 
     const QString state = conditionText(m_condition);
-    QString colour;
+    // Colour from the theme, and a border of its own per state, so the state reads
+    // without colour too (and the state is written out in words above the values).
+    std::optional<Theme::Role> role;
+    QString border = QStringLiteral("1px solid");
     switch (m_condition.state) {
     case DeviceCondition::State::Online:
         break;
     case DeviceCondition::State::Offline:
     case DeviceCondition::State::LineLost:
-        colour = QStringLiteral("#d9d9d9");
+        role = Theme::Role::TileOffline;
+        border = QStringLiteral("2px dashed");
         break;
     case DeviceCondition::State::Disconnected:
-        colour = QStringLiteral("#ececec");
-        break;
     case DeviceCondition::State::Identifying:
-        colour = QStringLiteral("#ececec");
+        role = Theme::Role::TileIdle;
+        border = QStringLiteral("1px dotted");
         break;
     case DeviceCondition::State::WrongDevice:
-        colour = QStringLiteral("#ffb0b0");
+        role = Theme::Role::TileWrongDevice;
+        border = QStringLiteral("4px double");
         break;
     }
     const int alarms = m_alarms->activeAlarms();
@@ -115,10 +120,20 @@ void DeviceTile::refresh()
     const bool stale = known && m_alarms->alarmsStale();
     const QString alarmText = alarmsText(m_condition, *m_alarms);
     // Green only for a live "no alarm".
-    if (colour.isEmpty())
-        colour = alarms && known ? QStringLiteral("#ffd8d8")
-                : !known || stale ? QStringLiteral("#fff3cf")
-                                  : QStringLiteral("#e3f4e3");
+    if (!role) {
+        if (alarms && known) {
+            role = Theme::Role::TileAlarm;
+            border = QStringLiteral("3px solid");
+        } else if (!known || stale) {
+            role = Theme::Role::TileUncertain;
+            border = QStringLiteral("2px dotted");
+        } else {
+            role = Theme::Role::TileOk;
+        }
+    }
+    QColor edge = Theme::color(Theme::Role::TileText);
+    if (Theme::current() != Theme::Kind::HighContrast && border.startsWith(QLatin1Char('1')))
+        edge.setAlpha(90);
     const QString stateHtml = m_condition.isOnline() ? state.toHtmlEscaped()
                                                      : QStringLiteral("<b>%1</b>").arg(state.toHtmlEscaped());
     m_stateText = state;
@@ -129,7 +144,14 @@ void DeviceTile::refresh()
         m_alarmLabel->setText(alarmText);
     // An unanswering device's values are greyed as well as blanked.
     m_keyValues->setEnabled(m_condition.isOnline());
-    const QString sheet = QStringLiteral("jumo--DeviceTile { background: %1; }").arg(colour);
+    const QString sheet = QStringLiteral("jumo--DeviceTile { background: %1; border: %2 rgba(%3, %4, %5, %6); } "
+                                         "QLabel:!disabled { color: %7; }")
+                                  .arg(Theme::color(*role).name(), border)
+                                  .arg(edge.red())
+                                  .arg(edge.green())
+                                  .arg(edge.blue())
+                                  .arg(edge.alpha())
+                                  .arg(Theme::color(Theme::Role::TileText).name());
     if (styleSheet() != sheet)   // re-styling is costly: only when the colour changes
         setStyleSheet(sheet);
 }

@@ -32,6 +32,8 @@ public:
     static QString conditionText(const DeviceCondition &condition);
     // "2 active alarm(s)", "Alarms unknown", with "(stale)" where they are.
     static QString alarmsText(const DeviceCondition &condition, const AlarmBitsModel &alarms);
+    // Takes the colours of the theme now in use.
+    void restyle() { refresh(); }
 
 signals:
     void activated(jumo::DeviceId device);

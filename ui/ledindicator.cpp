@@ -1,5 +1,7 @@
 #include "ledindicator.h"
 
+#include "theme.h"
+
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPainter>
@@ -78,15 +80,23 @@ void LedIndicator::paintEvent(QPaintEvent *)
         p.drawText(lamp, Qt::AlignCenter, QStringLiteral("?"));
         return;
     }
-    const QColor lit = m_kind == Kind::Alarm ? QColor(220, 30, 30)
-            : m_kind == Kind::Warning        ? QColor(240, 170, 0)
-                                             : QColor(40, 170, 60);
-    QColor fill = on ? lit : palette().color(QPalette::Window).darker(115);
+    const QColor lit = Theme::color(m_kind == Kind::Alarm     ? Theme::Role::LedAlarm
+                                    : m_kind == Kind::Warning ? Theme::Role::LedWarning
+                                                              : Theme::Role::LedStatus);
+    const QColor window = palette().color(QPalette::Window);
+    QColor fill = on ? lit : (Theme::isDark() ? window.lighter(140) : window.darker(115));
     if (m_stale)
-        fill = fill.lighter(150);   // stale: pale, and the tooltip says why
-    p.setPen(QPen(palette().color(QPalette::Mid), 1));
+        fill = Theme::isDark() ? fill.darker(160) : fill.lighter(150);   // stale: pale, and the tooltip says why
+    // Without colour an LED that is on still differs: a heavy outline and a light centre.
+    p.setPen(on ? QPen(palette().color(QPalette::WindowText), 2) : QPen(palette().color(QPalette::Mid), 1));
     p.setBrush(fill);
-    p.drawEllipse(lamp);
+    p.drawEllipse(on ? QRectF(lamp).adjusted(1, 1, -1, -1) : QRectF(lamp));
+    if (on) {
+        p.setPen(Qt::NoPen);
+        p.setBrush(QColor(255, 255, 255, 190));
+        const double r = d / 5.0;
+        p.drawEllipse(QPointF(lamp.center()) + QPointF(-r * 0.6, -r * 0.6), r, r);
+    }
 }
 
 } // namespace jumo

@@ -2,6 +2,7 @@
 
 #include "models/livevaluesmodel.h"
 #include "protocol/valuecodec.h"
+#include "theme.h"
 
 #include <QBrush>
 #include <QFont>
@@ -27,9 +28,9 @@ public:
         const auto validity = Validity(QIdentityProxyModel::data(index, LiveValuesModel::ValidityRole).toInt());
         if (role == Qt::ForegroundRole) {
             if (validity != Validity::Current)
-                return QBrush(Qt::gray);
+                return QBrush(Theme::color(Theme::Role::Hint));
             if (QIdentityProxyModel::data(index, LiveValuesModel::ErrorValueRole).toBool())
-                return QBrush(QColor(170, 0, 0));
+                return QBrush(Theme::color(Theme::Role::ErrorValue));
         }
         if (role == Qt::FontRole && validity == Validity::Stale) {
             QFont font = QIdentityProxyModel::data(index, role).value<QFont>();

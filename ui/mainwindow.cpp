@@ -21,6 +21,7 @@
 #include "overviewpage.h"
 #include "parametersdialog.h"
 #include "scandialog.h"
+#include "theme.h"
 #include "trafficview.h"
 #include "jumoversion.h"
 
@@ -30,6 +31,7 @@
 #include <QGridLayout>
 #include <QLabel>
 #include <QListWidget>
+#include <QActionGroup>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
@@ -74,6 +76,13 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
       m_errorStatus(new ElidedLabel(this)), m_logFailure(new ElidedLabel(this))
 {
     setObjectName(QStringLiteral("mainWindow"));
+    // The theme first: the widgets below take their colours from it.
+    if (const auto kind = Theme::fromName(options.theme.isEmpty()
+                                                  ? settings().value(QStringLiteral("theme")).toString()
+                                                  : options.theme))
+        Theme::apply(*kind);
+    else
+        Theme::apply(Theme::Kind::System);
     // An administrator can fix read-only mode for a control room in the system-wide
     // configuration; the command line cannot lift it.
     const QSettings system(QSettings::SystemScope, QStringLiteral("jumo"), QStringLiteral("jumo-hmi"));
@@ -152,12 +161,14 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
     if (m_readOnly) {
         auto *mode = new QLabel(tr("READ-ONLY"), this);
         mode->setObjectName(QStringLiteral("readOnlyIndicator"));
-        mode->setStyleSheet(QStringLiteral("background: #fff3c0; color: #604000; padding: 0 6px; font-weight: bold"));
+        mode->setStyleSheet(Theme::bannerStyle(Theme::Role::InfoBanner, Theme::Role::InfoBannerText)
+                            + QStringLiteral("; padding: 0 6px; font-weight: bold"));
         statusBar()->addPermanentWidget(mode);
     }
     // A record the logs could not keep is no passing error: it stays until the end.
     m_logFailure->setObjectName(QStringLiteral("logFailureStatus"));
-    m_logFailure->setStyleSheet(QStringLiteral("background: #ffd6d6; color: #600000; padding: 0 6px"));
+    m_logFailure->setStyleSheet(Theme::bannerStyle(Theme::Role::ErrorBanner, Theme::Role::ErrorBannerText)
+                                + QStringLiteral("; padding: 0 6px"));
     m_logFailure->hide();
     statusBar()->addPermanentWidget(m_logFailure);
     const EventLog::Rotation rotation = EventLog::Rotation::fromSettings(settings());
@@ -338,6 +349,35 @@ void MainWindow::buildPageShortcuts(QMenu *view)
     previousTab->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Tab),
                                QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Backtab)});
     view->addAction(tr("Go to the page &list"), QKeySequence(Qt::Key_F6), this, [this] { m_navigation->setFocus(); });
+    view->addSeparator();
+    QMenu *themes = view->addMenu(tr("T&heme"));
+    auto *group = new QActionGroup(themes);
+    for (Theme::Kind kind : Theme::kinds()) {
+        QAction *action = themes->addAction(Theme::title(kind));
+        action->setObjectName(QStringLiteral("theme_") + Theme::name(kind));
+        action->setCheckable(true);
+        action->setChecked(kind == Theme::current());
+        group->addAction(action);
+        connect(action, &QAction::triggered, this, [this, kind] { setTheme(int(kind)); });
+    }
+}
+
+void MainWindow::setTheme(int kind)
+{
+    Theme::apply(Theme::Kind(kind));
+    settings().setValue(QStringLiteral("theme"), Theme::name(Theme::Kind(kind)));
+    if (auto *action = findChild<QAction *>(QStringLiteral("theme_") + Theme::name(Theme::Kind(kind))))
+        action->setChecked(true);
+    if (auto *mode = findChild<QLabel *>(QStringLiteral("readOnlyIndicator")))
+        mode->setStyleSheet(Theme::bannerStyle(Theme::Role::InfoBanner, Theme::Role::InfoBannerText)
+                            + QStringLiteral("; padding: 0 6px; font-weight: bold"));
+    m_logFailure->setStyleSheet(Theme::bannerStyle(Theme::Role::ErrorBanner, Theme::Role::ErrorBannerText)
+                                + QStringLiteral("; padding: 0 6px"));
+    for (const DeviceEntry &d : std::as_const(m_devices)) {
+        d.tile->restyle();
+        if (d.page)
+            d.page->restyle(m_bus.condition(d.id));
+    }
 }
 
 void MainWindow::showNavigationRow(int row)

@@ -46,6 +46,7 @@ public:
         bool identify = true;
         QString settingsFile;   // empty: the user's settings
         QString logFolder;      // empty: EventLog::defaultFolder()
+        QString theme;          // a Theme name for this run; empty: the one last chosen in the View menu
     };
 
     MainWindow(const FamilyRegistry &registry, const Options &options, QWidget *parent = nullptr);
@@ -111,6 +112,8 @@ private:
     void addDeviceInteractively();
     // The device whose page is shown, or -1.
     int currentDeviceIndex() const;
+    // Applies a theme (and keeps it for the next start): palette, tiles, banners.
+    void setTheme(int kind);
     void startDemo();
     void removeCurrentDevice();
     void onStateChanged(LineState state);

@@ -1,0 +1,126 @@
+// The themes: in light, dark and high contrast every text the HMI colours by meaning (tile
+// states, banners, write states, hints, error values) is readable on its background
+// (WCAG contrast 4.5:1, 7:1 for the high-contrast theme), the palette too; a window
+// started with a theme (for that run) switches live from the View menu, which is kept for the
+// next start; tiles follow; the states of a tile differ in their border, not in colour alone.
+#include "devicetile.h"
+#include "mainwindow.h"
+#include "protocol/familyregistry.h"
+#include "theme.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QPalette>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace jumo;
+
+class tst_Theme : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void textIsReadableInEveryTheme_data();
+    void textIsReadableInEveryTheme();
+    void namesRoundTrip();
+    void windowKeepsAndSwitchesItsTheme();
+};
+
+void tst_Theme::textIsReadableInEveryTheme_data()
+{
+    QTest::addColumn<int>("kind");
+    QTest::addColumn<double>("least");
+    QTest::newRow("light") << int(Theme::Kind::Light) << 4.5;
+    QTest::newRow("dark") << int(Theme::Kind::Dark) << 4.5;
+    QTest::newRow("high contrast") << int(Theme::Kind::HighContrast) << 7.0;
+}
+
+void tst_Theme::textIsReadableInEveryTheme()
+{
+    QFETCH(int, kind);
+    QFETCH(double, least);
+    Theme::apply(Theme::Kind(kind));
+    using R = Theme::Role;
+    auto check = [least](const char *what, const QColor &text, const QColor &background) {
+        const double ratio = Theme::contrast(text, background);
+        QVERIFY2(ratio >= least, qPrintable(QStringLiteral("%1: %2 on %3 is %4:1")
+                                                    .arg(QLatin1String(what), text.name(), background.name())
+                                                    .arg(ratio, 0, 'f', 2)));
+    };
+    for (R tile : {R::TileOk, R::TileUncertain, R::TileAlarm, R::TileOffline, R::TileIdle, R::TileWrongDevice})
+        check("tile text", Theme::color(R::TileText), Theme::color(tile));
+    check("info banner", Theme::color(R::InfoBannerText), Theme::color(R::InfoBanner));
+    check("error banner", Theme::color(R::ErrorBannerText), Theme::color(R::ErrorBanner));
+    check("neutral banner", Theme::color(R::NeutralBannerText), Theme::color(R::NeutralBanner));
+    const QPalette palette = QApplication::palette();
+    for (QPalette::ColorRole background : {QPalette::Window, QPalette::Base}) {
+        for (R text : {R::Pending, R::Confirmed, R::Refused, R::Unknown, R::Hint, R::ErrorValue})
+            check("state text", Theme::color(text), palette.color(background));
+    }
+    check("window text", palette.color(QPalette::WindowText), palette.color(QPalette::Window));
+    check("text", palette.color(QPalette::Text), palette.color(QPalette::Base));
+    check("button text", palette.color(QPalette::ButtonText), palette.color(QPalette::Button));
+    check("highlighted text", palette.color(QPalette::HighlightedText), palette.color(QPalette::Highlight));
+    QCOMPARE(Theme::isDark(), Theme::Kind(kind) != Theme::Kind::Light);
+}
+
+void tst_Theme::namesRoundTrip()
+{
+    for (Theme::Kind kind : Theme::kinds())
+        QCOMPARE(Theme::fromName(Theme::name(kind)), std::optional<Theme::Kind>(kind));
+    QVERIFY(!Theme::fromName(QStringLiteral("purple")));
+    QVERIFY(!Theme::fromName(QString()));
+}
+
+void tst_Theme::windowKeepsAndSwitchesItsTheme()
+{
+    const FamilyRegistry registry = FamilyRegistry::load({}, true);
+    QTemporaryDir dir;
+    MainWindow::Options options;
+    options.settingsFile = dir.filePath(QStringLiteral("theme.ini"));
+    options.logFolder = dir.filePath(QStringLiteral("logs"));
+    options.theme = QStringLiteral("dark");
+    auto background = [](const DeviceTile *tile) {
+        const QRegularExpressionMatch m = QRegularExpression(QStringLiteral("background: (#[0-9a-f]{6})")).match(tile->styleSheet());
+        return m.captured(1);
+    };
+    auto border = [](const DeviceTile *tile) {
+        const QRegularExpressionMatch m = QRegularExpression(QStringLiteral("border: ([0-9]+px [a-z]+)")).match(tile->styleSheet());
+        return m.captured(1);
+    };
+    {
+        MainWindow window(registry, options);
+        window.addDevice(registry.family(QStringLiteral("ipc300")), 1);
+        window.show();
+        QCOMPARE(Theme::current(), Theme::Kind::Dark);
+        QVERIFY(QApplication::palette().color(QPalette::Window).lightness() < 128);
+        DeviceTile *tile = window.deviceTile(QStringLiteral("ipc300"), 1);
+        QVERIFY(tile);
+        // Disconnected: the idle colour of the dark theme, a dotted border.
+        QCOMPARE(background(tile), Theme::color(Theme::Role::TileIdle).name());
+        const QString idleBorder = border(tile);
+        QCOMPARE(idleBorder, QStringLiteral("1px dotted"));
+        auto *light = window.findChild<QAction *>(QStringLiteral("theme_light"));
+        QVERIFY(light);
+        light->trigger();
+        QCOMPARE(Theme::current(), Theme::Kind::Light);
+        QVERIFY(QApplication::palette().color(QPalette::Window).lightness() >= 128);
+        QCOMPARE(background(tile), Theme::color(Theme::Role::TileIdle).name());
+        QVERIFY(light->isChecked());
+        // Another state has another border as well as another colour.
+        DeviceCondition lost;
+        lost.state = DeviceCondition::State::LineLost;
+        tile->setCondition(lost);
+        QVERIFY(border(tile) != idleBorder);
+        QVERIFY(background(tile) != Theme::color(Theme::Role::TileIdle).name());
+    }
+    // The choice is kept for the next start.
+    options.theme.clear();
+    MainWindow again(registry, options);
+    QCOMPARE(Theme::current(), Theme::Kind::Light);
+}
+
+QTEST_MAIN(tst_Theme)
+#include "tst_theme.moc"
