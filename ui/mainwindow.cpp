@@ -29,13 +29,17 @@
 #include <QCloseEvent>
 #include <QGridLayout>
 #include <QLabel>
+#include <QKeyEvent>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QStatusBar>
+#include <QTextEdit>
 #include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
@@ -723,6 +727,27 @@ void MainWindow::saveSettings()
     for (const DeviceEntry &d : std::as_const(m_devices))
         devices << QStringLiteral("%1@%2").arg(m_bus.deviceMap(d.id)->family).arg(m_bus.deviceAddress(d.id));
     s.setValue(QStringLiteral("devices"), devices);
+}
+
+bool MainWindow::event(QEvent *event)
+{
+    // The override reaches the window when the focused field does not claim the keys
+    // itself: QLineEdit (also in spin and combo boxes) leaves its DeleteEndOfWord and
+    // DeleteStartOfWord to window shortcuts.
+    if (event->type() == QEvent::ShortcutOverride) {
+        auto *key = static_cast<QKeyEvent *>(event);
+        if (key->matches(QKeySequence::DeleteEndOfWord) || key->matches(QKeySequence::DeleteStartOfWord)) {
+            QWidget *focus = QApplication::focusWidget();
+            const auto *line = qobject_cast<QLineEdit *>(focus);
+            const auto *text = qobject_cast<QTextEdit *>(focus);
+            const auto *plain = qobject_cast<QPlainTextEdit *>(focus);
+            if ((line && !line->isReadOnly()) || (text && !text->isReadOnly()) || (plain && !plain->isReadOnly())) {
+                event->accept();
+                return true;
+            }
+        }
+    }
+    return QMainWindow::event(event);
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

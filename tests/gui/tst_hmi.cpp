@@ -6,7 +6,8 @@
 // refused (nothing shown, nothing written), also when it replaces the right one; a log
 // that cannot keep a record (a full disk) shows in the status bar and the journal; a large
 // journal opens at its newest records and pages back; connect, add, open, write, scan
-// and disconnect with the keyboard alone.
+// and disconnect with the keyboard alone; a text field keeps Ctrl+Delete (delete the
+// next word) rather than removing the device being typed for.
 #include "bitswitches.h"
 #include "connectionbar.h"
 #include "controlrow.h"
@@ -131,6 +132,7 @@ private slots:
     void scanDoesNotListTheAddressEveryDeviceAnswers();
     void everythingFromTheKeyboard();
     void trendOpensWithTheKeyValues();
+    void textFieldsKeepTheirEditingKeys();
 
 private:
     // A window connected to the line with the IPC 300 at address 1 on its page.
@@ -1035,6 +1037,34 @@ void tst_Hmi::trendOpensWithTheKeyValues()
     QCOMPARE(trend->axisTitles().size(), 3);
     trend->select("load_current", true);
     QVERIFY(trend->axisTitles().contains("A"));
+}
+
+void tst_Hmi::textFieldsKeepTheirEditingKeys()
+{
+    // Ctrl+Delete deletes the next word in a text field (Qt's DeleteEndOfWord); there it
+    // must not remove the device whose value is being typed.
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(window.get()));
+    DevicePage *page = window->devicePage("ipc300", 1);
+    page->tabs()->setCurrentWidget(page->controls());
+    ControlRow *row = page->controls()->row("input_setpoint");
+    QVERIFY(row);
+    auto *edit = row->findChild<QLineEdit *>("input_input_setpoint");
+    QVERIFY(edit);
+    edit->setFocus();
+    QTRY_VERIFY(edit->hasFocus());
+    edit->setText("41.5 extra");
+    edit->setCursorPosition(5);
+    QTest::keyClick(edit, Qt::Key_Delete, Qt::ControlModifier);
+    QCOMPARE(window->devicePage("ipc300", 1), page);
+    QVERIFY(page->isVisible());
+    QCOMPARE(edit->text(), QStringLiteral("41.5 "));
+    // Outside a text field the shortcut removes the shown device.
+    page->tabs()->setFocus();
+    QTest::keyClick(page->tabs(), Qt::Key_Delete, Qt::ControlModifier);
+    QTRY_VERIFY(!window->devicePage("ipc300", 1));
 }
 
 QTEST_MAIN(tst_Hmi)
