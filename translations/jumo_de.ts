@@ -1891,7 +1891,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 <context>
     <name>jumo::MainWindow</name>
     <message>
-        <location filename="../ui/mainwindow.cpp" line="+66"/>
+        <location filename="../ui/mainwindow.cpp" line="+70"/>
         <location line="+4"/>
         <source>Time</source>
         <translation>Zeit</translation>
@@ -2439,12 +2439,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>fehlerhaftes JSON bei Byte %1: ein Steuerzeichen</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+10"/>
         <source>the top level must be a JSON object</source>
         <translation>die oberste Ebene muss ein JSON-Objekt sein</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/jsonfieldreader.cpp" line="+52"/>
+        <location filename="../lib/protocol/jsonfieldreader.cpp" line="+53"/>
         <source>unknown key &apos;%1&apos;</source>
         <translation>unbekannter Schlüssel &apos;%1&apos;</translation>
     </message>
@@ -2652,7 +2652,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Adressbereich %1..%2 ist leer</translation>
     </message>
     <message>
-        <location line="-87"/>
+        <location line="-124"/>
+        <source>malformed JSON at byte %1: &apos;%2&apos; given twice in one object</source>
+        <translation>fehlerhaftes JSON bei Byte %1: &apos;%2&apos; zweimal im selben Objekt angegeben</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>&apos;shortName&apos; must be 1 to 24 characters, not &apos;%1&apos;</source>
         <translation>&apos;shortName&apos; muss 1 bis 24 Zeichen lang sein, nicht &apos;%1&apos;</translation>
     </message>
@@ -2925,7 +2930,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>keine Parameterdatei: ein Steuerzeichen bei Byte %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>the parameter file names &apos;%1&apos; twice (again at byte %2): which value is meant is not clear</source>
+        <translation>die Parameterdatei nennt &apos;%1&apos; zweimal (erneut bei Byte %2): welcher Wert gemeint ist, ist nicht klar</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>not a parameter file (no &quot;format&quot;: &quot;jumo-parameters&quot;)</source>
         <translation>keine Parameterdatei (kein &quot;format&quot;: &quot;jumo-parameters&quot;)</translation>
     </message>
