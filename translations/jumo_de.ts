@@ -1993,7 +1993,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Gerät &amp;hinzufügen...</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+27"/>
+        <source>&amp;Commissioning report of the shown device...</source>
+        <translation>Inbetriebnahme&amp;bericht des angezeigten Geräts...</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
@@ -2043,12 +2048,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>V&amp;orige Seite</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>Next &amp;tab of the device page</source>
-        <translation>Nächster &amp;Reiter der Geräteseite</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+8"/>
         <source>Previous t&amp;ab of the device page</source>
         <translation>Vorig&amp;er Reiter der Geräteseite</translation>
     </message>
@@ -2131,7 +2131,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
     <message>
         <location line="+2"/>
         <source>&amp;Scan the line...</source>
-        <translation>Leitung &amp;durchsuchen...</translation>
+        <translation>Leitung durch&amp;suchen...</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2159,12 +2159,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Datenaufzeichnung</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>Commissioning &amp;report of the shown device...</source>
-        <translation>Inbetriebnahme&amp;bericht des angezeigten Geräts...</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+11"/>
         <location line="+8"/>
         <source>Report</source>
         <translation>Bericht</translation>
@@ -2232,7 +2227,12 @@ Commissioning and monitoring of JUMO power and process controllers over Modbus R
 Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Modbus RTU.</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+32"/>
+        <source>Ne&amp;xt tab of the device page</source>
+        <translation>Nächster &amp;Reiter der Geräteseite</translation>
+    </message>
+    <message>
+        <location line="+61"/>
         <source>Demo line failed: %1</source>
         <translation>Demo-Leitung fehlgeschlagen: %1</translation>
     </message>

@@ -267,7 +267,7 @@ void MainWindow::buildMenus()
         DataLoggingDialog dialog(&m_bus, id, dataLogger(id), this);
         dialog.exec();
     });
-    devices->addAction(tr("Commissioning &report of the shown device..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R),
+    devices->addAction(tr("&Commissioning report of the shown device..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R),
                        this, [this] {
         const int index = currentDeviceIndex();
         if (index < 0) {
@@ -329,7 +329,7 @@ void MainWindow::buildPageShortcuts(QMenu *view)
         showNavigationRow((m_navigation->currentRow() + m_navigation->count() - 1) % m_navigation->count());
     });
     // The tabs of a device page, wherever the focus is in the window.
-    view->addAction(tr("Next &tab of the device page"), QKeySequence(Qt::CTRL | Qt::Key_Tab), this, [this] {
+    view->addAction(tr("Ne&xt tab of the device page"), QKeySequence(Qt::CTRL | Qt::Key_Tab), this, [this] {
         if (auto *page = qobject_cast<DevicePage *>(m_pages->currentWidget()))
             page->tabs()->setCurrentIndex((page->tabs()->currentIndex() + 1) % page->tabs()->count());
     });
