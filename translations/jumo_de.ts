@@ -3898,17 +3898,30 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+2"/>
-        <location line="+41"/>
+        <location line="+54"/>
         <source>exception %1, %2</source>
         <translation>Exception %1, %2</translation>
     </message>
     <message>
-        <location line="-24"/>
+        <location line="-37"/>
         <source>the line was lost while the write was under way: its outcome is unknown, check the device</source>
         <translation>die Leitung ging während des Schreibens verloren: Das Ergebnis ist unbekannt, prüfen Sie das Gerät</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
+        <source>an answer that does not fit the command (%1): it may or may not have been carried out; it is not sent again, check the device</source>
+        <translation>eine Antwort, die nicht zum Befehl passt (%1): Er wurde vielleicht ausgeführt, vielleicht nicht; er wird nicht erneut gesendet, prüfen Sie das Gerät</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>no fitting answer after %n attempt(s) (the last: %1): the device may or may not have taken the value, read it back</source>
+        <translation>
+            <numerusform>keine passende Antwort nach %n Versuch (die letzte: %1): Das Gerät hat den Wert vielleicht übernommen, vielleicht nicht, lesen Sie ihn zurück</numerusform>
+            <numerusform>keine passende Antwort nach %n Versuchen (die letzte: %1): Das Gerät hat den Wert vielleicht übernommen, vielleicht nicht, lesen Sie ihn zurück</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>no answer: the command may or may not have been carried out; it is not sent again, check the device</source>
         <translation>keine Antwort: Der Befehl wurde vielleicht ausgeführt, vielleicht nicht; er wird nicht erneut gesendet, prüfen Sie das Gerät</translation>
     </message>
