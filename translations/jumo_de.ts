@@ -1891,7 +1891,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 <context>
     <name>jumo::MainWindow</name>
     <message>
-        <location filename="../ui/mainwindow.cpp" line="+68"/>
+        <location filename="../ui/mainwindow.cpp" line="+72"/>
         <location line="+4"/>
         <source>Time</source>
         <translation>Zeit</translation>
@@ -1993,7 +1993,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Gerät &amp;hinzufügen...</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+27"/>
+        <source>&amp;Commissioning report of the shown device...</source>
+        <translation>Inbetriebnahme&amp;bericht des angezeigten Geräts...</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
@@ -2043,12 +2048,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>V&amp;orige Seite</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>Next &amp;tab of the device page</source>
-        <translation>Nächster &amp;Reiter der Geräteseite</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+8"/>
         <source>Previous t&amp;ab of the device page</source>
         <translation>Vorig&amp;er Reiter der Geräteseite</translation>
     </message>
@@ -2136,7 +2136,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
     <message>
         <location line="+2"/>
         <source>&amp;Scan the line...</source>
-        <translation>Leitung &amp;durchsuchen...</translation>
+        <translation>Leitung durch&amp;suchen...</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2164,12 +2164,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Datenaufzeichnung</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>Commissioning &amp;report of the shown device...</source>
-        <translation>Inbetriebnahme&amp;bericht des angezeigten Geräts...</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+11"/>
         <location line="+8"/>
         <source>Report</source>
         <translation>Bericht</translation>
@@ -2237,7 +2232,12 @@ Commissioning and monitoring of JUMO power and process controllers over Modbus R
 Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Modbus RTU.</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+32"/>
+        <source>Ne&amp;xt tab of the device page</source>
+        <translation>Nächster &amp;Reiter der Geräteseite</translation>
+    </message>
+    <message>
+        <location line="+90"/>
         <source>Demo line failed: %1</source>
         <translation>Demo-Leitung fehlgeschlagen: %1</translation>
     </message>
@@ -2444,12 +2444,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>fehlerhaftes JSON bei Byte %1: ein Steuerzeichen</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+10"/>
         <source>the top level must be a JSON object</source>
         <translation>die oberste Ebene muss ein JSON-Objekt sein</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/jsonfieldreader.cpp" line="+52"/>
+        <location filename="../lib/protocol/jsonfieldreader.cpp" line="+53"/>
         <source>unknown key &apos;%1&apos;</source>
         <translation>unbekannter Schlüssel &apos;%1&apos;</translation>
     </message>
@@ -2657,7 +2657,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Adressbereich %1..%2 ist leer</translation>
     </message>
     <message>
-        <location line="-87"/>
+        <location line="-124"/>
+        <source>malformed JSON at byte %1: &apos;%2&apos; given twice in one object</source>
+        <translation>fehlerhaftes JSON bei Byte %1: &apos;%2&apos; zweimal im selben Objekt angegeben</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>&apos;shortName&apos; must be 1 to 24 characters, not &apos;%1&apos;</source>
         <translation>&apos;shortName&apos; muss 1 bis 24 Zeichen lang sein, nicht &apos;%1&apos;</translation>
     </message>
@@ -2930,7 +2935,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>keine Parameterdatei: ein Steuerzeichen bei Byte %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>the parameter file names &apos;%1&apos; twice (again at byte %2): which value is meant is not clear</source>
+        <translation>die Parameterdatei nennt &apos;%1&apos; zweimal (erneut bei Byte %2): welcher Wert gemeint ist, ist nicht klar</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>not a parameter file (no &quot;format&quot;: &quot;jumo-parameters&quot;)</source>
         <translation>keine Parameterdatei (kein &quot;format&quot;: &quot;jumo-parameters&quot;)</translation>
     </message>
@@ -3916,17 +3926,30 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+2"/>
-        <location line="+41"/>
+        <location line="+54"/>
         <source>exception %1, %2</source>
         <translation>Exception %1, %2</translation>
     </message>
     <message>
-        <location line="-24"/>
+        <location line="-37"/>
         <source>the line was lost while the write was under way: its outcome is unknown, check the device</source>
         <translation>die Leitung ging während des Schreibens verloren: Das Ergebnis ist unbekannt, prüfen Sie das Gerät</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
+        <source>an answer that does not fit the command (%1): it may or may not have been carried out; it is not sent again, check the device</source>
+        <translation>eine Antwort, die nicht zum Befehl passt (%1): Er wurde vielleicht ausgeführt, vielleicht nicht; er wird nicht erneut gesendet, prüfen Sie das Gerät</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>no fitting answer after %n attempt(s) (the last: %1): the device may or may not have taken the value, read it back</source>
+        <translation>
+            <numerusform>keine passende Antwort nach %n Versuch (die letzte: %1): Das Gerät hat den Wert vielleicht übernommen, vielleicht nicht, lesen Sie ihn zurück</numerusform>
+            <numerusform>keine passende Antwort nach %n Versuchen (die letzte: %1): Das Gerät hat den Wert vielleicht übernommen, vielleicht nicht, lesen Sie ihn zurück</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>no answer: the command may or may not have been carried out; it is not sent again, check the device</source>
         <translation>keine Antwort: Der Befehl wurde vielleicht ausgeführt, vielleicht nicht; er wird nicht erneut gesendet, prüfen Sie das Gerät</translation>
     </message>

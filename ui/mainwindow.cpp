@@ -30,14 +30,18 @@
 #include <QCloseEvent>
 #include <QGridLayout>
 #include <QLabel>
+#include <QKeyEvent>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QActionGroup>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QStatusBar>
+#include <QTextEdit>
 #include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
@@ -274,7 +278,7 @@ void MainWindow::buildMenus()
         DataLoggingDialog dialog(&m_bus, id, dataLogger(id), this);
         dialog.exec();
     });
-    devices->addAction(tr("Commissioning &report of the shown device..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R),
+    devices->addAction(tr("&Commissioning report of the shown device..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R),
                        this, [this] {
         const int index = currentDeviceIndex();
         if (index < 0) {
@@ -336,7 +340,7 @@ void MainWindow::buildPageShortcuts(QMenu *view)
         showNavigationRow((m_navigation->currentRow() + m_navigation->count() - 1) % m_navigation->count());
     });
     // The tabs of a device page, wherever the focus is in the window.
-    view->addAction(tr("Next &tab of the device page"), QKeySequence(Qt::CTRL | Qt::Key_Tab), this, [this] {
+    view->addAction(tr("Ne&xt tab of the device page"), QKeySequence(Qt::CTRL | Qt::Key_Tab), this, [this] {
         if (auto *page = qobject_cast<DevicePage *>(m_pages->currentWidget()))
             page->tabs()->setCurrentIndex((page->tabs()->currentIndex() + 1) % page->tabs()->count());
     });
@@ -763,6 +767,27 @@ void MainWindow::saveSettings()
     for (const DeviceEntry &d : std::as_const(m_devices))
         devices << QStringLiteral("%1@%2").arg(m_bus.deviceMap(d.id)->family).arg(m_bus.deviceAddress(d.id));
     s.setValue(QStringLiteral("devices"), devices);
+}
+
+bool MainWindow::event(QEvent *event)
+{
+    // The override reaches the window when the focused field does not claim the keys
+    // itself: QLineEdit (also in spin and combo boxes) leaves its DeleteEndOfWord and
+    // DeleteStartOfWord to window shortcuts.
+    if (event->type() == QEvent::ShortcutOverride) {
+        auto *key = static_cast<QKeyEvent *>(event);
+        if (key->matches(QKeySequence::DeleteEndOfWord) || key->matches(QKeySequence::DeleteStartOfWord)) {
+            QWidget *focus = QApplication::focusWidget();
+            const auto *line = qobject_cast<QLineEdit *>(focus);
+            const auto *text = qobject_cast<QTextEdit *>(focus);
+            const auto *plain = qobject_cast<QPlainTextEdit *>(focus);
+            if ((line && !line->isReadOnly()) || (text && !text->isReadOnly()) || (plain && !plain->isReadOnly())) {
+                event->accept();
+                return true;
+            }
+        }
+    }
+    return QMainWindow::event(event);
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

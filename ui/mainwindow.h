@@ -83,6 +83,9 @@ signals:
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    // A text field being typed in keeps its word-deleting keys (Ctrl+Delete would
+    // otherwise remove the device whose value is being typed).
+    bool event(QEvent *event) override;
 
 private:
     // Models live as long as the device; its page is made the first time it is shown,

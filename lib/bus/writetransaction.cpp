@@ -142,6 +142,19 @@ Transaction::Next WriteTransaction::onResult(const ModbusResult &result, int max
         // already and is never repeated.
         if (!m_entry->isAction() && !m_broadcast && m_attempts <= maxRetries)
             return Next::RetryAfterQuiet;
+        // An answer that does not fit (another echo) is said as such: the device did answer.
+        if (result.status == ModbusResult::Status::BadReply) {
+            finish(WriteOutcome::Result::Unknown,
+                   m_entry->isAction()
+                           ? tr("an answer that does not fit the command (%1): it may or may not have been carried "
+                                "out; it is not sent again, check the device")
+                                     .arg(result.errorText)
+                           : tr("no fitting answer after %n attempt(s) (the last: %1): the device may or may not have "
+                                "taken the value, read it back",
+                                nullptr, m_attempts)
+                                     .arg(result.errorText));
+            return Next::Continue;
+        }
         finish(WriteOutcome::Result::Unknown,
                m_entry->isAction()
                        ? tr("no answer: the command may or may not have been carried out; it is not sent again, "

@@ -73,6 +73,12 @@ std::optional<ParameterSet> ParameterSet::fromJson(const QByteArray &json, QStri
         return fail(tr("not a parameter file: %1 at byte %2").arg(parseError.errorString()).arg(parseError.offset));
     if (const qsizetype at = JsonFieldReader::controlCharacterAt(json); at >= 0)
         return fail(tr("not a parameter file: a control character at byte %1").arg(at));
+    // A hand-edited file that names a value twice would have one of them written silently.
+    QString key;
+    if (const qsizetype at = JsonFieldReader::duplicateKeyAt(json, &key); at >= 0)
+        return fail(tr("the parameter file names '%1' twice (again at byte %2): which value is meant is not clear")
+                            .arg(key)
+                            .arg(at));
     const QJsonObject root = doc.object();
     if (root.value("format") != QJsonValue(QStringLiteral("jumo-parameters")))
         return fail(tr("not a parameter file (no \"format\": \"jumo-parameters\")"));

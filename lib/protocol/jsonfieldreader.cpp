@@ -3,6 +3,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QRegularExpression>
+#include <QSet>
 
 #include <cmath>
 
@@ -197,6 +198,50 @@ qsizetype JsonFieldReader::controlCharacterAt(const QByteArray &json)
         const auto c = uchar(json[i]);
         if (c < 0x20 && c != '\t' && c != '\n' && c != '\r')
             return i;
+    }
+    return -1;
+}
+
+qsizetype JsonFieldReader::duplicateKeyAt(const QByteArray &json, QString *key)
+{
+    // The keys of each open object; an array holds none (std::nullopt).
+    QList<std::optional<QSet<QString>>> open;
+    for (qsizetype i = 0; i < json.size(); ++i) {
+        const char c = json[i];
+        if (c == '{') {
+            open.append(QSet<QString>());
+        } else if (c == '[') {
+            open.append(std::nullopt);
+        } else if ((c == '}' || c == ']') && !open.isEmpty()) {
+            open.removeLast();
+        } else if (c == '"') {
+            const qsizetype begin = i;
+            bool escaped = false;
+            for (++i; i < json.size(); ++i) {
+                if (escaped)
+                    escaped = false;
+                else if (json[i] == '\\')
+                    escaped = true;
+                else if (json[i] == '"')
+                    break;
+            }
+            qsizetype next = i + 1;
+            while (next < json.size() && (json[next] == ' ' || json[next] == '\t' || json[next] == '\n' || json[next] == '\r'))
+                ++next;
+            if (next >= json.size() || json[next] != ':' || open.isEmpty() || !open.last())
+                continue;
+            // "\u0061" and "a" are one key: let Qt unescape it.
+            const QByteArray quoted = json.mid(begin, i + 1 - begin);
+            const QString name = quoted.contains('\\')
+                    ? QJsonDocument::fromJson("[" + quoted + "]").array().at(0).toString()
+                    : QString::fromUtf8(quoted.mid(1, quoted.size() - 2));
+            if (open.last()->contains(name)) {
+                if (key)
+                    *key = name;
+                return begin;
+            }
+            open.last()->insert(name);
+        }
     }
     return -1;
 }

@@ -48,6 +48,9 @@ public:
     // Where the text has a raw control character (JSON allows only tab, CR and LF
     // between tokens, none in strings; Qt's parser lets a NUL through), or -1.
     static qsizetype controlCharacterAt(const QByteArray &json);
+    // Where an object of the text names a key a second time, or -1; key: that key.
+    // Qt's parser keeps one of the two values silently. For text Qt has parsed.
+    static qsizetype duplicateKeyAt(const QByteArray &json, QString *key = nullptr);
 
 private:
     QString m_source;

@@ -39,6 +39,12 @@ public:
             fail(QString(), tr("malformed JSON at byte %1: a control character").arg(at));
             return finish(std::nullopt);
         }
+        QString key;
+        if (const qsizetype at = duplicateKeyAt(json, &key); at >= 0) {
+            // Qt keeps one of the two values silently.
+            fail(QString(), tr("malformed JSON at byte %1: '%2' given twice in one object").arg(at).arg(key));
+            return finish(std::nullopt);
+        }
         if (!doc.isObject()) {
             fail(QString(), tr("the top level must be a JSON object"));
             return finish(std::nullopt);

@@ -6,7 +6,9 @@
 // refused (nothing shown, nothing written), also when it replaces the right one; a log
 // that cannot keep a record (a full disk) shows in the status bar and the journal; a large
 // journal opens at its newest records and pages back; connect, add, open, write, scan
-// and disconnect with the keyboard alone.
+// and disconnect with the keyboard alone; a text field keeps Ctrl+Delete (delete the
+// next word) rather than removing the device being typed for; no letter is underlined
+// twice in a menu, in English or German.
 #include "bitswitches.h"
 #include "connectionbar.h"
 #include "controlrow.h"
@@ -29,6 +31,7 @@
 #include "scandialog.h"
 #include "testpeers.h"
 #include "trendview.h"
+#include "protocol/translations.h"
 
 #include <QApplication>
 #include <QComboBox>
@@ -40,6 +43,8 @@
 #include <QRegularExpression>
 #include <QScopeGuard>
 #include <QListWidget>
+#include <QMenu>
+#include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -131,6 +136,9 @@ private slots:
     void scanDoesNotListTheAddressEveryDeviceAnswers();
     void everythingFromTheKeyboard();
     void trendOpensWithTheKeyValues();
+    void textFieldsKeepTheirEditingKeys();
+    void mnemonicsAreUnique_data();
+    void mnemonicsAreUnique();
 
 private:
     // A window connected to the line with the IPC 300 at address 1 on its page.
@@ -1035,6 +1043,92 @@ void tst_Hmi::trendOpensWithTheKeyValues()
     QCOMPARE(trend->axisTitles().size(), 3);
     trend->select("load_current", true);
     QVERIFY(trend->axisTitles().contains("A"));
+}
+
+void tst_Hmi::textFieldsKeepTheirEditingKeys()
+{
+    // Ctrl+Delete deletes the next word in a text field (Qt's DeleteEndOfWord); there it
+    // must not remove the device whose value is being typed.
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(window.get()));
+    DevicePage *page = window->devicePage("ipc300", 1);
+    page->tabs()->setCurrentWidget(page->controls());
+    ControlRow *row = page->controls()->row("input_setpoint");
+    QVERIFY(row);
+    auto *edit = row->findChild<QLineEdit *>("input_input_setpoint");
+    QVERIFY(edit);
+    edit->setFocus();
+    QTRY_VERIFY(edit->hasFocus());
+    edit->setText("41.5 extra");
+    edit->setCursorPosition(5);
+    QTest::keyClick(edit, Qt::Key_Delete, Qt::ControlModifier);
+    QCOMPARE(window->devicePage("ipc300", 1), page);
+    QVERIFY(page->isVisible());
+    QCOMPARE(edit->text(), QStringLiteral("41.5 "));
+    // Outside a text field the shortcut removes the shown device.
+    page->tabs()->setFocus();
+    QTest::keyClick(page->tabs(), Qt::Key_Delete, Qt::ControlModifier);
+    QTRY_VERIFY(!window->devicePage("ipc300", 1));
+}
+
+void tst_Hmi::mnemonicsAreUnique_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::newRow("English") << "en";
+    QTest::newRow("German") << "de";
+}
+
+void tst_Hmi::mnemonicsAreUnique()
+{
+    // A letter underlined twice in a menu (or twice among the window's Alt keys) only
+    // moves between the two: neither is chosen with it.
+    QFETCH(QString, language);
+    const QLocale locale = language == QLatin1String("de") ? QLocale(QLocale::German, QLocale::Germany)
+                                                           : QLocale(QLocale::English, QLocale::UnitedStates);
+    QCOMPARE(useLanguage(*qApp, locale), language == QLatin1String("de"));
+    const auto english = qScopeGuard([] { useLanguage(*qApp, QLocale(QLocale::English, QLocale::UnitedStates)); });
+    MainWindow::Options options;
+    options.settingsFile = m_dir.filePath(QStringLiteral("mnemonics-%1.ini").arg(language));
+    options.logFolder = m_dir.filePath(QStringLiteral("logs-mnemonics"));
+    MainWindow window(families(), options);
+
+    auto letter = [](const QString &text) { return QKeySequence::mnemonic(text).toString(); };
+    QStringList clashes;
+    auto check = [&](const QString &where, const QList<QPair<QString, QString>> &texts) {
+        QHash<QString, QString> taken;
+        for (const auto &[key, text] : texts) {
+            if (key.isEmpty())
+                continue;
+            if (taken.contains(key))
+                clashes << QStringLiteral("%1: %2 in '%3' and '%4'").arg(where, key, taken.value(key), text);
+            taken.insert(key, text);
+        }
+    };
+    // The menu bar's titles and the connection bar's labels share the window's Alt keys.
+    QList<QPair<QString, QString>> windowKeys;
+    for (QAction *a : window.menuBar()->actions())
+        windowKeys << qMakePair(letter(a->text()), a->text());
+    for (QLabel *label : window.connectionBar()->findChildren<QLabel *>()) {
+        if (label->buddy())
+            windowKeys << qMakePair(letter(label->text()), label->text());
+    }
+    check(QStringLiteral("window"), windowKeys);
+    QList<QMenu *> menus = window.menuBar()->findChildren<QMenu *>();
+    for (QMenu *menu : window.findChildren<QMenu *>()) {
+        if (!menus.contains(menu))
+            menus << menu;
+    }
+    for (QMenu *menu : std::as_const(menus)) {
+        QList<QPair<QString, QString>> keys;
+        for (QAction *a : menu->actions()) {
+            if (!a->isSeparator() && a->isVisible())
+                keys << qMakePair(letter(a->text()), a->text());
+        }
+        check(menu->title(), keys);
+    }
+    QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(QLatin1Char('\n'))));
 }
 
 QTEST_MAIN(tst_Hmi)

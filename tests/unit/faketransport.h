@@ -31,6 +31,9 @@ public:
 
     // Requests for which this returns true get no answer (a lost reply).
     std::function<bool(const ModbusRequest &)> drop;
+    // Requests for which this returns true are executed and answered with a reply that
+    // does not fit them (another echo): what RtuTransport calls BadReply.
+    std::function<bool(const ModbusRequest &)> misfit;
     QList<Sent> sent;
 
     bool open(QString *) override
@@ -122,6 +125,11 @@ private:
             return result;   // executed, but the answer is lost on the way back
         if (reply.isEmpty())
             return result;
+        if (misfit && misfit(request)) {
+            result.status = ModbusResult::Status::BadReply;
+            result.errorText = QStringLiteral("write reply names 1 word(s) at 7 where 1 at 111 were written");
+            return result;
+        }
         if (quint8(reply[0]) & 0x80) {
             result.status = ModbusResult::Status::Exception;
             result.exceptionCode = quint8(reply[1]);

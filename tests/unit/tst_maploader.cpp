@@ -93,6 +93,7 @@ private slots:
     void refusesBadMap_data();
     void refusesBadMap();
     void refusesMalformedJson();
+    void refusesAKeyGivenTwice();
     void precisionFromTheMapOrTheUnit();
     void builtinMapsLoad();
     void userFolderReplacesBuiltinAndReportsBrokenFiles();
@@ -357,6 +358,21 @@ void tst_MapLoader::refusesMalformedJson()
     QVERIFY(!r.ok());
     QCOMPARE(r.errors.size(), 1);
     QVERIFY2(r.errors.first().startsWith("broken.json: malformed JSON at byte"), qPrintable(r.errors.first()));
+}
+
+void tst_MapLoader::refusesAKeyGivenTwice()
+{
+    // Qt's parser keeps one of the two values silently: an address given twice in an
+    // entry would put it at either.
+    QByteArray json = QJsonDocument(validMap()).toJson(QJsonDocument::Compact);
+    const qsizetype at = json.indexOf("\"address\":");
+    QVERIFY(at > 0);
+    json.insert(at, "\"address\": \"0x0999\", ");
+    const MapLoadResult r = MapLoader::loadData(json, "twice.json");
+    QVERIFY(!r.ok());
+    QCOMPARE(r.errors.size(), 1);
+    QVERIFY2(r.errors.first().startsWith("twice.json: malformed JSON at byte"), qPrintable(r.errors.first()));
+    QVERIFY2(r.errors.first().contains("'address' given twice"), qPrintable(r.errors.first()));
 }
 
 void tst_MapLoader::builtinMapsLoad()

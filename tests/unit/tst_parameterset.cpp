@@ -25,6 +25,7 @@ private slots:
     void jsonRoundTrip();
     void refusesBadFiles_data();
     void refusesBadFiles();
+    void sameKeyInOtherObjectsIsNoDuplicate();
     void incompatibility();
     void differencesCompareStoredWords();
     void zeroAndNegativeZeroAreEqual();
@@ -89,6 +90,17 @@ void tst_ParameterSet::refusesBadFiles_data()
     QTest::newRow("identity text as a number") << head + "\"identity\": {\"device_name\": 5}}"
                                                << "'device_name' must be a string, not 5";
     QTest::newRow("misspelt key") << head + "\"softwareVersoin\": \"1\"}" << "unknown key 'softwareVersoin'";
+    // Qt's parser keeps one of two values of a key silently: a hand-edited file with a value
+    // given twice would have one of them written.
+    const QByteArray top("{\"format\": \"jumo-parameters\", \"version\": 1, \"family\": \"ipc300\", ");
+    QTest::newRow("a value given twice")
+            << top + "\"values\": {\"input_setpoint\": \"42\", \"input_setpoint\": \"43\"}}" << "'input_setpoint' twice";
+    QTest::newRow("a value given twice, once escaped")
+            << top + "\"values\": {\"input_setpoint\": \"42\", \"input\\u005fsetpoint\": \"43\"}}"
+            << "'input_setpoint' twice";
+    QTest::newRow("values given twice")
+            << top + "\"values\": {\"input_setpoint\": \"42\"}, \"values\": {\"base_load\": \"5\"}}" << "'values' twice";
+    QTest::newRow("family given twice") << top + "\"family\": \"tya200\", \"values\": {}}" << "'family' twice";
 }
 
 void tst_ParameterSet::refusesBadFiles()
@@ -98,6 +110,19 @@ void tst_ParameterSet::refusesBadFiles()
     QString error;
     QVERIFY(!ParameterSet::fromJson(json, &error));
     QVERIFY2(error.contains(problem), qPrintable(error));
+}
+
+void tst_ParameterSet::sameKeyInOtherObjectsIsNoDuplicate()
+{
+    // One key in different objects (and text that looks like a key) is fine.
+    const QByteArray json("{\"format\": \"jumo-parameters\", \"version\": 1, \"family\": \"ipc300\", "
+                          "\"identity\": {\"software_version\": \"123.01.01\", \"device_name\": \"\\\"x\\\": [{\\\"} \"}, "
+                          "\"values\": {\"input_setpoint\": \"42\", \"base_load\": \"input_setpoint\"}}");
+    QString error;
+    const std::optional<ParameterSet> set = ParameterSet::fromJson(json, &error);
+    QVERIFY2(set, qPrintable(error));
+    QCOMPARE(set->values.value("input_setpoint"), QStringLiteral("42"));
+    QCOMPARE(set->identity.value("device_name"), QStringLiteral("\"x\": [{\"} "));
 }
 
 void tst_ParameterSet::incompatibility()

@@ -45,6 +45,7 @@ private slots:
     void keepaliveAndPollsHoldDuringScanAndRestore();
     void actionIsSentOnceAndEndsUnknown();
     void valueIsRepeatedAfterALostAnswer();
+    void answerThatDoesNotFitIsNoConfirmation();
     void quietTimeAfterATimeout();
     void operatorWriteGoesNext();
     void jobsAndPollsTakeTurns();
@@ -161,6 +162,37 @@ void tst_Scheduler::valueIsRepeatedAfterALostAnswer()
     QVERIFY(line.runUntil([&] { return finished.count() == 2; }, 60000));
     QCOMPARE(finished.at(1).at(1).value<WriteOutcome>().result, WriteOutcome::Result::Unknown);
     QCOMPARE(line.transport->count(4, 0x10, 0x0047), 2 + 1 + line.bus->settings().retries);
+}
+
+void tst_Scheduler::answerThatDoesNotFitIsNoConfirmation()
+{
+    // An echo of something else (RtuTransport's BadReply) came back: the device may have
+    // carried the write out. An action goes out once; a value is repeated like after a
+    // lost answer; either ends unknown, and the message says what came back, not that
+    // nothing did.
+    Line line({{"dtron300", 4}});
+    QVERIFY(line.bus->open());
+    line.bus->setPolling(false);
+    const DeviceId id = line.bus->addDevice(families().family("dtron300"), 4);
+    line.transport->misfit = [](const ModbusRequest &r) { return r.isWrite(); };
+    QSignalSpy finished(line.bus.get(), &Bus::writeFinished);
+    line.bus->write(id, "program_controller_functions", "segment_change");
+    QVERIFY(line.runUntil([&] { return finished.count() == 1; }, 60000));
+    line.run(5000);
+    QCOMPARE(line.transport->count(4, 0x06, 0x006F), 1);
+    auto outcome = finished.at(0).at(1).value<WriteOutcome>();
+    QCOMPARE(outcome.result, WriteOutcome::Result::Unknown);
+    QVERIFY2(outcome.message.contains("not sent again"), qPrintable(outcome.message));
+    QVERIFY2(!outcome.message.startsWith("no answer"), qPrintable(outcome.message));
+    QVERIFY2(outcome.message.contains("write reply names 1 word(s) at 7"), qPrintable(outcome.message));
+
+    line.bus->write(id, "setpoint", "43");
+    QVERIFY(line.runUntil([&] { return finished.count() == 2; }, 60000));
+    outcome = finished.at(1).at(1).value<WriteOutcome>();
+    QCOMPARE(outcome.result, WriteOutcome::Result::Unknown);
+    QCOMPARE(line.transport->count(4, 0x10, 0x0047), 1 + line.bus->settings().retries);
+    QVERIFY2(!outcome.message.startsWith("no answer"), qPrintable(outcome.message));
+    QVERIFY2(outcome.message.contains("write reply names 1 word(s) at 7"), qPrintable(outcome.message));
 }
 
 void tst_Scheduler::quietTimeAfterATimeout()
