@@ -3148,8 +3148,16 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
             <numerusform>%n Parameter weichen von der Datei ab.</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location line="+29"/>
+        <source>Nothing to write: the %n parameter(s) that differ are missing from the file and are left as they are.</source>
+        <translation>
+            <numerusform>Nichts zu schreiben: Der %n abweichende Parameter fehlt in der Datei und bleibt unverändert.</numerusform>
+            <numerusform>Nichts zu schreiben: Die %n abweichenden Parameter fehlen in der Datei und bleiben unverändert.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+27"/>
+        <location line="+3"/>
         <source>The device already matches the file: nothing to write.</source>
         <translation>Das Gerät stimmt bereits mit der Datei überein: nichts zu schreiben.</translation>
     </message>

@@ -201,11 +201,16 @@ void ParametersDialog::restore(const QString &path, const std::function<bool(int
                     setStatus(tr("Refused: %1").arg(refused));
                     return;
                 }
-                const QList<ParameterDifference> d = ParameterSet::toRestore(device.differences(*file, map));
+                const QList<ParameterDifference> shown = device.differences(*file, map);
+                const QList<ParameterDifference> d = ParameterSet::toRestore(shown);
+                const int missing = int(shown.size() - d.size());
                 showDifferences(d);
                 if (d.isEmpty()) {
                     setBusy(false);
-                    setStatus(tr("The device already matches the file: nothing to write."));
+                    setStatus(missing > 0 ? tr("Nothing to write: the %n parameter(s) that differ are missing from the "
+                                               "file and are left as they are.",
+                                               nullptr, missing)
+                                          : tr("The device already matches the file: nothing to write."));
                     return;
                 }
                 // Only what differs is written: EEPROM is not worn by unchanged values.

@@ -38,6 +38,7 @@
 #include <QTabWidget>
 #include <QCheckBox>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QRegularExpression>
@@ -391,6 +392,23 @@ void tst_Hmi::parametersBackupCompareRestore()
     QCOMPARE(ipc->number("max_alarm_limit"), limit);
     dialog.compare(file);
     QTRY_VERIFY_WITH_TIMEOUT(dialog.status().contains("matches the file"), 20000);
+
+    // A file that holds none of the values: nothing is written, and the dialog says why.
+    const QString empty = m_dir.filePath("ipc-no-values.json");
+    {
+        QFile f(empty);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"({"format":"jumo-parameters","version":1,"family":"ipc300","address":1,"values":{}})");
+    }
+    const int writesBefore = m_sim.writeFrames();
+    asked = 0;
+    dialog.restore(empty, [&asked](int count) {
+        asked = count;
+        return true;
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(dialog.status().contains("missing from the file"), 20000);
+    QCOMPARE(asked, 0);
+    QCOMPARE(m_sim.writeFrames(), writesBefore);
 }
 
 void tst_Hmi::bitSwitchesKeepTheOtherBits()
