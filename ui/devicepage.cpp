@@ -82,6 +82,7 @@ void DevicePage::setReadOnly(bool readOnly)
 void DevicePage::restyle(const DeviceCondition &condition)
 {
     m_readOnlyBanner->setStyleSheet(Theme::bannerStyle(Theme::Role::InfoBanner, Theme::Role::InfoBannerText));
+    m_trend->restyle();
     setCondition(condition);
 }
 

@@ -2,6 +2,7 @@
 
 #include "models/livevaluesmodel.h"
 #include "protocol/filesaver.h"
+#include "theme.h"
 
 #include <QChart>
 #include <QChartView>
@@ -68,6 +69,9 @@ TrendView::TrendView(LiveValuesModel *values, const QStringList &keyEntries, QWi
             QMessageBox::warning(this, tr("Export trend"), error);
     });
 
+    // The chart draws its own background: dark in a dark theme, before any series takes
+    // its colour from it.
+    m_chart->setTheme(Theme::isDark() ? QChart::ChartThemeDark : QChart::ChartThemeLight);
     m_timeAxis->setFormat(QStringLiteral("HH:mm:ss"));
     m_timeAxis->setTitleText(tr("Time"));
     m_chart->addAxis(m_timeAxis, Qt::AlignBottom);
@@ -100,6 +104,28 @@ TrendView::TrendView(LiveValuesModel *values, const QStringList &keyEntries, QWi
     for (const QString &id : keyEntries)
         select(id, true);
     rescale();
+}
+
+void TrendView::restyle()
+{
+    // A new chart theme recolours every series and axis: the traces keep one colour over
+    // their segments and each axis takes its first trace's colour again.
+    m_chart->setTheme(Theme::isDark() ? QChart::ChartThemeDark : QChart::ChartThemeLight);
+    for (const Trace &trace : std::as_const(m_traces)) {
+        for (QLineSeries *segment : trace.segments)
+            segment->setPen(trace.segments.first()->pen());
+    }
+    for (const auto &[unit, axis] : std::as_const(m_valueAxes)) {
+        for (auto it = m_traces.cbegin(); it != m_traces.cend(); ++it) {
+            if (unitOf(it.key()) == unit && !it.value().segments.isEmpty()) {
+                const QColor color = it.value().segments.first()->color();
+                axis->setLinePenColor(color);
+                axis->setLabelsColor(color);
+                axis->setTitleBrush(color);
+                break;
+            }
+        }
+    }
 }
 
 QString TrendView::unitOf(int row) const

@@ -39,6 +39,8 @@ public:
     QStringList selectedEntries() const;
     // The value axes' titles (one axis per unit in use), in the order they were added.
     QStringList axisTitles() const;
+    // Takes the chart colours of the theme now in use.
+    void restyle();
 
 private:
     void onDataChanged(int first, int last);

@@ -3,10 +3,15 @@
 // (WCAG contrast 4.5:1, 7:1 for the high-contrast theme), the palette too; a window
 // started with a theme (for that run) switches live from the View menu, which is kept for the
 // next start; tiles follow; the states of a tile differ in their border, not in colour alone.
+#include "devicepage.h"
 #include "devicetile.h"
 #include "mainwindow.h"
 #include "protocol/familyregistry.h"
 #include "theme.h"
+#include "trendview.h"
+
+#include <QChart>
+#include <QChartView>
 
 #include <QAction>
 #include <QApplication>
@@ -102,9 +107,19 @@ void tst_Theme::windowKeepsAndSwitchesItsTheme()
         QCOMPARE(background(tile), Theme::color(Theme::Role::TileIdle).name());
         const QString idleBorder = border(tile);
         QCOMPARE(idleBorder, QStringLiteral("1px dotted"));
+        // The trend's chart draws its own background: dark too.
+        window.showDevice(QStringLiteral("ipc300"), 1);
+        DevicePage *page = window.devicePage(QStringLiteral("ipc300"), 1);
+        QVERIFY(page);
+        auto *chartView = page->trend()->findChild<QChartView *>();
+        QVERIFY(chartView);
+        QCOMPARE(chartView->chart()->theme(), QChart::ChartThemeDark);
         auto *light = window.findChild<QAction *>(QStringLiteral("theme_light"));
         QVERIFY(light);
         light->trigger();
+        QCOMPARE(chartView->chart()->theme(), QChart::ChartThemeLight);
+        window.showOverview();   // a hidden tile takes its colours when shown
+        QTRY_VERIFY(tile->isVisible());
         QCOMPARE(Theme::current(), Theme::Kind::Light);
         QVERIFY(QApplication::palette().color(QPalette::Window).lightness() >= 128);
         QCOMPARE(background(tile), Theme::color(Theme::Role::TileIdle).name());
