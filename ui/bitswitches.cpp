@@ -43,7 +43,7 @@ BitSwitches::BitSwitches(const Bus *bus, DeviceId device, const RegisterMap &map
         auto *hint = new QLabel(tr("The device does not report these bits: a write sets every bit as ticked here."),
                                 this);
         hint->setWordWrap(true);
-        hint->setStyleSheet(QStringLiteral("color: %1").arg(Theme::color(Theme::Role::Hint).name()));
+        Theme::colourText(hint, Theme::Role::Hint);
         grid->addWidget(hint, (i + 2) / 3, 0, 1, 3);
         return;
     }

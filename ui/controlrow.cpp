@@ -64,7 +64,7 @@ ControlRow::ControlRow(Bus *bus, int device, const RegisterMap &map, const Regis
     if (!hints.isEmpty()) {
         auto *hint = new QLabel(hints.join(QLatin1Char('\n')), this);
         hint->setWordWrap(true);
-        hint->setStyleSheet(QStringLiteral("color: %1").arg(Theme::color(Theme::Role::Hint).name()));
+        Theme::colourText(hint, Theme::Role::Hint);
         layout->addWidget(hint, 1, 0, 1, 3);
     }
 
@@ -153,20 +153,20 @@ void ControlRow::showWriteState(int state, const QString &message)
 {
     switch (WriteCommand::State(state)) {
     case WriteCommand::State::Pending:
-        m_state->setStyleSheet(QStringLiteral("color: %1").arg(Theme::color(Theme::Role::Pending).name()));
+        Theme::colourText(m_state, Theme::Role::Pending);
         m_state->setText(tr("Pending: %1").arg(message));
         break;
     case WriteCommand::State::Confirmed:
-        m_state->setStyleSheet(QStringLiteral("color: %1").arg(Theme::color(Theme::Role::Confirmed).name()));
+        Theme::colourText(m_state, Theme::Role::Confirmed);
         m_state->setText(tr("Confirmed: %1").arg(message));
         break;
     case WriteCommand::State::Refused:
-        m_state->setStyleSheet(QStringLiteral("color: %1").arg(Theme::color(Theme::Role::Refused).name()));
+        Theme::colourText(m_state, Theme::Role::Refused);
         m_state->setText(tr("Refused: %1").arg(message));
         break;
     case WriteCommand::State::Unknown:
         // Neither done nor refused: only the device can tell, and nothing is resent.
-        m_state->setStyleSheet(QStringLiteral("color: %1; font-weight: bold").arg(Theme::color(Theme::Role::Unknown).name()));
+        Theme::colourText(m_state, Theme::Role::Unknown, QStringLiteral("font-weight: bold"));
         m_state->setText(tr("Unknown, check the device: %1").arg(message));
         break;
     case WriteCommand::State::Idle:
@@ -203,8 +203,10 @@ void ControlRow::refreshCurrent()
     if (!current)
         text += QStringLiteral(" (%1)").arg(ValueText::status(state, m_map, m_bus->clockMs()));
     m_current->setText(text.trimmed());
-    m_current->setStyleSheet(current ? QString()
-                                      : QStringLiteral("color: %1; font-style: italic").arg(Theme::color(Theme::Role::Hint).name()));
+    if (current)
+        Theme::plain(m_current);
+    else
+        Theme::colourText(m_current, Theme::Role::Hint, QStringLiteral("font-style: italic"));
 }
 
 void ControlRow::setReadOnly(bool readOnly)
@@ -271,7 +273,7 @@ void ControlRow::writeInput()
 
 void ControlRow::refuse(const QString &reason)
 {
-    m_state->setStyleSheet(QStringLiteral("color: %1").arg(Theme::color(Theme::Role::Refused).name()));
+    Theme::colourText(m_state, Theme::Role::Refused);
     m_state->setText(tr("Not written: %1").arg(reason));
     m_state->show();
 }

@@ -1,6 +1,7 @@
 #include "devicestateicon.h"
 
 #include "bus/bus.h"
+#include "theme.h"
 
 #include <QPainter>
 #include <QPixmap>
@@ -42,30 +43,31 @@ QIcon DeviceStateIcon::icon(Kind kind)
         p.setFont(mark);
         switch (kind) {
         case Kind::Online:
-            p.setPen(QPen(QColor(20, 110, 40), unit));
-            p.setBrush(QColor(40, 170, 60));
+            p.setPen(QPen(Theme::color(Theme::Role::LedStatus).darker(160), unit));
+            p.setBrush(Theme::color(Theme::Role::LedStatus));
             p.drawEllipse(dot);
             break;
         case Kind::Alarm:
-            p.setPen(QPen(QColor(140, 0, 0), unit));
-            p.setBrush(QColor(220, 30, 30));
+            p.setPen(QPen(Theme::color(Theme::Role::LedAlarm).darker(160), unit));
+            p.setBrush(Theme::color(Theme::Role::LedAlarm));
             p.drawEllipse(dot);
             p.setPen(Qt::white);
             p.drawText(dot, Qt::AlignCenter, QStringLiteral("!"));
             break;
         case Kind::Offline:
-            p.setPen(QPen(QColor(90, 90, 90), unit));
-            p.setBrush(QColor(170, 170, 170));
+            // Grey as the theme's secondary text, so it stands out on a dark list too.
+            p.setPen(QPen(Theme::color(Theme::Role::Hint).darker(140), unit));
+            p.setBrush(Theme::color(Theme::Role::Hint));
             p.drawEllipse(dot);
             p.setPen(QPen(Qt::white, 1.6 * unit));
             p.drawLine(QPointF(5.5 * unit, 5.5 * unit), QPointF(10.5 * unit, 10.5 * unit));
             p.drawLine(QPointF(10.5 * unit, 5.5 * unit), QPointF(5.5 * unit, 10.5 * unit));
             break;
         case Kind::Unknown:
-            p.setPen(QPen(QColor(120, 120, 120), unit, Qt::DashLine));
+            p.setPen(QPen(Theme::color(Theme::Role::Hint), unit, Qt::DashLine));
             p.setBrush(Qt::NoBrush);
             p.drawEllipse(dot);
-            p.setPen(QColor(100, 100, 100));
+            p.setPen(Theme::color(Theme::Role::Hint));
             p.drawText(dot, Qt::AlignCenter, QStringLiteral("?"));
             break;
         }

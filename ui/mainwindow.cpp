@@ -382,6 +382,13 @@ void MainWindow::setTheme(int kind)
         if (d.page)
             d.page->restyle(m_bus.condition(d.id));
     }
+    // Texts coloured by meaning (write states, hints) and the state icons of the list.
+    Theme::restyleWidgets();
+    for (int i = 0; i < m_devices.size(); ++i) {
+        if (QListWidgetItem *item = m_navigation->item(firstDeviceRow + i))
+            item->setData(Qt::UserRole, 0);   // drawn again in the theme's colours
+        updateNavigationItem(m_devices[i].id);
+    }
 }
 
 void MainWindow::showNavigationRow(int row)

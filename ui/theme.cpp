@@ -4,6 +4,8 @@
 #include <QPalette>
 #include <QStyle>
 #include <QStyleFactory>
+#include <QVariant>
+#include <QWidget>
 
 #include <cmath>
 
@@ -90,6 +92,19 @@ void Theme::apply(Kind kind)
         g_systemKnown = true;
     }
     g_kind = kind;
+    // Fusion draws field frames, check boxes and scroll-bar handles in a shade of the
+    // window colour: black on black in high contrast. There they get white edges.
+    qApp->setStyleSheet(kind == Kind::HighContrast
+                                ? QStringLiteral(
+                                          "QLineEdit, QAbstractSpinBox, QComboBox { border: 1px solid white; padding: 1px 3px; }"
+                                          "QCheckBox::indicator, QAbstractItemView::indicator, QRadioButton::indicator"
+                                          " { border: 1px solid white; background: black; width: 10px; height: 10px; }"
+                                          "QCheckBox::indicator:checked, QAbstractItemView::indicator:checked"
+                                          " { background: yellow; }"
+                                          "QRadioButton::indicator { border-radius: 6px; }"
+                                          "QRadioButton::indicator:checked { background: yellow; }"
+                                          "QScrollBar::handle { background: white; }")
+                                : QString());
     if (kind == Kind::System) {
         if (QStyle *style = QStyleFactory::create(g_systemStyle))
             QApplication::setStyle(style);
@@ -197,6 +212,29 @@ QColor Theme::color(Role role)
 QString Theme::bannerStyle(Role background, Role text)
 {
     return QStringLiteral("background: %1; color: %2; padding: 4px").arg(color(background).name(), color(text).name());
+}
+
+void Theme::colourText(QWidget *widget, Role role, const QString &extraCss)
+{
+    widget->setProperty("jumoThemeRole", int(role));
+    widget->setProperty("jumoThemeCss", extraCss);
+    widget->setStyleSheet(QStringLiteral("color: %1").arg(color(role).name())
+                          + (extraCss.isEmpty() ? QString() : QStringLiteral("; ") + extraCss));
+}
+
+void Theme::plain(QWidget *widget)
+{
+    widget->setProperty("jumoThemeRole", QVariant());
+    widget->setStyleSheet(QString());
+}
+
+void Theme::restyleWidgets()
+{
+    for (QWidget *widget : QApplication::allWidgets()) {
+        const QVariant role = widget->property("jumoThemeRole");
+        if (role.isValid())
+            colourText(widget, Role(role.toInt()), widget->property("jumoThemeCss").toString());
+    }
 }
 
 QString Theme::name(Kind kind)

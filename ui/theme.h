@@ -11,6 +11,8 @@
 
 #include <optional>
 
+class QWidget;
+
 namespace jumo {
 
 class Theme
@@ -49,6 +51,12 @@ public:
     static std::optional<Kind> fromName(const QString &name);
     static QString title(Kind kind);            // translated, for the menu
     static QList<Kind> kinds();
+
+    // Colours a widget's text by meaning (extraCss: more declarations, "font-weight: bold");
+    // restyleWidgets() colours it again when the theme changes. plain() takes it back.
+    static void colourText(QWidget *widget, Role role, const QString &extraCss = QString());
+    static void plain(QWidget *widget);
+    static void restyleWidgets();
 
     // WCAG contrast ratio of two colours (1 to 21).
     static double contrast(const QColor &a, const QColor &b);

@@ -15,6 +15,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QLabel>
 #include <QPalette>
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -31,6 +32,7 @@ private slots:
     void textIsReadableInEveryTheme();
     void namesRoundTrip();
     void windowKeepsAndSwitchesItsTheme();
+    void colouredTextFollowsTheTheme();
 };
 
 void tst_Theme::textIsReadableInEveryTheme_data()
@@ -135,6 +137,26 @@ void tst_Theme::windowKeepsAndSwitchesItsTheme()
     options.theme.clear();
     MainWindow again(registry, options);
     QCOMPARE(Theme::current(), Theme::Kind::Light);
+}
+
+void tst_Theme::colouredTextFollowsTheTheme()
+{
+    // A write state shown in the light theme is coloured for the dark one after a switch
+    // (a green fit for white would be unreadable on the dark window).
+    Theme::apply(Theme::Kind::Light);
+    QLabel state(QStringLiteral("Confirmed"));
+    Theme::colourText(&state, Theme::Role::Confirmed, QStringLiteral("font-weight: bold"));
+    const QString light = Theme::color(Theme::Role::Confirmed).name();
+    QVERIFY(state.styleSheet().contains(light));
+    Theme::apply(Theme::Kind::Dark);
+    Theme::restyleWidgets();
+    const QString dark = Theme::color(Theme::Role::Confirmed).name();
+    QVERIFY(dark != light);
+    QVERIFY2(state.styleSheet().contains(dark) && state.styleSheet().contains("bold"), qPrintable(state.styleSheet()));
+    Theme::plain(&state);
+    Theme::apply(Theme::Kind::Light);
+    Theme::restyleWidgets();
+    QVERIFY(state.styleSheet().isEmpty());
 }
 
 QTEST_MAIN(tst_Theme)
