@@ -77,7 +77,8 @@ int main(int argc, char *argv[])
     options.readOnly = parser.isSet(QStringLiteral("read-only"));
     options.identify = !parser.isSet(QStringLiteral("no-identify"));
     options.theme = parser.value(QStringLiteral("theme"));
-    if (!options.theme.isEmpty() && !jumo::Theme::fromName(options.theme)) {
+    // Given, it must name a theme: "--theme ''" is as wrong as "--theme purple".
+    if (parser.isSet(QStringLiteral("theme")) && !jumo::Theme::fromName(options.theme)) {
         QTextStream(stderr) << QApplication::translate("main", "jumo-hmi: unknown theme '%1' (system, light, dark or "
                                                                "high-contrast)")
                                        .arg(options.theme)

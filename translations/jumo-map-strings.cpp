@@ -1,6 +1,6 @@
 // Writes the user-visible texts of the built-in register maps as QT_TRANSLATE_NOOP
 // lines, so lupdate finds them: labels, bit labels, enum values, section titles,
-// preconditions, exception meanings, error value wordings and what decides a unit set on
+// preconditions, faceplate states, exception meanings, error value wordings and what decides a unit set on
 // the device (context "jumo::maps").
 #include "protocol/familyregistry.h"
 
@@ -37,6 +37,17 @@ int main(int argc, char *argv[])
             add(map->errorValues->overrange);
             add(map->errorValues->invalid);
         }
+        const jumo::FaceplateSpec &face = map->faceplate;
+        for (const auto *states : {&face.modes, &face.programStates}) {
+            for (const jumo::FaceplateState &state : *states)
+                add(state.text);
+        }
+        for (const jumo::FaceplateValue &value : face.values)
+            add(value.label);
+        add(face.primaryLabel);
+        add(face.modeOtherwise);
+        add(face.modeNote);
+        add(face.programOtherwise);
         for (const jumo::RegisterEntry &e : map->entries()) {
             add(e.label);
             add(e.group);

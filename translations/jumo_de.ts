@@ -722,7 +722,7 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
         <translation>Gerät: %1</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+59"/>
         <source>&apos;%1&apos; is no number that can be read one way only; write it without thousands separators</source>
         <translation>„%1“ ist keine eindeutig lesbare Zahl; bitte ohne Tausenderpunkte schreiben</translation>
     </message>
@@ -942,7 +942,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Trend</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>Wrong device: %1. Its values are not shown and nothing is written to it until the device at this address is of the family it was added as.</source>
         <translation>Falsches Gerät: %1. Seine Werte werden nicht angezeigt und nichts wird geschrieben, bis das Gerät an dieser Adresse zu der Familie gehört, als die es hinzugefügt wurde.</translation>
     </message>
@@ -960,18 +960,112 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DeviceTile</name>
     <message>
-        <location filename="../ui/devicetile.cpp" line="+28"/>
-        <source>address %1</source>
-        <translation>Adresse %1</translation>
+        <location filename="../ui/devicetile.cpp" line="+48"/>
+        <source>%1 @ %2</source>
+        <translation>%1 @ %2</translation>
     </message>
     <message>
-        <location line="+59"/>
-        <location line="+99"/>
+        <location line="+96"/>
+        <location line="+228"/>
+        <location line="+205"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="-21"/>
+        <location line="-411"/>
+        <source>Bar: %1 to %2 %3</source>
+        <translation>Balken: %1 bis %2 %3</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Bar: 0 to %1 (nominal)</source>
+        <translation>Balken: 0 bis %1 (Nennwert)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bar: 0 to %1 (limit set on the device)</source>
+        <translation>Balken: 0 bis %1 (am Gerät eingestellter Grenzwert)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No bar: its scale is not known yet.</source>
+        <translation>Kein Balken: Die Skala ist noch nicht bekannt.</translation>
+    </message>
+    <message>
+        <location line="+73"/>
+        <location line="+11"/>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>segment %1 of %2</source>
+        <translation>Segment %1 von %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 left</source>
+        <translation>noch %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>(beyond the scale)</source>
+        <translation>(außerhalb der Skala)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+377"/>
+        <source>Mode: %1</source>
+        <translation>Betriebsart: %1</translation>
+    </message>
+    <message>
+        <location line="-375"/>
+        <location line="+380"/>
+        <source>Program: %1</source>
+        <translation>Programm: %1</translation>
+    </message>
+    <message>
+        <location line="-367"/>
+        <source>Wrong device</source>
+        <translation>Falsches Gerät</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Line lost</source>
+        <translation>Leitung verloren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not answering</source>
+        <translation>Antwortet nicht</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Normal</source>
+        <translation>Normal</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Checking</source>
+        <translation>Prüfung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Disconnected</source>
+        <translation>Getrennt</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>Online</source>
         <translation>Online</translation>
     </message>
@@ -1009,7 +1103,8 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-59"/>
+        <location line="+59"/>
         <source>Alarms unknown</source>
         <translation>Alarme unbekannt</translation>
     </message>
@@ -2063,13 +2158,18 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>&amp;Farbschema</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+11"/>
+        <source>&amp;Compact overview</source>
+        <translation>&amp;Kompakte Übersicht</translation>
+    </message>
+    <message>
+        <location line="+60"/>
         <location line="+45"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-345"/>
+        <location line="-362"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -2109,12 +2209,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>NUR LESEN</translation>
     </message>
     <message>
-        <location line="+545"/>
+        <location line="+562"/>
         <source>Data logging of %1 stopped: %2</source>
         <translation>Datenaufzeichnung von %1 angehalten: %2</translation>
     </message>
     <message>
-        <location line="-509"/>
+        <location line="-526"/>
         <source>address %1: %2</source>
         <translation>Adresse %1: %2</translation>
     </message>
@@ -2237,7 +2337,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Nächster &amp;Reiter der Geräteseite</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+107"/>
         <source>Demo line failed: %1</source>
         <translation>Demo-Leitung fehlgeschlagen: %1</translation>
     </message>
@@ -2530,11 +2630,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+25"/>
+        <location line="+69"/>
         <source>&apos;%1&apos; is not a readable entry</source>
         <translation>&apos;%1&apos; ist kein lesbarer Eintrag</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+100"/>
         <source>&apos;protocol&apos; must be an object</source>
         <translation>&apos;protocol&apos; muss ein Objekt sein</translation>
     </message>
@@ -2594,8 +2695,8 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Eintrag #%1 (%2)</translation>
     </message>
     <message>
-        <location line="-208"/>
-        <location line="+209"/>
+        <location line="-367"/>
+        <location line="+368"/>
         <location line="+302"/>
         <location filename="../lib/protocol/overlapcheck.cpp" line="+70"/>
         <source>entry &apos;%1&apos; (%2)</source>
@@ -2657,7 +2758,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Adressbereich %1..%2 ist leer</translation>
     </message>
     <message>
-        <location line="-124"/>
+        <location line="-283"/>
         <source>malformed JSON at byte %1: &apos;%2&apos; given twice in one object</source>
         <translation>fehlerhaftes JSON bei Byte %1: &apos;%2&apos; zweimal im selben Objekt angegeben</translation>
     </message>
@@ -2672,7 +2773,62 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;configuredUnit&apos; nennt &apos;%1&apos;, das &apos;configuredUnits&apos; nicht definiert</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+47"/>
+        <source>&apos;%1&apos; must be a readable bool entry or a single bit of a readable bit field</source>
+        <translation>&apos;%1&apos; muss ein lesbarer Bool-Eintrag oder ein einzelnes Bit eines lesbaren Bitfelds sein</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>&apos;%1&apos; must be an array</source>
+        <translation>&apos;%1&apos; muss ein Array sein</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>the scale &apos;%1&apos; must be a number, or an enum whose every text starts with one</source>
+        <translation>die Skala &apos;%1&apos; muss eine Zahl sein oder eine Aufzählung, deren Texte alle mit einer Zahl beginnen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&apos;faceplate&apos; must be an object</source>
+        <translation>&apos;faceplate&apos; muss ein Objekt sein</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>unknown kind &apos;%1&apos; (expected power_unit or process_controller)</source>
+        <translation>unbekannte Art &apos;%1&apos; (erwartet: power_unit oder process_controller)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&apos;values&apos; must be a non-empty array</source>
+        <translation>&apos;values&apos; muss ein nicht leeres Array sein</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>&apos;max&apos; must be above &apos;min&apos;</source>
+        <translation>&apos;max&apos; muss größer als &apos;min&apos; sein</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&apos;from&apos; names one entry, or two whose product is the scale</source>
+        <translation>&apos;from&apos; nennt einen Eintrag oder zwei, deren Produkt die Skala ist</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unknown scale &apos;%1&apos; (expected range, nominal or limit)</source>
+        <translation>unbekannte Skala &apos;%1&apos; (erwartet: range, nominal oder limit)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&apos;min&apos; and &apos;max&apos; are only for the scale &apos;range&apos;</source>
+        <translation>&apos;min&apos; und &apos;max&apos; gibt es nur für die Skala &apos;range&apos;</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&apos;from&apos; is only for the scales &apos;nominal&apos; and &apos;limit&apos;</source>
+        <translation>&apos;from&apos; gibt es nur für die Skalen &apos;nominal&apos; und &apos;limit&apos;</translation>
+    </message>
+    <message>
+        <location line="+68"/>
         <source>&apos;alwaysAnswersAddress&apos; must be 1..247 or 255, not %1</source>
         <translation>&apos;alwaysAnswersAddress&apos; muss 1..247 oder 255 sein, nicht %1</translation>
     </message>
@@ -3339,7 +3495,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RegisterMap</name>
     <message>
-        <location filename="../lib/protocol/registermap.cpp" line="+170"/>
+        <location filename="../lib/protocol/registermap.cpp" line="+182"/>
         <source>exception %1 (not documented for this family)</source>
         <translation>Exception-Code %1 (für diese Gerätefamilie nicht dokumentiert)</translation>
     </message>
@@ -3533,7 +3689,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::Theme</name>
     <message>
-        <location filename="../ui/theme.cpp" line="+230"/>
+        <location filename="../ui/theme.cpp" line="+274"/>
         <source>&amp;System</source>
         <translation>&amp;System</translation>
     </message>
@@ -3626,7 +3782,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::TrendView</name>
     <message>
-        <location filename="../ui/trendview.cpp" line="+50"/>
+        <location filename="../ui/trendview.cpp" line="+51"/>
         <source>1 minute</source>
         <translation>1 Minute</translation>
     </message>
@@ -3667,12 +3823,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+67"/>
         <source>Value (no unit)</source>
         <translation>Wert (ohne Einheit)</translation>
     </message>
@@ -4100,7 +4256,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Istwerteinheiten pro Minute oder pro Stunde, wie die Rampenfunktion am Gerät konfiguriert ist</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+12"/>
         <source>Program status</source>
         <translation>Programmstatus</translation>
     </message>
@@ -4430,12 +4586,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Ungefilterter Istwert</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-71"/>
         <source>Setpoint</source>
         <translation>Sollwert</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+72"/>
         <source>Output (displayed value)</source>
         <translation>Stellgrad (Anzeigewert)</translation>
     </message>
@@ -5090,12 +5246,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Sollwert W4</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-200"/>
         <source>Process value</source>
         <translation>Istwert</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+201"/>
         <source>Logic 1+2</source>
         <translation>Logik 1+2</translation>
     </message>
@@ -5220,7 +5376,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Sonstiger ungültiger Wert</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+9"/>
         <source>Software version</source>
         <translation>Softwareversion</translation>
     </message>
@@ -5435,12 +5591,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Last-, Netz- oder Fehlerstrom des ext. Stromsensors 3, skaliert auf Messbereich</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-43"/>
         <source>Power</source>
         <translation>Leistung</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+44"/>
         <source>Load resistance</source>
         <translation>Lastwiderstand</translation>
     </message>
@@ -5635,12 +5791,87 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Störung</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-85"/>
         <source>Power reduction</source>
         <translation>Leistungsreduzierung</translation>
     </message>
     <message>
+        <location line="-237"/>
+        <source>Self-optimisation</source>
+        <translation>Selbstoptimierung</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>Manual</source>
+        <translation>Hand</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stopped</source>
+        <translation>Gestoppt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ended</source>
+        <translation>Beendet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Paused</source>
+        <translation>Angehalten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Output</source>
+        <translation>Stellgrad</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Automatic</source>
+        <translation>Automatik</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The interface reports manual mode and self-optimisation only; a controller switched off (a command) also shows as automatic.</source>
+        <translation>Die Schnittstelle meldet nur Handbetrieb und Selbstoptimierung; ein (per Befehl) ausgeschalteter Regler erscheint ebenfalls als Automatik.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Running</source>
+        <translation>Läuft</translation>
+    </message>
+    <message>
+        <location line="+223"/>
+        <source>Calibration</source>
+        <translation>Kalibrierung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Voltage limitation</source>
+        <translation>Spannungsbegrenzung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Current limiting</source>
+        <translation>Strombegrenzung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power limitation</source>
+        <translation>Leistungsbegrenzung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Voltage</source>
+        <translation>Spannung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Current</source>
+        <translation>Strom</translation>
+    </message>
+    <message>
+        <location line="+84"/>
         <source>Trigger for manual Teach-In</source>
         <translation>Auslöser für manuelles Teach-In</translation>
     </message>
@@ -6438,6 +6669,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+1"/>
         <source>the quantity the alarm monitors, as configured on the device: V, A, W, kW, Ω, °C or °F (5.8: &apos;depending on the monitored value&apos;)</source>
         <translation>die Größe, die der Alarm überwacht, wie am Gerät konfiguriert: V, A, W, kW, Ω, °C oder °F (5.8: „abhängig vom überwachten Wert“)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>External current limit</source>
+        <translation>Externe Strombegrenzung</translation>
     </message>
     <message>
         <location line="+1"/>

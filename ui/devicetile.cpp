@@ -4,44 +4,62 @@
 #include "models/livevaluesmodel.h"
 #include "models/valuetext.h"
 #include "protocol/registermap.h"
-#include "theme.h"
 
 #include <QCoreApplication>
+#include <QEvent>
 #include <QKeyEvent>
-#include <QLabel>
 #include <QLocale>
 #include <QPainter>
-#include <QVBoxLayout>
+#include <QPainterPath>
+
+#include <algorithm>
 
 namespace jumo {
 
+namespace {
+
+QString mapText(const QString &text)
+{
+    return QCoreApplication::translate("jumo::maps", text.toUtf8().constData());
+}
+
+// "1:02:03" or "2:03": the time left in a program segment.
+QString duration(qint64 seconds)
+{
+    const qint64 s = std::max<qint64>(0, seconds);
+    if (s >= 3600)
+        return QStringLiteral("%1:%2:%3").arg(s / 3600).arg(s / 60 % 60, 2, 10, QLatin1Char('0')).arg(s % 60, 2, 10, QLatin1Char('0'));
+    return QStringLiteral("%1:%2").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
+}
+
+constexpr int padding = 8;
+
+} // namespace
+
 DeviceTile::DeviceTile(DeviceId device, const RegisterMap &map, quint8 address, LiveValuesModel *values,
                        AlarmBitsModel *alarms, QWidget *parent)
-    : QFrame(parent), m_device(device), m_map(map), m_values(values), m_alarms(alarms), m_title(new QLabel(this)),
-      m_state(new QLabel(this)), m_keyValues(new QLabel(this)), m_alarmLabel(new QLabel(this))
+    : QWidget(parent), m_device(device), m_map(map), m_address(address), m_values(values), m_alarms(alarms)
 {
     setObjectName(QStringLiteral("tile_%1_%2").arg(map.family).arg(address));
-    setFrameShape(QFrame::StyledPanel);
     setCursor(Qt::PointingHandCursor);
     setFocusPolicy(Qt::StrongFocus);
-    setMinimumWidth(260);
-    m_title->setText(QStringLiteral("<b>%1</b><br>%2").arg(map.name.toHtmlEscaped(), tr("address %1").arg(address)));
-    m_title->setWordWrap(true);
-    m_state->setObjectName(QStringLiteral("deviceState"));
-    m_keyValues->setObjectName(QStringLiteral("keyValues"));
-    m_keyValues->setWordWrap(true);
-    m_state->setWordWrap(true);
-    m_alarmLabel->setWordWrap(true);
-    m_alarmLabel->setObjectName(QStringLiteral("alarmCount"));
-    auto *layout = new QVBoxLayout(this);
-    layout->addWidget(m_title);
-    layout->addWidget(m_state);
-    layout->addWidget(m_keyValues);
-    layout->addWidget(m_alarmLabel);
-    layout->addStretch();
-    connect(m_values, &QAbstractItemModel::dataChanged, this, &DeviceTile::refresh);
-    connect(m_alarms, &AlarmBitsModel::activeAlarmsChanged, this, &DeviceTile::refresh);
-    connect(m_alarms, &AlarmBitsModel::alarmsKnownChanged, this, &DeviceTile::refresh);
+    setAttribute(Qt::WA_OpaquePaintEvent);
+    setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
+    m_title = tr("%1 @ %2").arg(map.shortName).arg(address);
+    setAccessibleName(m_title);
+    // A poll cycle changes the models block by block: the faceplate catches up once for
+    // them all, a moment later (a control room reads it, nobody needs each block).
+    m_pending.setSingleShot(true);
+    m_pending.setInterval(refreshDelayMs);
+    connect(&m_pending, &QTimer::timeout, this, &DeviceTile::refresh);
+    auto later = [this] {
+        if (!m_pending.isActive())
+            m_pending.start();
+    };
+    connect(m_values, &QAbstractItemModel::dataChanged, this, later);
+    connect(m_alarms, &QAbstractItemModel::dataChanged, this, later);
+    connect(m_alarms, &AlarmBitsModel::activeAlarmsChanged, this, later);
+    connect(m_alarms, &AlarmBitsModel::alarmsKnownChanged, this, later);
     refresh();
 }
 
@@ -51,109 +69,290 @@ void DeviceTile::setCondition(const DeviceCondition &condition)
     refresh();
 }
 
-QString DeviceTile::valuesText() const
+void DeviceTile::setDensity(Density density)
 {
-    return m_keyValues->text();
+    if (m_density == density)
+        return;
+    m_density = density;
+    updateGeometry();
+    update();
 }
 
-QString DeviceTile::stateText() const
+std::optional<double> DeviceTile::number(const QString &entryId) const
 {
-    return m_stateText;
+    const int r = m_values->rowOf(entryId);
+    if (r < 0)
+        return std::nullopt;
+    const QVariant v = m_values->index(r, LiveValuesModel::ValueColumn).data(LiveValuesModel::NumericRole);
+    if (!v.isValid())
+        return std::nullopt;
+    // A nominal value kept as an enum ("100 A") counts by the number its text starts with.
+    const RegisterEntry *e = m_map.entry(entryId);
+    if (e && e->type == ValueType::Enum)
+        return leadingNumber(e->enumValues.value(v.toInt()));
+    return v.toDouble();
 }
 
-QString DeviceTile::alarmText() const
+std::optional<bool> DeviceTile::stateOn(const QString &reference) const
 {
-    return m_alarmLabel->text();
+    const QString id = reference.section(QLatin1Char('.'), 0, 0);
+    const std::optional<double> word = number(id);
+    if (!word)
+        return std::nullopt;
+    const QString bitId = reference.section(QLatin1Char('.'), 1);
+    if (bitId.isEmpty())
+        return *word != 0;
+    const RegisterEntry *e = m_map.entry(id);
+    const BitDefinition *bit = e ? e->bitById(bitId) : nullptr;
+    if (!bit)
+        return std::nullopt;
+    return (quint32(*word) & bit->mask()) != 0;
+}
+
+std::optional<QString> DeviceTile::firstOn(const QList<FaceplateState> &states, const QString &otherwise,
+                                           bool *progress) const
+{
+    for (const FaceplateState &s : states) {
+        const std::optional<bool> on = stateOn(s.when);
+        if (!on)
+            return std::nullopt;   // an earlier state unknown: nobody can say which one holds
+        if (*on) {
+            if (progress)
+                *progress = s.progress;
+            return mapText(s.text);
+        }
+    }
+    return mapText(otherwise);
+}
+
+DeviceTile::Row DeviceTile::row(const QString &entryId, const QString &label) const
+{
+    Row row;
+    row.label = mapText(label);
+    const int r = m_values->rowOf(entryId);
+    if (r < 0)
+        return row;
+    const QModelIndex index = m_values->index(r, LiveValuesModel::ValueColumn);
+    const auto validity = Validity(index.data(LiveValuesModel::ValidityRole).toInt());
+    row.value = index.data(LiveValuesModel::ValueWithUnitRole).toString();
+    row.stale = validity == Validity::Stale;
+    return row;
 }
 
 void DeviceTile::refresh()
 {
+    m_pending.stop();
     if (!isVisible()) {
         m_dirty = true;   // caught up in showEvent()
         return;
     }
     m_dirty = false;
-    // Each key value as the live table shows it: no number when unknown, marked when stale.
+    const FaceplateSpec &face = m_map.faceplate;
+    const bool online = m_condition.isOnline();
     QStringList lines;
-    for (const QString &id : m_map.overview) {
-        const int row = m_values->rowOf(id);
-        if (row < 0)
-            continue;
-        const RegisterEntry *e = m_map.entry(id);
-        const QModelIndex index = m_values->index(row, LiveValuesModel::ValueColumn);
-        const auto validity = Validity(index.data(LiveValuesModel::ValidityRole).toInt());
-        QString value = index.data(LiveValuesModel::ValueWithUnitRole).toString();
-        if (validity == Validity::Stale)
-            value += QLatin1Char(' ') + tr("(stale)");
-        lines << QStringLiteral("%1: %2").arg(QCoreApplication::translate("jumo::maps", e->label.toUtf8().constData()),
-                                              value);
-    }
-    const QString text = lines.join(QLatin1Char('\n'));
-    if (m_keyValues->text() != text)
-        m_keyValues->setText(text);
+    auto addLine = [&lines, this](const Row &r) {
+        lines << QStringLiteral("%1: %2").arg(r.label, r.stale ? r.value + QLatin1Char(' ') + tr("(stale)") : r.value);
+    };
 
-    const QString state = conditionText(m_condition);
-    // Colour from the theme, and a border of its own per state, so the state reads
-    // without colour too (and the state is written out in words above the values).
-    std::optional<Theme::Role> role;
-    QString border = QStringLiteral("1px solid");
+    m_primary.reset();
+    if (!face.primary.isEmpty()) {
+        m_primary = row(face.primary, face.primaryLabel);
+        addLine(*m_primary);
+    }
+    m_rows.clear();
+    m_barsDrawn = 0;
+    for (const FaceplateValue &v : face.values) {
+        Row r = row(v.entry, v.label);
+        const RegisterEntry *e = m_map.entry(v.entry);
+        const std::optional<double> value = number(v.entry);
+        double low = 0;
+        std::optional<double> high;
+        switch (v.scale) {
+        case FaceplateValue::Scale::None:
+            break;
+        case FaceplateValue::Scale::Range:
+            low = v.barMin;
+            high = v.barMax;
+            r.scaleText = tr("Bar: %1 to %2 %3").arg(QLocale().toString(v.barMin), QLocale().toString(v.barMax), e ? e->unit : QString());
+            break;
+        case FaceplateValue::Scale::Nominal:
+        case FaceplateValue::Scale::Limit: {
+            std::optional<double> full = 1.0;
+            for (const QString &id : v.scaleFrom) {
+                const std::optional<double> part = number(id);
+                full = full && part ? std::optional<double>(*full * *part) : std::nullopt;
+            }
+            if (full && *full > 0) {
+                high = *full;
+                const QString amount = QStringLiteral("%1 %2").arg(QLocale().toString(*full, 'g', 6), e ? e->unit : QString()).trimmed();
+                r.scaleText = v.scale == FaceplateValue::Scale::Nominal ? tr("Bar: 0 to %1 (nominal)").arg(amount)
+                                                                        : tr("Bar: 0 to %1 (limit set on the device)").arg(amount);
+            } else {
+                r.scaleText = tr("No bar: its scale is not known yet.");
+            }
+            break;
+        }
+        }
+        if (high && *high > low) {
+            r.scaleKnown = true;
+            r.zero = low < 0 && *high > 0 ? -low / (*high - low) : 0;
+            ++m_barsDrawn;
+            // Only a current value has a bar; a stale or unknown one leaves the track empty.
+            if (value && !r.stale) {
+                const double f = (*value - low) / (*high - low);
+                r.beyond = f > 1 || f < 0;
+                r.fraction = std::clamp(f, 0.0, 1.0);
+            }
+        }
+        addLine(r);
+        m_rows << r;
+    }
+    m_valuesText = lines.join(QLatin1Char('\n'));
+
+    // The state: condition first, then alarms and warnings among the known words.
+    m_stateText = conditionText(m_condition);
+    m_alarmText = alarmsText(m_condition, *m_alarms);
+    const bool known = m_alarms->alarmsKnown() && online;
+    QStringList alarmNames;
+    QStringList warningNames;
+    for (int i = 0; i < m_alarms->rowCount(); ++i) {
+        const QModelIndex index = m_alarms->index(i);
+        if (AlarmBitsModel::BitState(index.data(AlarmBitsModel::BitStateRole).toInt()) != AlarmBitsModel::BitState::On)
+            continue;
+        const auto kind = BitKind(index.data(AlarmBitsModel::KindRole).toInt());
+        if (kind == BitKind::Alarm)
+            alarmNames << index.data().toString();
+        else if (kind == BitKind::Warning)
+            warningNames << index.data().toString();
+    }
     switch (m_condition.state) {
-    case DeviceCondition::State::Online:
-        break;
-    case DeviceCondition::State::Offline:
-    case DeviceCondition::State::LineLost:
-        role = Theme::Role::TileOffline;
-        border = QStringLiteral("2px dashed");
-        break;
     case DeviceCondition::State::Disconnected:
+        m_summary = Summary::Disconnected;
+        break;
     case DeviceCondition::State::Identifying:
-        role = Theme::Role::TileIdle;
-        border = QStringLiteral("1px dotted");
+        m_summary = Summary::Checking;
         break;
     case DeviceCondition::State::WrongDevice:
-        role = Theme::Role::TileWrongDevice;
-        border = QStringLiteral("4px double");
+        m_summary = Summary::WrongDevice;
+        break;
+    case DeviceCondition::State::Offline:
+        m_summary = Summary::NotAnswering;
+        break;
+    case DeviceCondition::State::LineLost:
+        m_summary = Summary::LineLost;
+        break;
+    case DeviceCondition::State::Online:
+        if (known && !alarmNames.isEmpty())
+            m_summary = Summary::Alarm;
+        else if (known && !warningNames.isEmpty())
+            m_summary = Summary::Warning;
+        else if (!known || m_alarms->alarmsStale())
+            m_summary = Summary::Uncertain;
+        else
+            m_summary = Summary::Normal;
         break;
     }
-    const int alarms = m_alarms->activeAlarms();
-    const bool known = m_alarms->alarmsKnown() && m_condition.isOnline();
-    const bool stale = known && m_alarms->alarmsStale();
-    const QString alarmText = alarmsText(m_condition, *m_alarms);
-    // Green only for a live "no alarm".
-    if (!role) {
-        if (alarms && known) {
-            role = Theme::Role::TileAlarm;
-            border = QStringLiteral("3px solid");
-        } else if (!known || stale) {
-            role = Theme::Role::TileUncertain;
-            border = QStringLiteral("2px dotted");
+    m_alarmNames.clear();
+    if (online && !alarmNames.isEmpty())
+        m_alarmNames = alarmNames.join(QStringLiteral(", "));
+    else if (online && !warningNames.isEmpty())
+        m_alarmNames = warningNames.join(QStringLiteral(", "));
+
+    m_modeText.clear();
+    if (!face.modeOtherwise.isEmpty() || !face.modes.isEmpty()) {
+        const std::optional<QString> mode = online ? firstOn(face.modes, face.modeOtherwise) : std::nullopt;
+        m_modeText = mode ? *mode : tr("unknown");
+    }
+    m_programText.clear();
+    if (face.hasProgram()) {
+        bool progress = true;
+        const std::optional<QString> state = online ? firstOn(face.programStates, face.programOtherwise, &progress)
+                                                    : std::nullopt;
+        const std::optional<double> segment = number(face.programSegment);
+        const std::optional<double> segments = number(face.programSegments);
+        const std::optional<double> left = number(face.programTimeLeft);
+        if (!state) {
+            m_programText = tr("unknown");
         } else {
-            role = Theme::Role::TileOk;
+            QStringList parts{*state};
+            if (progress && segment && segments)
+                parts << tr("segment %1 of %2").arg(qint64(*segment)).arg(qint64(*segments));
+            if (progress && left)
+                parts << tr("%1 left").arg(duration(qint64(*left)));
+            m_programText = parts.join(QStringLiteral(", "));
         }
     }
-    QColor edge = Theme::color(Theme::Role::TileText);
-    if (Theme::current() != Theme::Kind::HighContrast && border.startsWith(QLatin1Char('1')))
-        edge.setAlpha(90);
-    const QString stateHtml = m_condition.isOnline() ? state.toHtmlEscaped()
-                                                     : QStringLiteral("<b>%1</b>").arg(state.toHtmlEscaped());
-    m_stateText = state;
-    if (m_state->text() != stateHtml)
-        m_state->setText(stateHtml);
-    m_state->setToolTip(m_condition.detail);
-    if (m_alarmLabel->text() != alarmText)
-        m_alarmLabel->setText(alarmText);
-    // An unanswering device's values are greyed as well as blanked.
-    m_keyValues->setEnabled(m_condition.isOnline());
-    const QString sheet = QStringLiteral("jumo--DeviceTile { background: %1; border: %2 rgba(%3, %4, %5, %6); } "
-                                         "QLabel:!disabled { color: %7; }")
-                                  .arg(Theme::color(*role).name(), border)
-                                  .arg(edge.red())
-                                  .arg(edge.green())
-                                  .arg(edge.blue())
-                                  .arg(edge.alpha())
-                                  .arg(Theme::color(Theme::Role::TileText).name());
-    if (styleSheet() != sheet)   // re-styling is costly: only when the colour changes
-        setStyleSheet(sheet);
+
+    QStringList tip{m_title, QStringLiteral("%1 – %2").arg(summaryText(), m_stateText)};
+    if (!m_condition.detail.isEmpty())
+        tip << m_condition.detail;
+    tip << m_valuesText;
+    for (const Row &r : std::as_const(m_rows)) {
+        if (!r.scaleText.isEmpty())
+            tip << QStringLiteral("%1 – %2").arg(r.label, r.scaleText)
+                            + (r.beyond ? QLatin1Char(' ') + tr("(beyond the scale)") : QString());
+    }
+    if (!m_modeText.isEmpty())
+        tip << tr("Mode: %1").arg(m_modeText) + (face.modeNote.isEmpty() ? QString() : QLatin1Char('\n') + mapText(face.modeNote));
+    if (!m_programText.isEmpty())
+        tip << tr("Program: %1").arg(m_programText);
+    tip << m_alarmText;
+    if (!m_alarmNames.isEmpty())
+        tip << m_alarmNames;
+    const QString tipText = tip.join(QLatin1Char('\n'));
+    if (tipText == toolTip())
+        return;   // nothing the faceplate shows has changed
+    setToolTip(tipText);
+    setAccessibleDescription(tip.mid(1).join(QLatin1Char('\n')));
+    update();
+}
+
+QString DeviceTile::summaryText(Summary summary)
+{
+    switch (summary) {
+    case Summary::WrongDevice:
+        return tr("Wrong device");
+    case Summary::LineLost:
+        return tr("Line lost");
+    case Summary::NotAnswering:
+        return tr("Not answering");
+    case Summary::Alarm:
+        return tr("Alarm");
+    case Summary::Warning:
+        return tr("Warning");
+    case Summary::Uncertain:
+        return tr("Alarms unknown");
+    case Summary::Normal:
+        return tr("Normal");
+    case Summary::Checking:
+        return tr("Checking");
+    case Summary::Disconnected:
+        return tr("Disconnected");
+    }
+    return {};
+}
+
+Theme::Role DeviceTile::roleOf(Summary summary)
+{
+    switch (summary) {
+    case Summary::WrongDevice:
+        return Theme::Role::TileWrongDevice;
+    case Summary::LineLost:
+    case Summary::NotAnswering:
+        return Theme::Role::TileOffline;
+    case Summary::Alarm:
+        return Theme::Role::TileAlarm;
+    case Summary::Warning:
+        return Theme::Role::TileWarning;
+    case Summary::Uncertain:
+        return Theme::Role::TileUncertain;
+    case Summary::Normal:
+        return Theme::Role::TileOk;
+    case Summary::Checking:
+    case Summary::Disconnected:
+        return Theme::Role::TileIdle;
+    }
+    return Theme::Role::TileIdle;
 }
 
 QString DeviceTile::conditionText(const DeviceCondition &condition)
@@ -187,9 +386,317 @@ QString DeviceTile::alarmsText(const DeviceCondition &condition, const AlarmBits
     return text;
 }
 
+int DeviceTile::lineHeightFor(Density density) const
+{
+    return fontMetrics().height() + (density == Density::Compact ? 1 : 4);
+}
+
+QFont DeviceTile::bigFontFor(Density density) const
+{
+    QFont big = font();
+    big.setPointSizeF(big.pointSizeF() * (density == Density::Compact ? 1.6 : 2.0));
+    big.setBold(true);
+    return big;
+}
+
+QSize DeviceTile::sizeHintFor(Density density) const
+{
+    const FaceplateSpec &face = m_map.faceplate;
+    // The title, the values, the mode (or the condition while the device does not
+    // answer), the program, the alarms.
+    int lines = 3 + int(face.values.size());
+    if (face.hasProgram())
+        ++lines;
+    int height = lines * lineHeightFor(density) + 2 * padding;
+    if (!face.primary.isEmpty())
+        height += QFontMetrics(bigFontFor(density)).height() + 2;
+    return {density == Density::Compact ? 236 : 300, height};
+}
+
+QSize DeviceTile::minimumSizeHint() const
+{
+    return {m_density == Density::Compact ? 200 : 240, sizeHint().height()};
+}
+
+void DeviceTile::drawShape(QPainter &painter, const QRectF &box) const
+{
+    // Each state has a shape of its own, so it reads without colour: a circle with a tick
+    // (normal), a triangle (warning), an octagon (alarm), a dashed circle (not answering),
+    // a dashed square with a cross (line lost), a double square (wrong device), a hollow
+    // circle (idle, checking) and a circle with a question mark (alarms unknown).
+    const QColor ink = Theme::color(Theme::Role::TileText);
+    QPen pen(ink, 1.5);
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing);
+    const QRectF r = box.adjusted(1.5, 1.5, -1.5, -1.5);
+    const QPointF c = r.center();
+    const qreal w = r.width();
+    auto mark = [&](const QString &text) {
+        QFont f = font();
+        f.setBold(true);
+        f.setPixelSize(std::max(7, int(w * 0.7)));
+        painter.setFont(f);
+        painter.setPen(ink);
+        painter.drawText(r, Qt::AlignCenter, text);
+    };
+    switch (m_summary) {
+    case Summary::Normal: {
+        painter.setPen(pen);
+        painter.setBrush(Theme::color(Theme::Role::LedStatus));
+        painter.drawEllipse(r);
+        QPainterPath tick;
+        tick.moveTo(c.x() - w * 0.25, c.y());
+        tick.lineTo(c.x() - w * 0.05, c.y() + w * 0.2);
+        tick.lineTo(c.x() + w * 0.28, c.y() - w * 0.22);
+        painter.setPen(QPen(ink, 2));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawPath(tick);
+        break;
+    }
+    case Summary::Warning: {
+        painter.setPen(pen);
+        painter.setBrush(Theme::color(Theme::Role::LedWarning));
+        painter.drawPolygon(QPolygonF{QPointF(c.x(), r.top()), r.bottomRight(), r.bottomLeft()});
+        mark(QStringLiteral("!"));
+        break;
+    }
+    case Summary::Alarm: {
+        painter.setPen(pen);
+        painter.setBrush(Theme::color(Theme::Role::LedAlarm));
+        const qreal k = w * 0.29;
+        painter.drawPolygon(QPolygonF{{r.left() + k, r.top()}, {r.right() - k, r.top()}, {r.right(), r.top() + k},
+                                      {r.right(), r.bottom() - k}, {r.right() - k, r.bottom()}, {r.left() + k, r.bottom()},
+                                      {r.left(), r.bottom() - k}, {r.left(), r.top() + k}});
+        mark(QStringLiteral("!"));
+        break;
+    }
+    case Summary::NotAnswering:
+        pen.setStyle(Qt::DashLine);
+        painter.setPen(pen);
+        painter.setBrush(Qt::NoBrush);
+        painter.drawEllipse(r);
+        mark(QStringLiteral("?"));
+        break;
+    case Summary::LineLost:
+        pen.setStyle(Qt::DashLine);
+        painter.setPen(pen);
+        painter.setBrush(Qt::NoBrush);
+        painter.drawRect(r);
+        painter.setPen(QPen(ink, 2));
+        painter.drawLine(r.topLeft() + QPointF(w * 0.25, w * 0.25), r.bottomRight() - QPointF(w * 0.25, w * 0.25));
+        painter.drawLine(r.topRight() + QPointF(-w * 0.25, w * 0.25), r.bottomLeft() + QPointF(w * 0.25, -w * 0.25));
+        break;
+    case Summary::WrongDevice:
+        painter.setPen(pen);
+        painter.setBrush(Qt::NoBrush);
+        painter.drawRect(r);
+        painter.drawRect(r.adjusted(3, 3, -3, -3));
+        break;
+    case Summary::Uncertain:
+        painter.setPen(pen);
+        painter.setBrush(Qt::NoBrush);
+        painter.drawEllipse(r);
+        mark(QStringLiteral("?"));
+        break;
+    case Summary::Checking:
+    case Summary::Disconnected:
+        painter.setPen(pen);
+        painter.setBrush(Qt::NoBrush);
+        painter.drawEllipse(r);
+        break;
+    }
+    painter.restore();
+}
+
+void DeviceTile::paintEvent(QPaintEvent *)
+{
+    QPainter painter(this);
+    const QColor background = Theme::color(stateRole());
+    const QColor ink = Theme::color(Theme::Role::TileText);
+    painter.fillRect(rect(), background);
+
+    // The frame: a style of its own per state, plain to see without colour.
+    QPen frame(ink);
+    switch (m_summary) {
+    case Summary::Normal:
+        frame.setWidth(1);
+        if (Theme::current() != Theme::Kind::HighContrast)
+            frame.setColor(QColor(ink.red(), ink.green(), ink.blue(), 90));
+        break;
+    case Summary::Warning:
+        frame.setWidth(3);
+        frame.setStyle(Qt::DashDotLine);
+        break;
+    case Summary::Alarm:
+        frame.setWidth(4);
+        break;
+    case Summary::Uncertain:
+        frame.setWidth(2);
+        frame.setStyle(Qt::DotLine);
+        break;
+    case Summary::NotAnswering:
+    case Summary::LineLost:
+        frame.setWidth(2);
+        frame.setStyle(Qt::DashLine);
+        break;
+    case Summary::Checking:
+    case Summary::Disconnected:
+        frame.setWidth(1);
+        frame.setStyle(Qt::DotLine);
+        break;
+    case Summary::WrongDevice:
+        frame.setWidth(2);
+        break;
+    }
+    const qreal half = frame.widthF() / 2;
+    painter.setPen(frame);
+    painter.setBrush(Qt::NoBrush);
+    painter.drawRect(QRectF(rect()).adjusted(half, half, -half, -half));
+    if (m_summary == Summary::WrongDevice)
+        painter.drawRect(QRectF(rect()).adjusted(5, 5, -5, -5));
+    if (hasFocus()) {
+        // The tile with the keyboard focus: a frame in the text colour and the highlight,
+        // plain to see on every state's colour.
+        painter.setPen(QPen(palette().color(QPalette::Highlight), 3));
+        painter.drawRect(QRectF(rect()).adjusted(5.5, 5.5, -5.5, -5.5));
+        painter.setPen(QPen(ink, 1, Qt::DotLine));
+        painter.drawRect(QRectF(rect()).adjusted(7.5, 7.5, -7.5, -7.5));
+    }
+
+    const int lh = lineHeight();
+    const QRect area = rect().adjusted(padding + 2, padding, -padding - 2, -padding);
+    int y = area.top();
+    QFont normal = font();
+    QFont bold = font();
+    bold.setBold(true);
+    const QFontMetrics fm(font());
+    const QFontMetrics boldFm(bold);
+    painter.setPen(ink);
+
+    // Title left, the state (shape and word) right.
+    const QString word = summaryText();
+    const int shape = fm.height() - 2;
+    const int wordWidth = boldFm.horizontalAdvance(word);
+    const int badgeWidth = shape + 4 + wordWidth;
+    const QRect titleRect(area.left(), y, area.width() - badgeWidth - 8, lh);
+    painter.setFont(bold);
+    painter.drawText(titleRect, Qt::AlignLeft | Qt::AlignVCenter, boldFm.elidedText(m_title, Qt::ElideRight, titleRect.width()));
+    drawShape(painter, QRectF(area.right() - badgeWidth + 1, y + (lh - shape) / 2.0, shape, shape));
+    painter.setFont(bold);
+    painter.setPen(ink);
+    painter.drawText(QRect(area.right() - wordWidth + 1, y, wordWidth, lh), Qt::AlignRight | Qt::AlignVCenter, word);
+    y += lh;
+
+    auto valueText = [this](const Row &r) { return r.stale ? r.value + QLatin1Char(' ') + tr("(stale)") : r.value; };
+    if (m_primary) {
+        const QFont big = bigFont();
+        const QFontMetrics bigFm(big);
+        const int h = bigFm.height() + 2;
+        const QString value = valueText(*m_primary);
+        QFont valueFont = big;
+        valueFont.setItalic(m_primary->stale);
+        painter.setFont(valueFont);
+        const int valueWidth = std::min(area.width(), QFontMetrics(valueFont).horizontalAdvance(value) + 3);
+        painter.drawText(QRect(area.right() - valueWidth + 1, y, valueWidth, h), Qt::AlignRight | Qt::AlignVCenter,
+                         QFontMetrics(valueFont).elidedText(value, Qt::ElideRight, area.width()));
+        painter.setFont(normal);
+        const int labelWidth = area.width() - valueWidth - 6;
+        if (labelWidth > 20)
+            painter.drawText(QRect(area.left(), y, labelWidth, h), Qt::AlignLeft | Qt::AlignVCenter,
+                             fm.elidedText(m_primary->label, Qt::ElideRight, labelWidth));
+        y += h;
+    }
+
+    // Rows: label, value, and the bar where the map gives one a scale.
+    bool anyBar = false;
+    for (const FaceplateValue &v : m_map.faceplate.values)
+        anyBar = anyBar || v.scale != FaceplateValue::Scale::None;
+    const int barWidth = anyBar ? area.width() * 30 / 100 : 0;
+    const int textWidth = area.width() - (anyBar ? barWidth + 8 : 0);
+    for (qsizetype i = 0; i < m_rows.size(); ++i) {
+        const Row &r = m_rows.at(i);
+        const QString value = valueText(r);
+        QFont valueFont = bold;
+        valueFont.setItalic(r.stale);
+        const QFontMetrics valueFm(valueFont);
+        // A few pixels to spare: the advance is rounded, and a value must not lose a digit.
+        const int valueWidth = std::min(textWidth, valueFm.horizontalAdvance(value) + 3);
+        painter.setFont(valueFont);
+        painter.drawText(QRect(area.left() + textWidth - valueWidth, y, valueWidth, lh), Qt::AlignRight | Qt::AlignVCenter,
+                         valueFm.elidedText(value, Qt::ElideRight, valueWidth));
+        painter.setFont(normal);
+        const int labelWidth = textWidth - valueWidth - 6;
+        if (labelWidth > 12)
+            painter.drawText(QRect(area.left(), y, labelWidth, lh), Qt::AlignLeft | Qt::AlignVCenter,
+                             fm.elidedText(r.label, Qt::ElideRight, labelWidth));
+        const FaceplateValue &spec = m_map.faceplate.values.at(i);
+        if (spec.scale != FaceplateValue::Scale::None) {
+            const QRectF track(area.right() - barWidth + 1, y + lh * 0.25, barWidth, lh * 0.5);
+            if (r.scaleKnown) {
+                painter.setPen(QPen(QColor(ink.red(), ink.green(), ink.blue(), 150), 1));
+                painter.setBrush(Theme::color(Theme::Role::BarTrack));
+                painter.drawRect(track);
+                if (r.fraction) {
+                    const qreal from = track.left() + track.width() * std::min(r.zero, *r.fraction);
+                    const qreal to = track.left() + track.width() * std::max(r.zero, *r.fraction);
+                    painter.fillRect(QRectF(from, track.top() + 1, std::max<qreal>(1.5, to - from), track.height() - 1),
+                                     Theme::color(Theme::Role::BarFill));
+                    if (r.beyond) {
+                        // Beyond its scale: the track gets a heavy outline and an arrow head.
+                        painter.setPen(QPen(ink, 2));
+                        painter.setBrush(Qt::NoBrush);
+                        painter.drawRect(track);
+                        const qreal x = *r.fraction >= 1 ? track.right() - 1 : track.left() + 1;
+                        const qreal d = *r.fraction >= 1 ? -track.height() * 0.6 : track.height() * 0.6;
+                        painter.setBrush(ink);
+                        painter.drawPolygon(QPolygonF{QPointF(x, track.center().y()), QPointF(x + d, track.top() + 1),
+                                                      QPointF(x + d, track.bottom() - 1)});
+                    }
+                    if (r.zero > 0) {
+                        painter.setPen(QPen(ink, 1));
+                        const qreal zx = track.left() + track.width() * r.zero;
+                        painter.drawLine(QPointF(zx, track.top() - 2), QPointF(zx, track.bottom() + 2));
+                    }
+                }
+            }
+            painter.setPen(ink);
+        }
+        y += lh;
+    }
+
+    // The mode, or the condition while the device does not answer; the program; alarms.
+    painter.setFont(normal);
+    if (!m_condition.isOnline()) {
+        painter.setFont(bold);
+        painter.drawText(QRect(area.left(), y, area.width(), lh), Qt::AlignLeft | Qt::AlignVCenter,
+                         boldFm.elidedText(m_stateText, Qt::ElideRight, area.width()));
+        painter.setFont(normal);
+    } else if (!m_modeText.isEmpty()) {
+        painter.drawText(QRect(area.left(), y, area.width(), lh), Qt::AlignLeft | Qt::AlignVCenter,
+                         fm.elidedText(tr("Mode: %1").arg(m_modeText), Qt::ElideRight, area.width()));
+    }
+    y += lh;
+    if (m_map.faceplate.hasProgram()) {
+        painter.drawText(QRect(area.left(), y, area.width(), lh), Qt::AlignLeft | Qt::AlignVCenter,
+                         fm.elidedText(tr("Program: %1").arg(m_programText), Qt::ElideRight, area.width()));
+        y += lh;
+    }
+    const QString alarmLine = m_alarmNames.isEmpty() ? m_alarmText : m_alarmNames;
+    painter.setFont(m_alarmNames.isEmpty() ? normal : bold);
+    painter.drawText(QRect(area.left(), y, area.width(), lh), Qt::AlignLeft | Qt::AlignVCenter,
+                     (m_alarmNames.isEmpty() ? fm : boldFm).elidedText(alarmLine, Qt::ElideRight, area.width()));
+}
+
+void DeviceTile::changeEvent(QEvent *event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange || event->type() == QEvent::PaletteChange)
+        updateGeometry();
+}
+
 void DeviceTile::mouseReleaseEvent(QMouseEvent *event)
 {
-    QFrame::mouseReleaseEvent(event);
+    QWidget::mouseReleaseEvent(event);
     emit activated(m_device);
 }
 
@@ -202,21 +709,8 @@ void DeviceTile::keyPressEvent(QKeyEvent *event)
         emit activated(m_device);
         return;
     default:
-        QFrame::keyPressEvent(event);
+        QWidget::keyPressEvent(event);
     }
-}
-
-void DeviceTile::paintEvent(QPaintEvent *event)
-{
-    QFrame::paintEvent(event);
-    if (!hasFocus())
-        return;
-    // The tile with the keyboard focus has a frame in the highlight colour inside its
-    // border, plain to see across a room (the style's own focus mark is faint).
-    QPainter painter(this);
-    painter.setPen(QPen(palette().color(QPalette::Highlight), 3));
-    painter.setBrush(Qt::NoBrush);
-    painter.drawRect(QRectF(rect()).adjusted(2.5, 2.5, -2.5, -2.5));
 }
 
 void DeviceTile::showEvent(QShowEvent *event)

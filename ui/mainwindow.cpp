@@ -364,6 +364,16 @@ void MainWindow::buildPageShortcuts(QMenu *view)
         group->addAction(action);
         connect(action, &QAction::triggered, this, [this, kind] { setTheme(int(kind)); });
     }
+    // The overview turns compact by itself when it would need scrolling; this keeps it so.
+    QAction *compact = view->addAction(tr("&Compact overview"));
+    compact->setObjectName(QStringLiteral("compactOverview"));
+    compact->setCheckable(true);
+    compact->setChecked(settings().value(QStringLiteral("compactOverview"), false).toBool());
+    m_overview->setAlwaysCompact(compact->isChecked());
+    connect(compact, &QAction::toggled, this, [this](bool on) {
+        m_overview->setAlwaysCompact(on);
+        settings().setValue(QStringLiteral("compactOverview"), on);
+    });
 }
 
 void MainWindow::setTheme(int kind)

@@ -167,6 +167,12 @@ QColor Theme::color(Role role)
         return pick(QColor(0xff, 0xf3, 0xcf), QColor(0x4a, 0x40, 0x18), QColor(0x00, 0x00, 0x00));
     case Role::TileAlarm:
         return pick(QColor(0xff, 0xd8, 0xd8), QColor(0x5c, 0x1e, 0x1e), QColor(0x80, 0x00, 0x00));
+    case Role::TileWarning:
+        return pick(QColor(0xff, 0xe4, 0xb8), QColor(0x55, 0x3a, 0x10), QColor(0x00, 0x00, 0x00));
+    case Role::BarFill:
+        return pick(QColor(0x2f, 0x5f, 0x9e), QColor(0x7f, 0xb4, 0xec), QColor(0xff, 0xff, 0xff));
+    case Role::BarTrack:
+        return pick(QColor(0xff, 0xff, 0xff, 0xc0), QColor(0x00, 0x00, 0x00, 0x70), QColor(0x00, 0x00, 0x00));
     case Role::TileOffline:
         return pick(QColor(0xd9, 0xd9, 0xd9), QColor(0x3a, 0x3a, 0x3a), QColor(0x00, 0x00, 0x00));
     case Role::TileIdle:
@@ -254,8 +260,9 @@ QString Theme::name(Kind kind)
 
 std::optional<Theme::Kind> Theme::fromName(const QString &name)
 {
+    // "Dark", " dark " and "high-contrast" or "HIGH-CONTRAST" all name a theme.
     for (Kind kind : kinds()) {
-        if (Theme::name(kind) == name)
+        if (Theme::name(kind).compare(name.trimmed(), Qt::CaseInsensitive) == 0)
             return kind;
     }
     return std::nullopt;

@@ -25,10 +25,12 @@ public:
         TileOk,            // online, alarms known, none active
         TileUncertain,     // alarms unknown or stale
         TileAlarm,         // an active alarm
+        TileWarning,       // an active warning, no alarm
         TileOffline,       // not answering, line lost
         TileIdle,          // disconnected, identity being checked
         TileWrongDevice,   // another family at the address
         TileText,          // text on any tile colour
+        BarFill, BarTrack, // a faceplate's bar: the value, and the scale it is against
         InfoBanner, InfoBannerText,        // read-only mode
         ErrorBanner, ErrorBannerText,      // wrong device, a log that loses records
         NeutralBanner, NeutralBannerText,  // identity being checked

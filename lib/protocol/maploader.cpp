@@ -68,7 +68,7 @@ private:
     {
         checkKeys(root, {"format", "family", "name", "shortName", "models", "manual", "description", "protocol",
                          "identify", "scanPriority", "exceptions", "errorValues", "configuredUnits", "simulation",
-                         "overview", "identity", "entries"},
+                         "overview", "faceplate", "identity", "entries"},
                   QString());
         RegisterMap map;
         map.sourceFile = source();
@@ -123,7 +123,166 @@ private:
                     fail(QLatin1String(key), tr("'%1' is not a readable entry").arg(id));
             }
         }
+        if (root.contains("faceplate"))
+            parseFaceplate(root.value("faceplate"), map);
+        else
+            map.faceplate.values = defaultFaceplateValues(map);
+        for (FaceplateValue &v : map.faceplate.values) {
+            if (const RegisterEntry *e = map.entry(v.entry); e && v.label.isEmpty())
+                v.label = e->label;
+        }
         return map;
+    }
+
+    static QList<FaceplateValue> defaultFaceplateValues(const RegisterMap &map)
+    {
+        QList<FaceplateValue> values;
+        for (const QString &id : map.overview) {
+            FaceplateValue value;
+            value.entry = id;
+            values << value;
+        }
+        return values;
+    }
+
+    // A readable bool entry or a readable single bit ("entry.bit").
+    void checkStateReference(const RegisterMap &map, const QString &reference, const QString &where)
+    {
+        if (!checkReference(map, reference, where))
+            return;
+        const RegisterEntry *e = map.entry(reference.section(QLatin1Char('.'), 0, 0));
+        const QString bit = reference.section(QLatin1Char('.'), 1);
+        const bool single = bit.isEmpty() ? e->type == ValueType::Bool : e->bitById(bit)->width == 1;
+        if (!e->isReadable() || !single)
+            fail(where, tr("'%1' must be a readable bool entry or a single bit of a readable bit field").arg(reference));
+    }
+
+    QList<FaceplateState> faceplateStates(const RegisterMap &map, const QJsonObject &o, const char *key,
+                                          const QString &where)
+    {
+        QList<FaceplateState> states;
+        const QJsonValue value = o.value(QLatin1String(key));
+        if (value.isUndefined())
+            return states;
+        if (!value.isArray()) {
+            fail(where, tr("'%1' must be an array").arg(QLatin1String(key)));
+            return states;
+        }
+        int index = 0;
+        for (const QJsonValue &v : value.toArray()) {
+            const QString stateWhere = QStringLiteral("%1.%2[%3]").arg(where, QLatin1String(key)).arg(index++);
+            const QJsonObject s = v.toObject();
+            checkKeys(s, {"when", "text", "progress"}, stateWhere);
+            FaceplateState state;
+            state.when = requireString(s, "when", stateWhere);
+            state.text = requireString(s, "text", stateWhere);
+            state.progress = optionalBool(s, "progress", true, stateWhere);
+            if (!state.when.isEmpty())
+                checkStateReference(map, state.when, stateWhere);
+            states << state;
+        }
+        return states;
+    }
+
+    // A readable number entry, or (for a scale) an enum whose texts start with a number.
+    void checkFaceplateEntry(const RegisterMap &map, const QString &id, const QString &where, bool scale)
+    {
+        const RegisterEntry *e = map.entry(id);
+        if (!e || !e->isReadable() || !e->alias.isEmpty()) {
+            fail(where, tr("'%1' is not a readable entry").arg(id));
+            return;
+        }
+        if (scale) {
+            const bool number = e->type != ValueType::Text && e->type != ValueType::Bitfield && e->type != ValueType::Bool
+                    && e->type != ValueType::Enum;
+            bool enumNumbers = e->type == ValueType::Enum && !e->enumValues.isEmpty();
+            for (const QString &text : e->enumValues)
+                enumNumbers = enumNumbers && leadingNumber(text).has_value();
+            if (!number && !enumNumbers)
+                fail(where, tr("the scale '%1' must be a number, or an enum whose every text starts with one").arg(id));
+        }
+    }
+
+    void parseFaceplate(const QJsonValue &value, RegisterMap &map)
+    {
+        const QString where = QStringLiteral("faceplate");
+        if (!value.isObject()) {
+            fail(QString(), tr("'faceplate' must be an object"));
+            return;
+        }
+        const QJsonObject o = value.toObject();
+        checkKeys(o, {"kind", "primary", "primaryLabel", "values", "modes", "modeOtherwise", "modeNote", "program"}, where);
+        FaceplateSpec spec;
+        const QString kind = requireString(o, "kind", where);
+        if (kind == QLatin1String("process_controller"))
+            spec.kind = FaceplateSpec::Kind::ProcessController;
+        else if (kind != QLatin1String("power_unit") && !kind.isEmpty())
+            fail(where, tr("unknown kind '%1' (expected power_unit or process_controller)").arg(kind));
+        spec.primary = optionalString(o, "primary", where);
+        spec.primaryLabel = optionalString(o, "primaryLabel", where);
+        if (const RegisterEntry *e = map.entry(spec.primary); e && spec.primaryLabel.isEmpty())
+            spec.primaryLabel = e->label;
+        if (!spec.primary.isEmpty())
+            checkFaceplateEntry(map, spec.primary, where + QStringLiteral(".primary"), false);
+        const QJsonValue values = o.value("values");
+        if (!values.isArray() || values.toArray().isEmpty()) {
+            fail(where, tr("'values' must be a non-empty array"));
+        } else {
+            int index = 0;
+            for (const QJsonValue &v : values.toArray()) {
+                const QString valueWhere = QStringLiteral("%1.values[%2]").arg(where).arg(index++);
+                const QJsonObject vo = v.toObject();
+                checkKeys(vo, {"entry", "label", "scale", "min", "max", "from"}, valueWhere);
+                FaceplateValue fv;
+                fv.entry = requireString(vo, "entry", valueWhere);
+                fv.label = optionalString(vo, "label", valueWhere);
+                if (!fv.entry.isEmpty())
+                    checkFaceplateEntry(map, fv.entry, valueWhere, false);
+                const QString scale = optionalString(vo, "scale", valueWhere);
+                if (scale == QLatin1String("range")) {
+                    fv.scale = FaceplateValue::Scale::Range;
+                    fv.barMin = optionalNumber(vo, "min", valueWhere).value_or(0);
+                    fv.barMax = optionalNumber(vo, "max", valueWhere).value_or(100);
+                    if (!(fv.barMax > fv.barMin))
+                        fail(valueWhere, tr("'max' must be above 'min'"));
+                } else if (scale == QLatin1String("nominal") || scale == QLatin1String("limit")) {
+                    fv.scale = scale == QLatin1String("nominal") ? FaceplateValue::Scale::Nominal
+                                                                  : FaceplateValue::Scale::Limit;
+                    fv.scaleFrom = stringList(vo, "from", valueWhere);
+                    if (fv.scaleFrom.isEmpty() || fv.scaleFrom.size() > 2)
+                        fail(valueWhere, tr("'from' names one entry, or two whose product is the scale"));
+                    for (const QString &id : std::as_const(fv.scaleFrom))
+                        checkFaceplateEntry(map, id, valueWhere, true);
+                } else if (!scale.isEmpty()) {
+                    fail(valueWhere, tr("unknown scale '%1' (expected range, nominal or limit)").arg(scale));
+                }
+                if (fv.scale != FaceplateValue::Scale::Range && (vo.contains("min") || vo.contains("max")))
+                    fail(valueWhere, tr("'min' and 'max' are only for the scale 'range'"));
+                if (fv.scale == FaceplateValue::Scale::None || fv.scale == FaceplateValue::Scale::Range) {
+                    if (vo.contains("from"))
+                        fail(valueWhere, tr("'from' is only for the scales 'nominal' and 'limit'"));
+                }
+                spec.values << fv;
+            }
+        }
+        spec.modes = faceplateStates(map, o, "modes", where);
+        spec.modeOtherwise = optionalString(o, "modeOtherwise", where);
+        spec.modeNote = optionalString(o, "modeNote", where);
+        if (o.contains("program")) {
+            const QString programWhere = where + QStringLiteral(".program");
+            const QJsonObject p = o.value("program").toObject();
+            checkKeys(p, {"segment", "segments", "timeLeft", "states", "otherwise"}, programWhere);
+            spec.programSegment = requireString(p, "segment", programWhere);
+            spec.programSegments = requireString(p, "segments", programWhere);
+            spec.programTimeLeft = requireString(p, "timeLeft", programWhere);
+            for (const QString &id : {spec.programSegment, spec.programSegments, spec.programTimeLeft}) {
+                if (!id.isEmpty())
+                    checkFaceplateEntry(map, id, programWhere, false);
+            }
+            spec.programStates = faceplateStates(map, p, "states", programWhere);
+            spec.programOtherwise = optionalString(p, "otherwise", programWhere);
+        }
+        map.faceplate = spec;
     }
 
     void parseProtocol(const QJsonValue &value, ProtocolInfo &p)

@@ -56,6 +56,18 @@ constexpr std::array<std::pair<WordOrder, const char *>, 4> wordOrderNames{{
 
 } // namespace
 
+std::optional<double> leadingNumber(const QString &text)
+{
+    qsizetype end = 0;
+    while (end < text.size() && (text.at(end).isDigit() || (end > 0 && text.at(end) == QLatin1Char('.'))))
+        ++end;
+    if (end == 0)
+        return std::nullopt;
+    bool ok = false;
+    const double value = text.left(end).toDouble(&ok);
+    return ok ? std::optional<double>(value) : std::nullopt;
+}
+
 QString formatAddress(quint16 address)
 {
     return QLatin1String("0x") + QString::number(address, 16).toUpper().rightJustified(4, QLatin1Char('0'));

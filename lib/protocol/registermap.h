@@ -33,6 +33,8 @@ QString storageName(Storage storage);
 QString bitKindName(BitKind kind);
 std::optional<BitKind> bitKindFromName(const QString &name);
 QString wordOrderName(WordOrder order);
+// The number an enum text starts with ("100 A" -> 100), for nominal values kept as enums.
+std::optional<double> leadingNumber(const QString &text);
 std::optional<WordOrder> wordOrderFromName(const QString &name);
 
 // How many digits a number is shown with: a fixed number of decimals (setpoints,
@@ -184,6 +186,51 @@ struct SimulationSpec
     QString binding(const QString &role) const { return bindings.value(role).value(0); }
 };
 
+// A device's faceplate on the overview, laid out by kind: a power unit shows its values
+// with bars against their nominal values or limits, a process controller its process
+// value large, then setpoint and output, its mode and, where it has one, its program.
+struct FaceplateValue
+{
+    // Where a bar's full scale comes from: fixed bounds, or the value of other entries
+    // (their product where there are two: nominal voltage times rated current).
+    enum class Scale { None, Range, Nominal, Limit };
+    QString entry;
+    QString label;   // short, for the faceplate ("Voltage"); the entry's label when the map has none
+    Scale scale = Scale::None;
+    double barMin = 0;
+    double barMax = 100;
+    QStringList scaleFrom;
+};
+
+// One state a faceplate line can name: the text when "when" (a bool entry or "entry.bit")
+// is on; the first one on wins.
+struct FaceplateState
+{
+    QString when;
+    QString text;
+    bool progress = true;   // a program's segment and time left mean something in this state
+};
+
+struct FaceplateSpec
+{
+    enum class Kind { PowerUnit, ProcessController };
+    Kind kind = Kind::PowerUnit;
+    QString primary;                 // shown large: the process value
+    QString primaryLabel;
+    QList<FaceplateValue> values;
+    QList<FaceplateState> modes;
+    QString modeOtherwise;           // when none of the modes is on (empty: no mode line)
+    QString modeNote;                // what the mode cannot tell (a tooltip)
+    // The program of a programmer: segment n of m, the time left in it, its state.
+    QString programSegment;
+    QString programSegments;
+    QString programTimeLeft;
+    QList<FaceplateState> programStates;
+    QString programOtherwise;
+
+    bool hasProgram() const { return !programSegment.isEmpty(); }
+};
+
 class RegisterMap
 {
 public:
@@ -201,6 +248,7 @@ public:
     std::optional<ErrorValueTexts> errorValues;
     std::optional<SimulationSpec> simulation;
     QStringList overview;   // key values of the overview tile
+    FaceplateSpec faceplate;
     QStringList identity;   // entries that identify the device (name, version, serial...)
     // Units set on the device: id to what decides the unit, for the entries that name it.
     QMap<QString, QString> configuredUnits;

@@ -137,6 +137,7 @@ private slots:
     void scanDoesNotListTheAddressEveryDeviceAnswers();
     void everythingFromTheKeyboard();
     void trendOpensWithTheKeyValues();
+    void faceplatesReadAtAGlance();
     void textFieldsKeepTheirEditingKeys();
     void mnemonicsAreUnique_data();
     void mnemonicsAreUnique();
@@ -206,7 +207,7 @@ void tst_Hmi::connectScanAndSeeLiveValuesMove()
         QVERIFY2(window.devicePage(family, quint8(address)), qPrintable(family));
 
     // The overview tiles show key values while the overview is on screen.
-    QTRY_VERIFY_WITH_TIMEOUT(window.deviceTile("quantrol", 3)->valuesText().contains("Controller, setpoint: 120"), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(window.deviceTile("quantrol", 3)->valuesText().contains("Setpoint: 120"), 20000);
     DevicePage *page = window.devicePage("quantrol", 3);
     window.showDevice(page);
     LiveValuesView *view = page->valuesView();
@@ -299,8 +300,8 @@ void tst_Hmi::germanNumbersInAndOut()
     QTRY_COMPARE_WITH_TIMEOUT(view->displayedValue("input_setpoint"), QString("36,5"), 20000);
     DeviceTile *tile = window->deviceTile("ipc300", 1);
     window->showOverview();
-    QTRY_VERIFY_WITH_TIMEOUT(tile->valuesText().contains(QRegularExpression("Load voltage: \\d+,\\d V")), 20000);
-    QVERIFY2(tile->valuesText().contains(QRegularExpression("Load current: \\d+,\\d+ A")), qPrintable(tile->valuesText()));
+    QTRY_VERIFY_WITH_TIMEOUT(tile->valuesText().contains(QRegularExpression("Voltage: \\d+,\\d V")), 20000);
+    QVERIFY2(tile->valuesText().contains(QRegularExpression("Current: \\d+,\\d+ A")), qPrintable(tile->valuesText()));
 }
 
 void tst_Hmi::readOnlyDisablesControlsAndSendsNothing()
@@ -508,6 +509,10 @@ void tst_Hmi::pulledLineShowsEverywhere()
     for (const auto &[family, address] : devices) {
         DeviceTile *tile = window->deviceTile(family, address);
         QTRY_VERIFY_WITH_TIMEOUT(tile->stateText().startsWith("Line lost since"), 10000);
+        // Said by the faceplate in its word (and shape and frame), the mode no longer known.
+        QCOMPARE(tile->summary(), DeviceTile::Summary::LineLost);
+        QCOMPARE(tile->summaryText(), QString("Line lost"));
+        QCOMPARE(tile->modeText(), QString("unknown"));
     }
     qInfo("line pulled: both tiles show it after %lld ms", pulled.elapsed());
     for (const auto &[family, address] : devices) {
@@ -808,7 +813,9 @@ void tst_Hmi::staleAlarmsAreNotShownAsLive()
     window->bus()->setPolling(false);
     QTRY_COMPARE_WITH_TIMEOUT(tile->alarmText(), QString("0 active alarm(s) (stale)"), 30000);
     QVERIFY(tile->valuesText().contains("(stale)"));
-    QVERIFY(!tile->styleSheet().contains("#e3f4e3"));   // not the all-clear green
+    // Not the all-clear: neither its word nor its colour.
+    QCOMPARE(tile->summary(), DeviceTile::Summary::Uncertain);
+    QVERIFY(tile->stateRole() != Theme::Role::TileOk);
     window->showDevice(page);
     page->tabs()->setCurrentWidget(page->ledGrid());
     auto *summary = page->ledGrid()->findChild<QLabel *>("activeAlarms");
@@ -818,7 +825,8 @@ void tst_Hmi::staleAlarmsAreNotShownAsLive()
     QTRY_COMPARE_WITH_TIMEOUT(summary->text(), QString("0 active alarm(s)"), 20000);
     window->showOverview();
     QTRY_COMPARE_WITH_TIMEOUT(tile->alarmText(), QString("0 active alarm(s)"), 20000);
-    QVERIFY(tile->styleSheet().contains("#e3f4e3"));
+    QCOMPARE(tile->summary(), DeviceTile::Summary::Normal);
+    QCOMPARE(tile->stateRole(), Theme::Role::TileOk);
 }
 
 namespace {
@@ -857,8 +865,8 @@ void tst_Hmi::wrongFamilyIsRefused()
     window->showOverview();
     DeviceTile *tile = window->deviceTile("quantrol", 4);
     QTRY_VERIFY_WITH_TIMEOUT(tile->stateText().startsWith("Wrong device"), 20000);
-    QVERIFY2(tile->findChild<QLabel *>("deviceState")->toolTip().contains("dtron300"),
-             qPrintable(tile->findChild<QLabel *>("deviceState")->toolTip()));
+    QCOMPARE(tile->summary(), DeviceTile::Summary::WrongDevice);
+    QVERIFY2(tile->toolTip().contains("dtron300"), qPrintable(tile->toolTip()));
     window->showDevice("quantrol", 4);
     DevicePage *page = window->devicePage("quantrol", 4);
     auto *banner = page->findChild<QLabel *>("identityBanner");
@@ -898,7 +906,7 @@ void tst_Hmi::swappedDeviceIsCheckedAgain()
     window->showOverview();
     DeviceTile *tile = window->deviceTile("quantrol", 3);
     QTRY_COMPARE_WITH_TIMEOUT(tile->stateText(), QString("Online"), 20000);
-    QTRY_VERIFY_WITH_TIMEOUT(tile->valuesText().contains("Controller, setpoint:"), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(tile->valuesText().contains("Setpoint:"), 20000);
 
     // The Quantrol is unplugged; a dTRON set to the same address takes its place.
     m_sim.line().setFault(3, Fault{FaultMode::Dead});
@@ -919,7 +927,7 @@ void tst_Hmi::swappedDeviceIsCheckedAgain()
     m_sim.line().addDevice(families().family("quantrol"), 3);
     m_sim.line().setFault(3, Fault{});
     QTRY_COMPARE_WITH_TIMEOUT(tile->stateText(), QString("Online"), 30000);
-    QTRY_VERIFY_WITH_TIMEOUT(tile->valuesText().contains("Controller, setpoint:"), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(tile->valuesText().contains("Setpoint:"), 20000);
     QVERIFY(hasRecord(*window, "quantrol@3", "restored"));
     // What the dTRON lacked (exception 02) is read from the Quantrol again.
     QTRY_VERIFY_WITH_TIMEOUT(window->bus()->entryState(id, "actual_value_filtered")->isCurrent(), 20000);
@@ -1061,6 +1069,66 @@ void tst_Hmi::trendOpensWithTheKeyValues()
     QCOMPARE(trend->axisTitles().size(), 3);
     trend->select("load_current", true);
     QVERIFY(trend->axisTitles().contains("A"));
+}
+
+void tst_Hmi::faceplatesReadAtAGlance()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    QVERIFY(window->addDevice(families().family("tya200"), 2));
+    QVERIFY(window->addDevice(families().family("dtron300"), 4));
+    window->showOverview();
+    DeviceTile *ipc = window->deviceTile("ipc300", 1);
+    DeviceTile *tya = window->deviceTile("tya200", 2);
+    DeviceTile *dtron = window->deviceTile("dtron300", 4);
+    for (DeviceTile *tile : {ipc, tya, dtron})
+        QTRY_VERIFY_WITH_TIMEOUT(tile->summary() == DeviceTile::Summary::Normal, 20000);
+
+    // A power unit: every value with its unit and a bar against its nominal value or the
+    // limit set on the device (the TYA's power against nominal voltage times rated current).
+    QTRY_COMPARE_WITH_TIMEOUT(ipc->barsDrawn(), 4, 20000);
+    QTRY_COMPARE_WITH_TIMEOUT(tya->barsDrawn(), 4, 20000);
+    QVERIFY2(ipc->valuesText().contains(QRegularExpression("Voltage: \\d+[.,]\\d V")), qPrintable(ipc->valuesText()));
+    QVERIFY(ipc->toolTip().contains("(nominal)"));
+    QVERIFY(ipc->toolTip().contains("(limit set on the device)"));
+    QCOMPARE(ipc->modeText(), QString("Automatic"));
+    // A process controller: the process value first (drawn large), mode and program.
+    QTRY_VERIFY_WITH_TIMEOUT(dtron->valuesText().startsWith("Process value: ")
+                                     && !dtron->valuesText().contains(ValueText::noValue()), 20000);
+    QCOMPARE(dtron->barsDrawn(), 1);
+    QCOMPARE(dtron->modeText(), QString("Automatic"));
+    // A stopped program has no segment or time left to show; a running one has.
+    QCOMPARE(dtron->programText(), QString("Stopped"));
+
+    // What the devices report shows on the faceplates: manual mode, an alarm named, a warning.
+    SimulatedDevice *ipcSim = m_sim.line().device(1);
+    SimulatedDevice *dtronSim = m_sim.line().device(4);
+    QVERIFY(ipcSim->setFlag("manual_mode_active", true));
+    QVERIFY(dtronSim->setFlag("controller_status.manual_mode", true));
+    QVERIFY(dtronSim->setFlag("program_status.program_stop", false));
+    QTRY_VERIFY_WITH_TIMEOUT(dtron->programText().startsWith("Running, segment 1 of 8, "), 20000);
+    QTRY_COMPARE_WITH_TIMEOUT(ipc->modeText(), QString("Manual"), 20000);
+    QTRY_COMPARE_WITH_TIMEOUT(dtron->modeText(), QString("Manual"), 20000);
+    QVERIFY(ipcSim->setFlag("malfunction_signal_1.fuse_failure", true));
+    QTRY_COMPARE_WITH_TIMEOUT(ipc->summary(), DeviceTile::Summary::Alarm, 20000);
+    QCOMPARE(ipc->summaryText(), QString("Alarm"));
+    QVERIFY2(ipc->alarmNames().contains("Fuse failure"), qPrintable(ipc->alarmNames()));
+    QVERIFY(dtronSim->setFlag("program_status.tolerance_limit", true));
+    QTRY_COMPARE_WITH_TIMEOUT(dtron->summary(), DeviceTile::Summary::Warning, 20000);
+    QVERIFY2(dtron->alarmNames().contains("Tolerance limit signal"), qPrintable(dtron->alarmNames()));
+    QVERIFY(ipcSim->setFlag("malfunction_signal_1.fuse_failure", false));
+    QVERIFY(ipcSim->setFlag("manual_mode_active", false));
+    QVERIFY(dtronSim->setFlag("controller_status.manual_mode", false));
+    QVERIFY(dtronSim->setFlag("program_status.tolerance_limit", false));
+    QVERIFY(dtronSim->setFlag("program_status.program_stop", true));
+    QTRY_COMPARE_WITH_TIMEOUT(ipc->summary(), DeviceTile::Summary::Normal, 20000);
+    QTRY_COMPARE_WITH_TIMEOUT(dtron->summary(), DeviceTile::Summary::Normal, 20000);
+    QCOMPARE(ipc->alarmNames(), QString());
+
+    // A click opens the device.
+    QVERIFY(!window->devicePage("dtron300", 4)->isVisible());
+    QTest::mouseClick(dtron, Qt::LeftButton);
+    QTRY_VERIFY(window->devicePage("dtron300", 4)->isVisible());
 }
 
 void tst_Hmi::textFieldsKeepTheirEditingKeys()

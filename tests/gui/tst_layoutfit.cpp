@@ -8,6 +8,7 @@
 #include "devicetile.h"
 #include "elidedlabel.h"
 #include "mainwindow.h"
+#include "overviewpage.h"
 #include "models/livevaluesmodel.h"
 #include "protocol/translations.h"
 #include "testpeers.h"
@@ -337,6 +338,7 @@ private slots:
     void checkerFindsCutTexts();
     void everyPageFits_data();
     void everyPageFits();
+    void thirtyOneFaceplatesFitAFullHdScreen();
 
 private:
     QTemporaryDir m_dir;
@@ -531,3 +533,50 @@ void tst_LayoutFit::everyPageFits()
 
 QTEST_MAIN(tst_LayoutFit)
 #include "tst_layoutfit.moc"
+
+// A full line (31 devices) on the overview of a 1920x1080 screen, less a title bar: every
+// faceplate whole on screen, no scroll bar, each at least as wide as it needs.
+void tst_LayoutFit::thirtyOneFaceplatesFitAFullHdScreen()
+{
+    MainWindow::Options options;
+    options.settingsFile = m_dir.filePath(QStringLiteral("fit-31.ini"));
+    options.logFolder = m_dir.filePath(QStringLiteral("logs-31"));
+    MainWindow window(families(), options);
+    const QStringList order{"ipc300", "tya200", "quantrol", "dtron300"};
+    for (int address = 1; address <= 31; ++address)
+        QVERIFY(window.addDevice(families().family(order.at(address % 4)), quint8(address)));
+    window.resize(1920, 1080 - 40);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.showOverview();
+    auto *overview = window.findChild<OverviewPage *>(QStringLiteral("overview"));
+    QVERIFY(overview);
+    QTest::qWait(50);
+    QCoreApplication::processEvents();
+    QWidget *viewport = overview->scrollArea()->viewport();
+    qInfo("31 faceplates: %d columns, %s, viewport %dx%d", overview->columns(),
+          overview->density() == DeviceTile::Density::Compact ? "compact" : "comfortable", viewport->width(),
+          viewport->height());
+    QVERIFY(!overview->scrollArea()->verticalScrollBar()->isVisible());
+    for (int address = 1; address <= 31; ++address) {
+        DeviceTile *tile = window.deviceTile(order.at(address % 4), quint8(address));
+        QVERIFY(tile && tile->isVisible());
+        const QRect onScreen(tile->mapTo(viewport, QPoint(0, 0)), tile->size());
+        QVERIFY2(viewport->rect().contains(onScreen),
+                 qPrintable(QStringLiteral("%1 at %2,%3 %4x%5").arg(tile->objectName()).arg(onScreen.x()).arg(onScreen.y())
+                                    .arg(onScreen.width()).arg(onScreen.height())));
+        QVERIFY(tile->width() >= tile->minimumSizeHint().width());
+        QVERIFY(tile->height() >= tile->sizeHint().height());
+    }
+    QCOMPARE(overview->density(), DeviceTile::Density::Compact);
+    // Four devices keep the comfortable faceplates.
+    options.settingsFile = m_dir.filePath(QStringLiteral("fit-4.ini"));
+    MainWindow few(families(), options);
+    for (int address = 1; address <= 4; ++address)
+        QVERIFY(few.addDevice(families().family(order.at(address % 4)), quint8(address)));
+    few.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&few));
+    few.showOverview();
+    auto *fewOverview = few.findChild<OverviewPage *>(QStringLiteral("overview"));
+    QTRY_COMPARE(fewOverview->density(), DeviceTile::Density::Comfortable);
+}

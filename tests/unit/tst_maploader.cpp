@@ -96,6 +96,7 @@ private slots:
     void refusesAKeyGivenTwice();
     void precisionFromTheMapOrTheUnit();
     void builtinMapsLoad();
+    void faceplateFromTheMap();
     void userFolderReplacesBuiltinAndReportsBrokenFiles();
     void twoUserFilesOfOneFamilyAreRefused();
     void overlapsAreReportedOncePerGroup();
@@ -305,6 +306,40 @@ void tst_MapLoader::refusesBadMap_data()
                                       << "test.json" << "'shortName' must be 1 to 24 characters";
     QTest::newRow("short name as a number") << Mutation([](QJsonObject &m) { m["shortName"] = 300; })
                                             << "test.json" << "'shortName' must be a string, not 300";
+    auto faceplate = [](const QJsonObject &face) {
+        return Mutation([face](QJsonObject &m) { m["faceplate"] = face; });
+    };
+    const QJsonArray oneValue{QJsonObject{{"entry", "value_a"}}};
+    QTest::newRow("faceplate of an unknown kind") << faceplate({{"kind", "meter"}, {"values", oneValue}})
+                                                  << "faceplate" << "unknown kind 'meter' (expected power_unit or process_controller)";
+    QTest::newRow("faceplate without values") << faceplate({{"kind", "power_unit"}, {"values", QJsonArray()}})
+                                              << "faceplate" << "'values' must be a non-empty array";
+    QTest::newRow("faceplate value of no entry")
+            << faceplate({{"kind", "power_unit"}, {"values", QJsonArray{QJsonObject{{"entry", "nope"}}}}})
+            << "faceplate.values[0]" << "'nope' is not a readable entry";
+    QTest::newRow("faceplate scale from an enum of words")
+            << faceplate({{"kind", "power_unit"},
+                          {"values", QJsonArray{QJsonObject{{"entry", "value_a"}, {"scale", "nominal"}, {"from", QJsonArray{"mode"}}}}}})
+            << "faceplate.values[0]" << "the scale 'mode' must be a number, or an enum whose every text starts with one";
+    QTest::newRow("faceplate range upside down")
+            << faceplate({{"kind", "power_unit"},
+                          {"values", QJsonArray{QJsonObject{{"entry", "value_a"}, {"scale", "range"}, {"min", 10}, {"max", 0}}}}})
+            << "faceplate.values[0]" << "'max' must be above 'min'";
+    QTest::newRow("faceplate bounds without a range")
+            << faceplate({{"kind", "power_unit"}, {"values", QJsonArray{QJsonObject{{"entry", "value_a"}, {"max", 100}}}}})
+            << "faceplate.values[0]" << "'min' and 'max' are only for the scale 'range'";
+    QTest::newRow("faceplate mode on a whole bit field")
+            << faceplate({{"kind", "process_controller"}, {"values", oneValue},
+                          {"modes", QJsonArray{QJsonObject{{"when", "alarms"}, {"text", "Manual"}}}}})
+            << "faceplate.modes[0]" << "'alarms' must be a readable bool entry or a single bit of a readable bit field";
+    QTest::newRow("faceplate mode on an unknown bit")
+            << faceplate({{"kind", "process_controller"}, {"values", oneValue},
+                          {"modes", QJsonArray{QJsonObject{{"when", "alarms.middle"}, {"text", "Manual"}}}}})
+            << "faceplate.modes[0]" << "refers to unknown bit 'middle' of 'alarms'";
+    QTest::newRow("faceplate program without its time")
+            << faceplate({{"kind", "process_controller"}, {"values", oneValue},
+                          {"program", QJsonObject{{"segment", "value_a"}, {"segments", "value_a"}}}})
+            << "faceplate.program" << "timeLeft";
 }
 
 void tst_MapLoader::precisionFromTheMapOrTheUnit()
@@ -350,6 +385,39 @@ void tst_MapLoader::refusesBadMap()
     QVERIFY2(message.startsWith("test.json: "), qPrintable(message));
     QVERIFY2(message.contains(entry), qPrintable(message));
     QVERIFY2(message.contains(problem), qPrintable(message));
+}
+
+void tst_MapLoader::faceplateFromTheMap()
+{
+    // Without a faceplate, the map's overview values are its rows, with their labels.
+    QJsonObject plain = validMap();
+    plain["overview"] = QJsonArray{"value_a"};
+    const MapLoadResult r = MapLoader::loadData(QJsonDocument(plain).toJson(), "test.json");
+    QVERIFY2(r.ok(), qPrintable(r.errors.join('\n')));
+    QCOMPARE(r.map->faceplate.values.size(), 1);
+    QCOMPARE(r.map->faceplate.values[0].label, QString("Value A"));
+    QCOMPARE(r.map->faceplate.values[0].scale, FaceplateValue::Scale::None);
+
+    // The built-in maps: bars against nominal values and limits, modes, the dTRON's program.
+    const FamilyRegistry registry = FamilyRegistry::load({}, true);
+    const FaceplateSpec &ipc = registry.family("ipc300")->faceplate;
+    QCOMPARE(ipc.kind, FaceplateSpec::Kind::PowerUnit);
+    QCOMPARE(ipc.values.size(), 4);
+    QCOMPARE(ipc.values[2].entry, QString("load_current"));
+    QCOMPARE(ipc.values[2].scale, FaceplateValue::Scale::Nominal);
+    QCOMPARE(ipc.values[2].scaleFrom, QStringList{"nominal_current"});
+    const FaceplateSpec &tya = registry.family("tya200")->faceplate;
+    QCOMPARE(tya.values[3].scaleFrom, QStringList({"nominal_voltage", "rated_current"}));
+    const FaceplateSpec &dtron = registry.family("dtron300")->faceplate;
+    QCOMPARE(dtron.kind, FaceplateSpec::Kind::ProcessController);
+    QCOMPARE(dtron.primary, QString("filtered_process_value"));
+    QVERIFY(dtron.hasProgram());
+    QCOMPARE(dtron.modes.size(), 2);
+    QVERIFY(!registry.family("quantrol")->faceplate.hasProgram());
+    // Nominal values kept as enums count by their number.
+    QCOMPARE(leadingNumber("100 A"), std::optional<double>(100));
+    QCOMPARE(leadingNumber("2.5 kW"), std::optional<double>(2.5));
+    QCOMPARE(leadingNumber("customer-specific"), std::nullopt);
 }
 
 void tst_MapLoader::refusesMalformedJson()
