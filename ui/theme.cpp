@@ -3,7 +3,10 @@
 #include <QApplication>
 #include <QPalette>
 #include <QStyle>
+#include <QPainter>
+#include <QProxyStyle>
 #include <QStyleFactory>
+#include <QStyleOption>
 #include <QVariant>
 #include <QWidget>
 
@@ -63,6 +66,28 @@ QPalette darkPalette()
     return p;
 }
 
+// Fusion outlines a check box in the window colour made darker: on a dark Base the box
+// that is not checked all but vanishes, on a light one it is faint (1.65:1). In the light
+// and dark themes it gets an edge of its own, 3:1 or more against the window.
+class IndicatorEdgeStyle : public QProxyStyle
+{
+public:
+    using QProxyStyle::QProxyStyle;
+
+    void drawPrimitive(PrimitiveElement element, const QStyleOption *option, QPainter *painter,
+                       const QWidget *widget) const override
+    {
+        QProxyStyle::drawPrimitive(element, option, painter, widget);
+        if (element != PE_IndicatorCheckBox && element != PE_IndicatorItemViewItemCheck)
+            return;
+        painter->save();
+        painter->setPen(Theme::isDark() ? QColor(150, 150, 150) : QColor(118, 118, 118));
+        painter->setBrush(Qt::NoBrush);
+        painter->drawRect(QRectF(option->rect).adjusted(0.5, 0.5, -1.5, -1.5));
+        painter->restore();
+    }
+};
+
 QPalette highContrastPalette()
 {
     QPalette p;
@@ -112,7 +137,8 @@ void Theme::apply(Kind kind)
         return;
     }
     // Fusion draws every widget from the palette, so the palette is the whole theme.
-    QApplication::setStyle(QStyleFactory::create(QStringLiteral("Fusion")));
+    QStyle *fusion = QStyleFactory::create(QStringLiteral("Fusion"));
+    QApplication::setStyle(kind == Kind::HighContrast ? fusion : new IndicatorEdgeStyle(fusion));
     switch (kind) {
     case Kind::Light: {
         QPalette light = QApplication::style()->standardPalette();

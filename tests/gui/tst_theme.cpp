@@ -15,6 +15,8 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
+#include <QStyleOptionButton>
 #include <QImage>
 #include <QLabel>
 #include <QPalette>
@@ -34,6 +36,8 @@ private slots:
     void namesRoundTrip();
     void windowKeepsAndSwitchesItsTheme();
     void colouredTextFollowsTheTheme();
+    void uncheckedBoxesAreVisible_data();
+    void uncheckedBoxesAreVisible();
 };
 
 void tst_Theme::textIsReadableInEveryTheme_data()
@@ -161,4 +165,35 @@ void tst_Theme::colouredTextFollowsTheTheme()
 }
 
 QTEST_MAIN(tst_Theme)
+void tst_Theme::uncheckedBoxesAreVisible_data()
+{
+    QTest::addColumn<int>("kind");
+    QTest::newRow("light") << int(Theme::Kind::Light);
+    QTest::newRow("dark") << int(Theme::Kind::Dark);
+    QTest::newRow("high contrast") << int(Theme::Kind::HighContrast);
+}
+
+// An unchecked box must stand out from the field it is on (3:1, as for any control's
+// edge): Fusion's dark outline vanished on the dark theme's Base.
+void tst_Theme::uncheckedBoxesAreVisible()
+{
+    QFETCH(int, kind);
+    Theme::apply(Theme::Kind(kind));
+    QCheckBox box(QStringLiteral("Load voltage"));
+    box.resize(box.sizeHint());
+    box.ensurePolished();
+    QStyleOptionButton option;
+    option.initFrom(&box);
+    const QRect indicator = box.style()->subElementRect(QStyle::SE_CheckBoxIndicator, &option, &box);
+    const QImage image = box.grab().toImage();
+    const QColor window = box.palette().color(QPalette::Window);
+    double best = 0;
+    for (int y = indicator.top(); y <= indicator.bottom(); ++y) {
+        for (int x = indicator.left(); x <= indicator.right(); ++x)
+            best = std::max(best, Theme::contrast(image.pixelColor(x, y), window));
+    }
+    QVERIFY2(best >= 3.0, qPrintable(QStringLiteral("box edge at most %1:1 against the window").arg(best, 0, 'f', 2)));
+    Theme::apply(Theme::Kind::Light);
+}
+
 #include "tst_theme.moc"
