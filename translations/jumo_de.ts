@@ -3191,18 +3191,18 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+7"/>
-        <location line="+137"/>
+        <location line="+136"/>
         <source>Shows the changes with the device&apos;s values first; nothing is written before you confirm.</source>
         <translation>Zeigt zuerst die Änderungen mit den Werten des Geräts; geschrieben wird erst nach Ihrer Bestätigung.</translation>
     </message>
     <message>
-        <location line="-136"/>
-        <location line="+144"/>
+        <location line="-135"/>
+        <location line="+143"/>
         <source>Fills in the values of a parameter backup file that differ from the device, to check before writing them.</source>
         <translation>Trägt die Werte einer Parametersicherung ein, die vom Gerät abweichen, zum Prüfen vor dem Schreiben.</translation>
     </message>
     <message>
-        <location line="-142"/>
+        <location line="-141"/>
         <source>Drops every change that has not been written.</source>
         <translation>Verwirft jede Änderung, die noch nicht geschrieben ist.</translation>
     </message>
@@ -3213,12 +3213,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+5"/>
-        <location line="+356"/>
+        <location line="+367"/>
         <source>stopped before its turn</source>
         <translation>angehalten, bevor es an der Reihe war</translation>
     </message>
     <message>
-        <location line="-351"/>
+        <location line="-362"/>
         <source>Load parameter backup</source>
         <translation>Parametersicherung laden</translation>
     </message>
@@ -3252,17 +3252,36 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+3"/>
-        <location line="+133"/>
+        <location line="+141"/>
         <source>Read-only mode: nothing is written to the devices.</source>
         <translation>Nur-Lese-Modus: Es wird nichts auf die Geräte geschrieben.</translation>
     </message>
     <message>
-        <location line="-131"/>
-        <source>The device does not answer (%1): the changes can be written when it does.</source>
-        <translation>Das Gerät antwortet nicht (%1): die Änderungen können geschrieben werden, sobald es antwortet.</translation>
+        <location line="-139"/>
+        <source>Not now: %1. The changes can be written once the device answers.</source>
+        <translation>Jetzt nicht: %1. Die Änderungen können geschrieben werden, sobald das Gerät antwortet.</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>Not loaded: %1. A backup is compared with the device, which must answer.</source>
+        <translation>Nicht geladen: %1. Eine Sicherung wird mit dem Gerät verglichen, das dafür antworten muss.</translation>
     </message>
     <message numerus="yes">
-        <location line="+9"/>
+        <location line="+13"/>
+        <source>and %n more</source>
+        <translation>
+            <numerusform>und %n weiterer</numerusform>
+            <numerusform>und %n weitere</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+75"/>
+        <location line="+34"/>
+        <source>Not written: %1. The changes stay and can be written once the device answers.</source>
+        <translation>Nicht geschrieben: %1. Die Änderungen bleiben und können geschrieben werden, sobald das Gerät antwortet.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="-183"/>
         <source>%n change(s) not written yet</source>
         <translation>
             <numerusform>%n Änderung noch nicht geschrieben</numerusform>
@@ -3295,29 +3314,29 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+10"/>
-        <location line="+90"/>
+        <location line="+99"/>
         <source>Wait until the read or write under way has ended.</source>
         <translation>Bitte warten, bis das laufende Lesen oder Schreiben beendet ist.</translation>
     </message>
     <message>
-        <location line="-83"/>
+        <location line="-92"/>
         <location line="+12"/>
-        <location line="+15"/>
+        <location line="+24"/>
         <source>Not loaded: %1</source>
         <translation>Nicht geladen: %1</translation>
     </message>
     <message>
-        <location line="-21"/>
+        <location line="-30"/>
         <source>Not loaded: %1: %2</source>
         <translation>Nicht geladen: %1: %2</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+17"/>
         <source>Reading the device&apos;s parameters to compare with %1...</source>
         <translation>Die Parameter des Geräts werden zum Vergleich mit %1 gelesen...</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>Not loaded: these could not be read from the device to compare: %1</source>
         <translation>Nicht geladen: diese konnten zum Vergleich nicht vom Gerät gelesen werden: %1</translation>
     </message>
@@ -3361,23 +3380,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+30"/>
         <source>Nothing to write: no parameter is changed.</source>
         <translation>Nichts zu schreiben: kein Parameter ist geändert.</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <location line="+35"/>
-        <source>Not written: the device does not answer (%1). The changes stay and can be written when it does.</source>
-        <translation>Nicht geschrieben: das Gerät antwortet nicht (%1). Die Änderungen bleiben und können geschrieben werden, sobald es antwortet.</translation>
-    </message>
-    <message>
-        <location line="-16"/>
+        <location line="+22"/>
         <source>%1 at address %2</source>
         <translation>%1 an Adresse %2</translation>
     </message>
     <message numerus="yes">
-        <location line="+45"/>
+        <location line="+44"/>
         <source>Writing %n change(s), each verified by reading it back...</source>
         <translation>
             <numerusform>%n Änderung wird geschrieben und durch Rücklesen geprüft...</numerusform>

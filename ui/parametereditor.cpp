@@ -331,8 +331,7 @@ void ParameterEditor::updateActions()
     if (m_readOnly)
         m_write->setToolTip(tr("Read-only mode: nothing is written to the devices."));
     else if (count > 0 && !deviceAnswers())
-        m_write->setToolTip(tr("The device does not answer (%1): the changes can be written when it does.")
-                                    .arg(notAnsweringText()));
+        m_write->setToolTip(tr("Not now: %1. The changes can be written once the device answers.").arg(notAnsweringText()));
     else
         m_write->setToolTip(tr("Shows the changes with the device's values first; nothing is written before you confirm."));
     m_discard->setEnabled(!m_readOnly && !busy && count > 0);
@@ -400,14 +399,23 @@ void ParameterEditor::loadBackup(const QString &path)
         return;
     }
     // Compared with the device as it is now, not with values that may be old.
+    if (!deviceAnswers()) {
+        showStatus(tr("Not loaded: %1. A backup is compared with the device, which must answer.").arg(notAnsweringText()),
+                   Theme::Role::Refused);
+        emit backupLoaded();
+        return;
+    }
     showStatus(tr("Reading the device's parameters to compare with %1...").arg(name));
     connect(m_transfer, &ParameterTransfer::readFinished, this,
             [this, file = *file, name](const ParameterSet &device, const QStringList &failed) {
                 updateActions();
                 const RegisterMap &map = m_model->map();
                 if (!failed.isEmpty()) {
+                    QStringList named = failed.mid(0, 5);
+                    if (failed.size() > named.size())
+                        named << tr("and %n more", nullptr, int(failed.size() - named.size()));
                     showStatus(tr("Not loaded: these could not be read from the device to compare: %1")
-                                       .arg(failed.join(QStringLiteral(", "))),
+                                       .arg(named.join(QStringLiteral(", "))),
                                Theme::Role::Refused);
                 } else if (const QString refused = file.incompatibility(map, device.softwareVersion); !refused.isEmpty()) {
                     showStatus(tr("Not loaded: %1").arg(refused), Theme::Role::Refused);
@@ -469,14 +477,18 @@ void ParameterEditor::requestWrite()
         showStatus(tr("Wait until the read or write under way has ended."), Theme::Role::Refused);
         return;
     }
+    // A value still being typed is part of what the person asks to write.
+    if (QWidget *field = m_tree->indexWidget(m_tree->currentIndex())) {
+        emit m_delegate->commitData(field);
+        emit m_delegate->closeEditor(field, QAbstractItemDelegate::NoHint);
+    }
     const QStringList ids = m_model->changedIds();
     if (ids.isEmpty()) {
         showStatus(tr("Nothing to write: no parameter is changed."));
         return;
     }
     if (!deviceAnswers()) {
-        showStatus(tr("Not written: the device does not answer (%1). The changes stay and can be written when it does.")
-                           .arg(notAnsweringText()),
+        showStatus(tr("Not written: %1. The changes stay and can be written once the device answers.").arg(notAnsweringText()),
                    Theme::Role::Refused);
         return;
     }
@@ -510,8 +522,7 @@ void ParameterEditor::writeChanges(ParameterWritePreview *preview)
     if (m_readOnly || m_transfer->isBusy())
         return;
     if (!deviceAnswers()) {
-        showStatus(tr("Not written: the device does not answer (%1). The changes stay and can be written when it does.")
-                           .arg(notAnsweringText()),
+        showStatus(tr("Not written: %1. The changes stay and can be written once the device answers.").arg(notAnsweringText()),
                    Theme::Role::Refused);
         return;
     }

@@ -129,8 +129,9 @@ QModelIndex treeCell(ParameterEditor *editor, const QString &id, int column)
 }
 
 // Types a new value into the tree's field for it, as a person does: the cell opened for
-// editing, the text typed, Enter. False when no field opened.
-bool typeNewValue(ParameterEditor *editor, const QString &id, const QString &text)
+// editing, the text typed, Enter (unless enter is false: the field stays open). False
+// when no field opened.
+bool typeNewValue(ParameterEditor *editor, const QString &id, const QString &text, bool enter = true)
 {
     QTreeView *tree = editor->tree();
     const QModelIndex cell = treeCell(editor, id, ParameterEditModel::NewValueColumn);
@@ -148,6 +149,8 @@ bool typeNewValue(ParameterEditor *editor, const QString &id, const QString &tex
         return false;
     input->selectAll();
     QTest::keyClicks(input, text);
+    if (!enter)
+        return true;
     QTest::keyClick(input, Qt::Key_Return);
     // The field goes once its value is taken.
     QElapsedTimer waited;
@@ -1320,6 +1323,13 @@ void tst_Hmi::parameterEditorWritesReviewedChanges()
     QCOMPARE(note->text().count("EEPROM"), 1);
     QVERIFY2(note->text().startsWith(QStringLiteral("All %1 parameter(s)").arg(model->entryIds().size())), qPrintable(note->text()));
 
+    // Ctrl+F reaches the search of the page shown, not that of the IPC 300's page behind it.
+    window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(window.get()));
+    window->devicePage("dtron300", 4)->tabs()->setCurrentIndex(0);
+    QTest::keyClick(window.get(), Qt::Key_F, Qt::ControlModifier);
+    QCOMPARE(window->devicePage("dtron300", 4)->tabs()->currentWidget(), editor);
+    QTRY_VERIFY(editor->searchField()->hasFocus());
     // The search finds by name, id or address; groups without a match go.
     QTreeView *tree = editor->tree();
     editor->searchField()->setText("switch-on delay");
@@ -1419,7 +1429,9 @@ void tst_Hmi::parameterEditorKeepsRefusedChanges()
     const auto disconnect = qScopeGuard([refusal] { QObject::disconnect(refusal); });
 
     QVERIFY(typeNewValue(editor, "ps2_dt", "12"));
-    QVERIFY(typeNewValue(editor, "ps2_rt", "250"));
+    // Still being typed when Write is asked for: part of the write.
+    QVERIFY(typeNewValue(editor, "ps2_rt", "250", false));
+    QCOMPARE(model->changedIds(), QStringList{"ps2_dt"});
     const int writesBefore = m_sim.writeFrames();
     QSignalSpy ended(editor, &ParameterEditor::writeEnded);
     editor->requestWrite();
@@ -1598,11 +1610,20 @@ void tst_Hmi::parameterEditorWaitsForAnOfflineDevice()
     QVERIFY(model->isChanged("ps2_tt"));
     auto *write = editor->findChild<QPushButton *>("writeChanges");
     QVERIFY(!write->isEnabled());
-    QVERIFY2(write->toolTip().contains("does not answer"), qPrintable(write->toolTip()));
+    QVERIFY2(write->toolTip().startsWith("Not now: Not answering since"), qPrintable(write->toolTip()));
     const int silentWrites = m_sim.writeFrames();
     editor->requestWrite();
     QVERIFY(!editor->preview());
-    QVERIFY2(editor->status().startsWith("Not written: the device does not answer"), qPrintable(editor->status()));
+    QVERIFY2(editor->status().startsWith("Not written: Not answering since"), qPrintable(editor->status()));
+    // Nor is a backup compared with a device that does not answer.
+    const QString backup = m_dir.filePath("dtron-offline.json");
+    {
+        QFile out(backup);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(R"({"format":"jumo-parameters","version":1,"family":"dtron300","values":{"ps2_tt":"70"}})");
+    }
+    editor->loadBackup(backup);
+    QVERIFY2(editor->status().startsWith("Not loaded: Not answering since"), qPrintable(editor->status()));
     QTest::qWait(300);
     QCOMPARE(m_sim.writeFrames(), silentWrites);
 
