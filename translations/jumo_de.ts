@@ -901,7 +901,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DevicePage</name>
     <message>
-        <location filename="../ui/devicepage.cpp" line="+26"/>
+        <location filename="../ui/devicepage.cpp" line="+29"/>
         <source>Read-only mode: values are shown, nothing is written to the device.</source>
         <translation>Nur-Lese-Modus: Werte werden angezeigt, es wird nichts auf das Gerät geschrieben.</translation>
     </message>
@@ -932,7 +932,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+14"/>
         <source>Program</source>
         <translation>Programm</translation>
     </message>
@@ -965,14 +965,14 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>%1 @ %2</translation>
     </message>
     <message>
-        <location line="+96"/>
-        <location line="+228"/>
+        <location line="+106"/>
+        <location line="+231"/>
         <location line="+205"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="-411"/>
+        <location line="-414"/>
         <source>Bar: %1 to %2 %3</source>
         <translation>Balken: %1 bis %2 %3</translation>
     </message>
@@ -1014,13 +1014,13 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+377"/>
+        <location line="+380"/>
         <source>Mode: %1</source>
         <translation>Betriebsart: %1</translation>
     </message>
     <message>
-        <location line="-375"/>
-        <location line="+380"/>
+        <location line="-378"/>
+        <location line="+383"/>
         <source>Program: %1</source>
         <translation>Programm: %1</translation>
     </message>
@@ -3061,6 +3061,547 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
 </context>
 <context>
+    <name>jumo::ParameterEditModel</name>
+    <message>
+        <location filename="../lib/models/parametereditmodel.cpp" line="+199"/>
+        <location line="+249"/>
+        <source>On</source>
+        <translation>Ein</translation>
+    </message>
+    <message>
+        <location line="-249"/>
+        <location line="+251"/>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <location line="-232"/>
+        <source>write-only</source>
+        <translation>nur schreibbar</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 (stale)</source>
+        <translation>%1 (veraltet)</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>Not written: %1</source>
+        <translation>Nicht geschrieben: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Writing...</source>
+        <translation>Wird geschrieben...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Confirmed: %1</source>
+        <translation>Bestätigt: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location filename="../ui/parametereditor.cpp" line="+167"/>
+        <source>Confirmed by read-back: %1</source>
+        <translation>Durch Rücklesen bestätigt: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Refused: %1</source>
+        <translation>Abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Unknown, check the device: %1</source>
+        <translation>Unbekannt, bitte am Gerät prüfen: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+16"/>
+        <source>%1 (%n changed)</source>
+        <translation>
+            <numerusform>%1 (%n geändert)</numerusform>
+            <numerusform>%1 (%n geändert)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>EEPROM</source>
+        <translation>EEPROM</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>RAM</source>
+        <translation>RAM</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1, register %2, %3</source>
+        <translation>%1, Register %2, %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Changed: %1 waits to be written</source>
+        <translation>Geändert: %1 wartet darauf, geschrieben zu werden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Precondition: %1</source>
+        <translation>Voraussetzung: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Status: %1</source>
+        <translation>Status: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Last known value: %1, %2 s ago</source>
+        <translation>Letzter bekannter Wert: %1, vor %2 s</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The device cannot report this value.</source>
+        <translation>Das Gerät kann diesen Wert nicht melden.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Not written yet</source>
+        <translation>Noch nicht geschrieben</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Stored in EEPROM: every write wears it (about 10,000 write cycles).</source>
+        <translation>Im EEPROM gespeichert: jedes Schreiben nutzt es ab (etwa 10.000 Schreibzyklen).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Kept in RAM: lost when the device is switched off.</source>
+        <translation>Im RAM gehalten: geht beim Ausschalten des Geräts verloren.</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device value</source>
+        <translation>Gerätewert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>New value</source>
+        <translation>Neuer Wert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Storage</source>
+        <translation>Speicherort</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Last write</source>
+        <translation>Letztes Schreiben</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <location line="+41"/>
+        <source>&apos;%1&apos; is no parameter listed here</source>
+        <translation>„%1“ ist kein hier aufgeführter Parameter</translation>
+    </message>
+    <message>
+        <location line="-39"/>
+        <location line="+41"/>
+        <source>read-only mode: nothing is changed or written</source>
+        <translation>Nur-Lese-Modus: es wird nichts geändert oder geschrieben</translation>
+    </message>
+    <message>
+        <location line="-39"/>
+        <location line="+41"/>
+        <source>a write is under way: changes wait until it has ended</source>
+        <translation>es wird gerade geschrieben: Änderungen warten, bis das beendet ist</translation>
+    </message>
+    <message>
+        <location line="-30"/>
+        <source>&apos;%1&apos; is no number that can be read one way only: write it without thousands separators</source>
+        <translation>„%1“ ist keine eindeutig lesbare Zahl: bitte ohne Tausenderpunkte schreiben</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>%1 is not a whole number: %2 takes whole numbers only</source>
+        <translation>%1 ist keine ganze Zahl: %2 nimmt nur ganze Zahlen an</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 to %2</source>
+        <translation>%1 bis %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 or more</source>
+        <translation>%1 oder mehr</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>up to %1</source>
+        <translation>bis %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is out of range: %2 takes %3</source>
+        <translation>%1 liegt außerhalb des Bereichs: %2 nimmt %3 an</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1 already holds %2: no change</source>
+        <translation>%1 hat bereits %2: keine Änderung</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::ParameterEditor</name>
+    <message>
+        <location filename="../ui/parametereditor.cpp" line="-90"/>
+        <source>Lo&amp;ad backup...</source>
+        <translation>Sicherung lade&amp;n...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Dis&amp;card changes</source>
+        <translation>Änderungen &amp;verwerfen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S&amp;top after this write</source>
+        <translation>Nach diesem Schreiben anhal&amp;ten</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+18"/>
+        <source>All %n parameter(s) listed here are stored in EEPROM: every write wears it (about 10,000 write cycles). Write only what needs changing.</source>
+        <translation>
+            <numerusform>Der hier aufgeführte Parameter ist im EEPROM gespeichert: jedes Schreiben nutzt es ab (etwa 10.000 Schreibzyklen). Nur schreiben, was sich ändern muss.</numerusform>
+            <numerusform>Alle %n hier aufgeführten Parameter sind im EEPROM gespeichert: jedes Schreiben nutzt es ab (etwa 10.000 Schreibzyklen). Nur schreiben, was sich ändern muss.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>%1 of the %n parameter(s) listed here are stored in EEPROM: every write wears it (about 10,000 write cycles). Write only what needs changing.</source>
+        <translation>
+            <numerusform>%1 des hier aufgeführten Parameters ist im EEPROM gespeichert: jedes Schreiben nutzt es ab (etwa 10.000 Schreibzyklen). Nur schreiben, was sich ändern muss.</numerusform>
+            <numerusform>%1 der %n hier aufgeführten Parameter sind im EEPROM gespeichert: jedes Schreiben nutzt es ab (etwa 10.000 Schreibzyklen). Nur schreiben, was sich ändern muss.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The parameters listed here are kept in RAM: the device loses them when it is switched off.</source>
+        <translation>Die hier aufgeführten Parameter werden im RAM gehalten: das Gerät verliert sie beim Ausschalten.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>This device has no parameters to edit.</source>
+        <translation>Dieses Gerät hat keine Parameter zum Bearbeiten.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Search:</source>
+        <translation>S&amp;uchen:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Name, id or address</source>
+        <translation>Name, Kennung oder Adresse</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Shows the parameters whose name, id or register address contains this text (Ctrl+F).</source>
+        <translation>Zeigt die Parameter, deren Name, Kennung oder Registeradresse diesen Text enthält (Strg+F).</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>%1 (stale)</source>
+        <translation>%1 (veraltet)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>EEPROM</source>
+        <translation>EEPROM</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>RAM</source>
+        <translation>RAM</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Take back this change</source>
+        <translation>Diese Änderung zurücknehmen</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Not taken for %1: %2</source>
+        <translation>Für %1 nicht übernommen: %2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+136"/>
+        <source>Shows the changes with the device&apos;s values first; nothing is written before you confirm.</source>
+        <translation>Zeigt zuerst die Änderungen mit den Werten des Geräts; geschrieben wird erst nach Ihrer Bestätigung.</translation>
+    </message>
+    <message>
+        <location line="-135"/>
+        <location line="+143"/>
+        <source>Fills in the values of a parameter backup file that differ from the device, to check before writing them.</source>
+        <translation>Trägt die Werte einer Parametersicherung ein, die vom Gerät abweichen, zum Prüfen vor dem Schreiben.</translation>
+    </message>
+    <message>
+        <location line="-141"/>
+        <source>Drops every change that has not been written.</source>
+        <translation>Verwirft jede Änderung, die noch nicht geschrieben ist.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The write under way ends as usual; the changes after it are not written and stay.</source>
+        <translation>Das laufende Schreiben endet wie gewohnt; die Änderungen danach werden nicht geschrieben und bleiben erhalten.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+367"/>
+        <source>stopped before its turn</source>
+        <translation>angehalten, bevor es an der Reihe war</translation>
+    </message>
+    <message>
+        <location line="-362"/>
+        <source>Load parameter backup</source>
+        <translation>Parametersicherung laden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameter files (*.json)</source>
+        <translation>Parameterdateien (*.json)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Writing %1 of %2...</source>
+        <translation>Schreibe %1 von %2...</translation>
+    </message>
+    <message>
+        <location line="+85"/>
+        <source>No parameter matches &quot;%1&quot;.</source>
+        <translation>Kein Parameter passt zu „%1“.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+19"/>
+        <source>&amp;Write %n change(s)</source>
+        <translation>
+            <numerusform>%n Änderung s&amp;chreiben</numerusform>
+            <numerusform>%n Änderungen s&amp;chreiben</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;Write changes</source>
+        <translation>Änderungen s&amp;chreiben</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+141"/>
+        <source>Read-only mode: nothing is written to the devices.</source>
+        <translation>Nur-Lese-Modus: Es wird nichts auf die Geräte geschrieben.</translation>
+    </message>
+    <message>
+        <location line="-139"/>
+        <source>Not now: %1. The changes can be written once the device answers.</source>
+        <translation>Jetzt nicht: %1. Die Änderungen können geschrieben werden, sobald das Gerät antwortet.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>%n change(s) not written yet</source>
+        <translation>
+            <numerusform>%n Änderung noch nicht geschrieben</numerusform>
+            <numerusform>%n Änderungen noch nicht geschrieben</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>No changes</source>
+        <translation>Keine Änderungen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+31"/>
+        <source>Read-only mode: nothing is changed or written.</source>
+        <translation>Nur-Lese-Modus: Es wird nichts geändert oder geschrieben.</translation>
+    </message>
+    <message>
+        <location line="-19"/>
+        <source>the device stopped answering (%1)</source>
+        <translation>das Gerät antwortet nicht mehr (%1)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+13"/>
+        <source>%n change(s) discarded.</source>
+        <translation>
+            <numerusform>%n Änderung verworfen.</numerusform>
+            <numerusform>%n Änderungen verworfen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location line="+99"/>
+        <source>Wait until the read or write under way has ended.</source>
+        <translation>Bitte warten, bis das laufende Lesen oder Schreiben beendet ist.</translation>
+    </message>
+    <message>
+        <location line="-92"/>
+        <location line="+12"/>
+        <location line="+24"/>
+        <source>Not loaded: %1</source>
+        <translation>Nicht geladen: %1</translation>
+    </message>
+    <message>
+        <location line="-30"/>
+        <source>Not loaded: %1: %2</source>
+        <translation>Nicht geladen: %1: %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Not loaded: %1. A backup is compared with the device, which must answer.</source>
+        <translation>Nicht geladen: %1. Eine Sicherung wird mit dem Gerät verglichen, das dafür antworten muss.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Reading the device&apos;s parameters to compare with %1...</source>
+        <translation>Die Parameter des Geräts werden zum Vergleich mit %1 gelesen...</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>and %n more</source>
+        <translation>
+            <numerusform>und %n weiterer</numerusform>
+            <numerusform>und %n weitere</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not loaded: these could not be read from the device to compare: %1</source>
+        <translation>Nicht geladen: diese konnten zum Vergleich nicht vom Gerät gelesen werden: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Not loaded: a write started meanwhile.</source>
+        <translation>Nicht geladen: inzwischen hat ein Schreiben begonnen.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+22"/>
+        <source>%1: %n value(s) that differ from the device filled in as changes; check them and write them.</source>
+        <translation>
+            <numerusform>%1: %n vom Gerät abweichender Wert als Änderung eingetragen; bitte prüfen und schreiben.</numerusform>
+            <numerusform>%1: %n vom Gerät abweichende Werte als Änderungen eingetragen; bitte prüfen und schreiben.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: every parameter listed here matches the device, nothing to fill in.</source>
+        <translation>%1: jeder hier aufgeführte Parameter stimmt mit dem Gerät überein, nichts einzutragen.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n parameter(s) the file does not hold are left as they are.</source>
+        <translation>
+            <numerusform>%n Parameter, den die Datei nicht enthält, bleibt, wie er ist.</numerusform>
+            <numerusform>%n Parameter, die die Datei nicht enthält, bleiben, wie sie sind.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n differing value(s) of the file are not on this page (setpoints and the like); the Parameters dialog restores them.</source>
+        <translation>
+            <numerusform>%n abweichender Wert der Datei steht nicht auf dieser Seite (Sollwerte und dergleichen); der Parameter-Dialog stellt ihn wieder her.</numerusform>
+            <numerusform>%n abweichende Werte der Datei stehen nicht auf dieser Seite (Sollwerte und dergleichen); der Parameter-Dialog stellt sie wieder her.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Not taken: %1</source>
+        <translation>Nicht übernommen: %1</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>Nothing to write: no parameter is changed.</source>
+        <translation>Nichts zu schreiben: kein Parameter ist geändert.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+34"/>
+        <source>Not written: %1. The changes stay and can be written once the device answers.</source>
+        <translation>Nicht geschrieben: %1. Die Änderungen bleiben und können geschrieben werden, sobald das Gerät antwortet.</translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <source>%1 at address %2</source>
+        <translation>%1 an Adresse %2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+44"/>
+        <source>Writing %n change(s), each verified by reading it back...</source>
+        <translation>
+            <numerusform>%n Änderung wird geschrieben und durch Rücklesen geprüft...</numerusform>
+            <numerusform>%n Änderungen werden geschrieben, jede durch Rücklesen geprüft...</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the write of %1 ended unknown; check the device first</source>
+        <translation>das Schreiben von %1 endete unbekannt; bitte zuerst das Gerät prüfen</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+35"/>
+        <source>%1 of %n change(s) written and confirmed by read-back.</source>
+        <translation>
+            <numerusform>%1 von %n Änderung geschrieben und durch Rücklesen bestätigt.</numerusform>
+            <numerusform>%1 von %n Änderungen geschrieben und durch Rücklesen bestätigt.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n refused.</source>
+        <translation>
+            <numerusform>%n abgelehnt.</numerusform>
+            <numerusform>%n abgelehnt.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n with an unknown outcome: check the device.</source>
+        <translation>
+            <numerusform>%n mit unbekanntem Ausgang: bitte am Gerät prüfen.</numerusform>
+            <numerusform>%n mit unbekanntem Ausgang: bitte am Gerät prüfen.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n not written (%1).</source>
+        <translation>
+            <numerusform>%n nicht geschrieben (%1).</numerusform>
+            <numerusform>%n nicht geschrieben (%1).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>stopped</source>
+        <translation>angehalten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>What was not confirmed stays as a change; see &quot;Last write&quot;.</source>
+        <translation>Was nicht bestätigt ist, bleibt als Änderung; siehe „Letztes Schreiben“.</translation>
+    </message>
+</context>
+<context>
     <name>jumo::ParameterReadJob</name>
     <message>
         <location filename="../lib/commissioning/parameterreadjob.cpp" line="+18"/>
@@ -3155,6 +3696,52 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
 </context>
 <context>
+    <name>jumo::ParameterValueDelegate</name>
+    <message>
+        <location filename="../ui/parametervaluedelegate.cpp" line="+35"/>
+        <source>%1 to %2</source>
+        <translation>%1 bis %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 or more</source>
+        <translation>%1 oder mehr</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>up to %1</source>
+        <translation>bis %1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>On</source>
+        <translation>Ein</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Takes %1</source>
+        <translation>Nimmt %1 an</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>The device shows %n decimal(s)</source>
+        <translation>
+            <numerusform>Das Gerät zeigt %n Nachkommastelle</numerusform>
+            <numerusform>Das Gerät zeigt %n Nachkommastellen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Enter takes the value, Escape leaves it as it was; an empty field drops the change.</source>
+        <translation>Eingabe übernimmt den Wert, Esc lässt ihn, wie er war; ein leeres Feld verwirft die Änderung.</translation>
+    </message>
+</context>
+<context>
     <name>jumo::ParameterWriteJob</name>
     <message>
         <location filename="../lib/commissioning/parameterwritejob.cpp" line="+34"/>
@@ -3168,6 +3755,73 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
             <numerusform>%n Schreibvorgang fehlgeschlagen</numerusform>
             <numerusform>%n Schreibvorgänge fehlgeschlagen</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>jumo::ParameterWritePreview</name>
+    <message>
+        <location filename="../ui/parameterwritepreview.cpp" line="+21"/>
+        <source>Write parameters</source>
+        <translation>Parameter schreiben</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>Write these %n change(s) to %1? Each is written once and verified by reading it back.</source>
+        <translation>
+            <numerusform>Diese %n Änderung auf %1 schreiben? Sie wird einmal geschrieben und durch Rücklesen geprüft.</numerusform>
+            <numerusform>Diese %n Änderungen auf %1 schreiben? Jede wird einmal geschrieben und durch Rücklesen geprüft.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+9"/>
+        <source>%n of them are stored in EEPROM, which wears with every write.</source>
+        <translation>
+            <numerusform>%n davon ist im EEPROM gespeichert, das sich mit jedem Schreiben abnutzt.</numerusform>
+            <numerusform>%n davon sind im EEPROM gespeichert, das sich mit jedem Schreiben abnutzt.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Device value</source>
+        <translation>Gerätewert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>New value</source>
+        <translation>Neuer Wert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Last write</source>
+        <translation>Letztes Schreiben</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>A change whose last write is unknown may already be on the device: writing it again sends the same value once more.</source>
+        <translation>Eine Änderung, deren letztes Schreiben unbekannt endete, kann schon auf dem Gerät sein: erneutes Schreiben sendet denselben Wert noch einmal.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+9"/>
+        <source>&amp;Write %n change(s)</source>
+        <translation>
+            <numerusform>%n Änderung s&amp;chreiben</numerusform>
+            <numerusform>%n Änderungen s&amp;chreiben</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
     </message>
 </context>
 <context>
@@ -3689,7 +4343,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::Theme</name>
     <message>
-        <location filename="../ui/theme.cpp" line="+274"/>
+        <location filename="../ui/theme.cpp" line="+301"/>
         <source>&amp;System</source>
         <translation>&amp;System</translation>
     </message>
@@ -7739,7 +8393,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>jumo-hmi: unknown theme &apos;%1&apos; (system, light, dark or high-contrast)</source>
         <translation>jumo-hmi: unbekanntes Farbschema „%1“ (system, light, dark oder high-contrast)</translation>
     </message>

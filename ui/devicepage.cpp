@@ -7,10 +7,13 @@
 #include "ledgrid.h"
 #include "models/livevaluesmodel.h"
 #include "livevaluesview.h"
+#include "parametereditor.h"
 #include "theme.h"
 #include "trendview.h"
 
 #include <QLabel>
+#include <QLineEdit>
+#include <QShortcut>
 #include <QTabWidget>
 #include <QVBoxLayout>
 
@@ -52,8 +55,16 @@ DevicePage::DevicePage(Bus *bus, int device, LiveValuesModel *values, AlarmBitsM
                                     "setpoint_select", "parameter_set_select", "binary_outputs", "switches", "command", "override"},
                                    m_values, this);
     m_tabs->addTab(m_controls, tr("Controls"));
-    m_parameters = new ControlsPanel(bus, device, map, {"parameter"}, m_values, this);
+    m_parameters = new ParameterEditor(bus, device, this);
     m_tabs->addTab(m_parameters, tr("Parameters"));
+    // Ctrl+F while the page is shown (the focus may be in the device list): the parameter
+    // search. Pages not shown hold no active shortcut.
+    auto *find = new QShortcut(QKeySequence::Find, this);
+    find->setContext(Qt::WindowShortcut);
+    connect(find, &QShortcut::activated, this, [this] {
+        m_tabs->setCurrentWidget(m_parameters);
+        m_parameters->focusSearch();
+    });
     auto *program = new ControlsPanel(bus, device, map, {"program"}, m_values, this);
     if (program->isEmpty()) {
         delete program;

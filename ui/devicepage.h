@@ -17,6 +17,7 @@ class ControlsPanel;
 class LedGrid;
 class LiveValuesModel;
 class LiveValuesView;
+class ParameterEditor;
 class TrendView;
 
 class DevicePage : public QWidget
@@ -37,7 +38,7 @@ public:
     LiveValuesView *valuesView() const { return m_valuesView; }
     LedGrid *ledGrid() const { return m_leds; }
     ControlsPanel *controls() const { return m_controls; }
-    ControlsPanel *parameters() const { return m_parameters; }
+    ParameterEditor *parameters() const { return m_parameters; }
     QTabWidget *tabs() const { return m_tabs; }
     TrendView *trend() const { return m_trend; }
     // Takes the colours of the theme now in use (banners).
@@ -51,7 +52,7 @@ private:
     LiveValuesView *m_valuesView;
     LedGrid *m_leds;
     ControlsPanel *m_controls;
-    ControlsPanel *m_parameters;
+    ParameterEditor *m_parameters;
     ControlsPanel *m_program = nullptr;
     TrendView *m_trend;
     QLabel *m_readOnlyBanner;

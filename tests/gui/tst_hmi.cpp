@@ -8,7 +8,11 @@
 // journal opens at its newest records and pages back; connect, add, open, write, scan
 // and disconnect with the keyboard alone; a text field keeps Ctrl+Delete (delete the
 // next word) rather than removing the device being typed for; no letter is underlined
-// twice in a menu, in English or German.
+// twice in a menu, in English or German. The parameter editor: changes typed in the tree
+// (and refused out of range), found with the search, previewed once and written, each
+// confirmed by read-back or refused with the device's exception and kept; a backup fills
+// in only what differs, other families' and broken files are refused; read-only mode,
+// an offline device, a second write and a closed page send nothing they should not.
 #include "bitswitches.h"
 #include "connectionbar.h"
 #include "controlrow.h"
@@ -25,7 +29,10 @@
 #include "ledindicator.h"
 #include "livevaluesview.h"
 #include "mainwindow.h"
+#include "models/parametereditmodel.h"
+#include "parametereditor.h"
 #include "parametersdialog.h"
+#include "parameterwritepreview.h"
 #include "logs/datalogger.h"
 #include "models/valuetext.h"
 #include "scandialog.h"
@@ -47,11 +54,17 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPointer>
 #include <QPushButton>
+#include <QRandomGenerator>
 #include <QSignalSpy>
 #include <QJsonDocument>
+#include <QJsonObject>
 #include <QLineEdit>
+#include <QSortFilterProxyModel>
 #include <QSpinBox>
+#include <QTableWidget>
+#include <QTreeView>
 #include <QTableView>
 #include <QTest>
 
@@ -108,6 +121,73 @@ bool visibleMessageBox()
     return false;
 }
 
+// A cell of the parameter tree as the view has it (behind its search filter).
+QModelIndex treeCell(ParameterEditor *editor, const QString &id, int column)
+{
+    auto *filter = qobject_cast<QSortFilterProxyModel *>(editor->tree()->model());
+    return filter ? filter->mapFromSource(editor->model()->indexOf(id, column)) : QModelIndex();
+}
+
+// Types a new value into the tree's field for it, as a person does: the cell opened for
+// editing, the text typed, Enter (unless enter is false: the field stays open). False
+// when no field opened.
+bool typeNewValue(ParameterEditor *editor, const QString &id, const QString &text, bool enter = true)
+{
+    QTreeView *tree = editor->tree();
+    const QModelIndex cell = treeCell(editor, id, ParameterEditModel::NewValueColumn);
+    if (!cell.isValid() || !(cell.flags() & Qt::ItemIsEditable))
+        return false;
+    tree->scrollTo(cell);
+    tree->setCurrentIndex(cell);
+    tree->edit(cell);
+    QPointer<QLineEdit> input;
+    for (QLineEdit *e : tree->findChildren<QLineEdit *>(QStringLiteral("parameterInput"))) {
+        if (e->isVisible())
+            input = e;
+    }
+    if (!input)
+        return false;
+    input->selectAll();
+    QTest::keyClicks(input, text);
+    if (!enter)
+        return true;
+    QTest::keyClick(input, Qt::Key_Return);
+    // The field goes once its value is taken.
+    QElapsedTimer waited;
+    waited.start();
+    while (input && input->isVisible() && waited.elapsed() < 5000)
+        QTest::qWait(10);
+    return true;
+}
+
+// The device answers the write frames (0x06, 0x10) to this register with an exception,
+// and nothing else: polls and other writes go on as usual.
+QMetaObject::Connection refuseWritesTo(SimulatorLine &line, quint8 slave, quint16 address, int exceptionCode)
+{
+    return QObject::connect(&line, &SimulatorLine::requestReceived, &line,
+                            [&line, slave, address, exceptionCode](const QByteArray &frame) {
+                                if (frame.size() < 4 || quint8(frame[0]) != slave)
+                                    return;
+                                const quint8 function = quint8(frame[1]);
+                                const quint16 at = quint16(quint8(frame[2]) << 8 | quint8(frame[3]));
+                                if ((function == 0x06 || function == 0x10) && at == address) {
+                                    Fault f;
+                                    f.mode = FaultMode::Exception;
+                                    f.remaining = 1;
+                                    f.exceptionCode = exceptionCode;
+                                    line.setFault(slave, f);
+                                }
+                            });
+}
+
+QStringList previewIds(ParameterWritePreview *preview)
+{
+    QStringList ids;
+    for (int row = 0; row < preview->table()->rowCount(); ++row)
+        ids << preview->table()->item(row, 0)->data(Qt::UserRole).toString();
+    return ids;
+}
+
 } // namespace
 
 class tst_Hmi : public QObject
@@ -141,10 +221,19 @@ private slots:
     void textFieldsKeepTheirEditingKeys();
     void mnemonicsAreUnique_data();
     void mnemonicsAreUnique();
+    void parameterEditorWritesReviewedChanges();
+    void parameterEditorKeepsRefusedChanges();
+    void parameterEditorFillsInABackup();
+    void parameterEditorInReadOnlyModeWritesNothing();
+    void parameterEditorWaitsForAnOfflineDevice();
+    void parameterEditorClosedMidWriteSendsNoMore();
 
 private:
     // A window connected to the line with the IPC 300 at address 1 on its page.
     std::unique_ptr<MainWindow> connectedWindow(bool readOnly, const QString &logFolder = QString());
+    // The dTRON 300 at address 4 added to the window, its Parameters tab shown, once its
+    // identity is confirmed and its parameters are read.
+    ParameterEditor *dtronEditor(MainWindow &window);
 
     QTemporaryDir m_dir;
     TestLine m_line;
@@ -313,11 +402,15 @@ void tst_Hmi::readOnlyDisablesControlsAndSendsNothing()
     DevicePage *page = window->devicePage("ipc300", 1);
     QVERIFY(page->findChild<QLabel *>("readOnlyBanner")->isVisibleTo(page));
     const QList<ControlRow *> rows = page->findChildren<ControlRow *>();
-    QVERIFY(rows.size() > 10);
+    QVERIFY(rows.size() > 5);
     for (ControlRow *row : rows) {
         for (QPushButton *button : row->findChildren<QPushButton *>())
             QVERIFY2(!button->isEnabled(), qPrintable(row->objectName()));
     }
+    // The parameter editor: nothing to edit, fill in or write.
+    QCOMPARE(page->parameters()->tree()->editTriggers(), QAbstractItemView::NoEditTriggers);
+    for (QPushButton *button : page->parameters()->findChildren<QPushButton *>())
+        QVERIFY2(!button->isEnabled(), qPrintable(button->objectName()));
     // Even when asked directly, nothing goes out.
     ControlRow *row = page->controls()->row("input_setpoint");
     row->setInputValue("12");
@@ -1034,6 +1127,31 @@ void tst_Hmi::everythingFromTheKeyboard()
     QTRY_VERIFY_WITH_TIMEOUT(row->stateText().startsWith("Confirmed"), 20000);
     QCOMPARE(m_sim.line().device(1)->number("input_setpoint"), 41.5);
 
+    // Ctrl+F: the parameter search. Enter goes to the parameter found, typing edits its new
+    // value and Enter takes it; Alt+W shows the preview and Enter writes.
+    ParameterEditor *editor = page->parameters();
+    QTest::keyClick(&window, Qt::Key_F, Qt::ControlModifier);
+    QCOMPARE(page->tabs()->currentWidget(), editor);
+    QTRY_VERIFY(editor->searchField()->hasFocus());
+    QTest::keyClicks(editor->searchField(), "base_load");
+    QTest::keyClick(editor->searchField(), Qt::Key_Return);
+    QTRY_VERIFY(editor->tree()->hasFocus());
+    QTest::keyClick(editor->tree(), Qt::Key_1);
+    QTRY_VERIFY(QApplication::focusWidget() && QApplication::focusWidget()->objectName() == "parameterInput");
+    QTest::keyClicks(QApplication::focusWidget(), "2.5");
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Return);
+    QTRY_COMPARE(editor->model()->changedIds(), QStringList{"base_load"});
+    QCOMPARE(editor->model()->newValue("base_load"), QString("12.5"));
+    QTest::keyClick(&window, Qt::Key_W, Qt::AltModifier);
+    QTRY_VERIFY(editor->preview() && editor->preview()->isVisible());
+    QSignalSpy written(editor, &ParameterEditor::writeEnded);
+    QTest::keyClick(editor->preview(), Qt::Key_Return);
+    QVERIFY(written.wait(20000));
+    QCOMPARE(editor->model()->writeState("base_load"), WriteCommand::State::Confirmed);
+    QCOMPARE(m_sim.line().device(1)->number("base_load"), 12.5);
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+
     // Ctrl+Shift+S opens the scan dialog, Escape closes it; Shift+F5 disconnects.
     QTest::keyClick(&window, Qt::Key_S, Qt::ControlModifier | Qt::ShiftModifier);
     QPointer<ScanDialog> scan = window.findChild<ScanDialog *>("scanDialog");
@@ -1200,6 +1318,15 @@ void tst_Hmi::mnemonicsAreUnique()
         if (label->buddy())
             windowKeys << qMakePair(letter(label->text()), label->text());
     }
+    // So do the buttons and fields of a device page's parameter editor.
+    QVERIFY(window.addDevice(families().family("dtron300"), 4));
+    ParameterEditor *editor = window.devicePage("dtron300", 4)->parameters();
+    for (QPushButton *button : editor->findChildren<QPushButton *>())
+        windowKeys << qMakePair(letter(button->text()), button->text());
+    for (QLabel *label : editor->findChildren<QLabel *>()) {
+        if (label->buddy())
+            windowKeys << qMakePair(letter(label->text()), label->text());
+    }
     check(QStringLiteral("window"), windowKeys);
     QList<QMenu *> menus = window.menuBar()->findChildren<QMenu *>();
     for (QMenu *menu : window.findChildren<QMenu *>()) {
@@ -1215,6 +1342,433 @@ void tst_Hmi::mnemonicsAreUnique()
         check(menu->title(), keys);
     }
     QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(QLatin1Char('\n'))));
+}
+
+ParameterEditor *tst_Hmi::dtronEditor(MainWindow &window)
+{
+    if (!window.devicePage("dtron300", 4) && !window.addDevice(families().family("dtron300"), 4))
+        return nullptr;
+    DevicePage *page = window.devicePage("dtron300", 4);
+    window.showDevice(page);
+    page->tabs()->setCurrentWidget(page->parameters());
+    ParameterEditor *editor = page->parameters();
+    const DeviceId id = page->device();
+    QElapsedTimer waited;
+    waited.start();
+    // Trusted, and every parameter read at least once.
+    auto ready = [&] {
+        if (!window.bus()->identities().isTrusted(id))
+            return false;
+        for (const QString &entry : editor->model()->entryIds()) {
+            if (editor->model()->indexOf(entry, ParameterEditModel::DeviceColumn).data(ParameterEditModel::ValidityRole).toInt()
+                != int(Validity::Current))
+                return false;
+        }
+        return true;
+    };
+    while (!ready() && waited.elapsed() < 30000)
+        QTest::qWait(20);
+    return ready() ? editor : nullptr;
+}
+
+void tst_Hmi::parameterEditorWritesReviewedChanges()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    ParameterEditor *editor = dtronEditor(*window);
+    QVERIFY(editor);
+    ParameterEditModel *model = editor->model();
+    SimulatedDevice *dtron = m_sim.line().device(4);
+    dtron->setNumber("ps1_dt", 80);
+    dtron->setNumber("ps1_pb1", 20);
+    dtron->setNumber("lc1_switch_on_delay", 0);
+    QTRY_COMPARE_WITH_TIMEOUT(model->deviceValueText("ps1_dt"), QString("80"), 20000);
+    QTRY_COMPARE_WITH_TIMEOUT(model->deviceValueText("lc1_switch_on_delay"), QString("0"), 20000);
+
+    // One EEPROM note for the page, not one per row.
+    QLabel *note = editor->findChild<QLabel *>("eepromNote");
+    QVERIFY(note->isVisible());
+    QCOMPARE(note->text().count("EEPROM"), 1);
+    QVERIFY2(note->text().startsWith(QStringLiteral("All %1 parameter(s)").arg(model->entryIds().size())), qPrintable(note->text()));
+
+    // Ctrl+F reaches the search of the page shown, not that of the IPC 300's page behind it.
+    window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(window.get()));
+    window->devicePage("dtron300", 4)->tabs()->setCurrentIndex(0);
+    QTest::keyClick(window.get(), Qt::Key_F, Qt::ControlModifier);
+    QCOMPARE(window->devicePage("dtron300", 4)->tabs()->currentWidget(), editor);
+    QTRY_VERIFY(editor->searchField()->hasFocus());
+    // The search finds by name, id or address; groups without a match go.
+    QTreeView *tree = editor->tree();
+    editor->searchField()->setText("switch-on delay");
+    QCOMPARE(tree->model()->rowCount(), 1);
+    QCOMPARE(tree->model()->rowCount(tree->model()->index(0, 0)), 4);
+    editor->searchField()->setText("0x3004");
+    QCOMPARE(tree->model()->rowCount(), 1);
+    QCOMPARE(tree->model()->index(0, 0, tree->model()->index(0, 0)).data(ParameterEditModel::EntryIdRole).toString(),
+             QString("ps1_dt"));
+    editor->searchField()->setText("no such thing");
+    QCOMPARE(tree->model()->rowCount(), 0);
+    QVERIFY(editor->findChild<QLabel *>("noMatch")->isVisible());
+    editor->searchField()->clear();
+    QCOMPARE(tree->model()->rowCount(), 2);
+
+    // Three changes typed in place, and one refused: a time cannot be negative.
+    QVERIFY(typeNewValue(editor, "ps1_dt", "95"));
+    QVERIFY(typeNewValue(editor, "ps1_pb1", "23.5"));
+    QVERIFY(typeNewValue(editor, "ps1_rt", "-5"));
+    QVERIFY2(editor->status().contains("Not taken for Parameter set 1: rt: -5 is out of range"), qPrintable(editor->status()));
+    QVERIFY(!model->isChanged("ps1_rt"));
+    QVERIFY(typeNewValue(editor, "lc1_switch_on_delay", "7"));
+    // In the tree's order: the manual's section 5.3 by address, then 5.4.
+    QCOMPARE(model->changedIds(), QStringList({"ps1_pb1", "ps1_dt", "lc1_switch_on_delay"}));
+    // Marked in more than colour: bold, a mark before the name, the count in the group title.
+    QVERIFY(treeCell(editor, "ps1_dt", 0).data().toString().startsWith(QChar(0x25CF)));
+    QVERIFY(treeCell(editor, "ps1_dt", 0).parent().data().toString().contains("(2 changed)"));
+    QCOMPARE(editor->findChild<QLabel *>("pendingChanges")->text(), QString("3 change(s) not written yet"));
+    auto *write = editor->findChild<QPushButton *>("writeChanges");
+    QCOMPARE(write->text(), QString("&Write 3 change(s)"));
+    QVERIFY(write->isEnabled());
+
+    // The preview lists exactly these three with the device's values; one confirmation.
+    const int writesBefore = m_sim.writeFrames();
+    QTest::mouseClick(write, Qt::LeftButton);
+    QTRY_VERIFY(editor->preview() && editor->preview()->isVisible());
+    ParameterWritePreview *preview = editor->preview();
+    QCOMPARE(previewIds(preview), QStringList({"ps1_pb1", "ps1_dt", "lc1_switch_on_delay"}));
+    QCOMPARE(preview->table()->item(1, 0)->text(), QString("Parameter set 1: dt"));
+    QCOMPARE(preview->table()->item(1, 1)->text(), QString("80"));
+    QCOMPARE(preview->table()->item(1, 2)->text(), QString("95"));
+    QCOMPARE(preview->table()->item(1, 3)->text(), QString("s"));
+    QCOMPARE(preview->table()->item(0, 2)->text(), QString("23.5"));
+    QVERIFY(preview->findChild<QLabel *>("previewEeprom")->text().startsWith("3 of them are stored in EEPROM"));
+    QTest::qWait(200);
+    QCOMPARE(m_sim.writeFrames(), writesBefore);   // nothing before the confirmation
+    QSignalSpy ended(editor, &ParameterEditor::writeEnded);
+    QTest::mouseClick(preview->findChild<QPushButton *>("confirmWrite"), Qt::LeftButton);
+
+    // A second write while this one runs: refused, no second preview.
+    QVERIFY(editor->isBusy());
+    QVERIFY(!write->isEnabled());
+    editor->requestWrite();
+    QVERIFY(!editor->preview());
+    QVERIFY2(editor->status().startsWith("Wait until"), qPrintable(editor->status()));
+    QVERIFY(!typeNewValue(editor, "ps1_y0", "5"));   // and no field opens while it runs
+
+    QVERIFY(ended.wait(30000));
+    for (const QString &id : QStringList{"ps1_dt", "ps1_pb1", "lc1_switch_on_delay"}) {
+        QCOMPARE(model->writeState(id), WriteCommand::State::Confirmed);
+        QVERIFY2(model->resultText(id).startsWith("Confirmed by read-back: "), qPrintable(model->resultText(id)));
+        QVERIFY(!model->isChanged(id));
+    }
+    QCOMPARE(model->resultText("ps1_dt"), QString("Confirmed by read-back: 95 s"));
+    QCOMPARE(dtron->number("ps1_dt"), 95.0);
+    QCOMPARE(dtron->number("ps1_pb1"), 23.5);
+    QCOMPARE(dtron->number("lc1_switch_on_delay"), 7.0);
+    // Each sent once: one frame per change.
+    QCOMPARE(m_sim.writeFrames(), writesBefore + 3);
+    QCOMPARE(model->changeCount(), 0);
+    QVERIFY(!write->isEnabled());
+    QVERIFY2(editor->status().startsWith("3 of 3 change(s) written and confirmed"), qPrintable(editor->status()));
+    QTRY_COMPARE_WITH_TIMEOUT(model->deviceValueText("ps1_dt"), QString("95"), 20000);
+
+    // The audit log has every write with the value it replaced.
+    QStringList audited;
+    for (const QJsonObject &r : logRecords(window->auditLog()->path())) {
+        if (r.value("device").toString() == "dtron300@4" && r.value("result").toString() == "confirmed")
+            audited << r.value("entry").toString();
+    }
+    QVERIFY(audited.contains("ps1_dt") && audited.contains("ps1_pb1") && audited.contains("lc1_switch_on_delay"));
+}
+
+void tst_Hmi::parameterEditorKeepsRefusedChanges()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    ParameterEditor *editor = dtronEditor(*window);
+    QVERIFY(editor);
+    ParameterEditModel *model = editor->model();
+    SimulatedDevice *dtron = m_sim.line().device(4);
+    dtron->setNumber("ps2_dt", 10);
+    dtron->setNumber("ps2_rt", 200);
+    QTRY_COMPARE_WITH_TIMEOUT(model->deviceValueText("ps2_rt"), QString("200"), 20000);
+    // The device denies writes to ps2_rt (0x3019) with its exception 8.
+    const QMetaObject::Connection refusal = refuseWritesTo(m_sim.line(), 4, 0x3019, 8);
+    const auto disconnect = qScopeGuard([refusal] { QObject::disconnect(refusal); });
+
+    QVERIFY(typeNewValue(editor, "ps2_dt", "12"));
+    // Still being typed when Write is asked for: part of the write.
+    QVERIFY(typeNewValue(editor, "ps2_rt", "250", false));
+    QCOMPARE(model->changedIds(), QStringList{"ps2_dt"});
+    const int writesBefore = m_sim.writeFrames();
+    QSignalSpy ended(editor, &ParameterEditor::writeEnded);
+    editor->requestWrite();
+    QTRY_VERIFY(editor->preview());
+    QCOMPARE(previewIds(editor->preview()), QStringList({"ps2_dt", "ps2_rt"}));
+    editor->preview()->accept();
+    QVERIFY(ended.wait(30000));
+
+    QCOMPARE(model->writeState("ps2_dt"), WriteCommand::State::Confirmed);
+    QCOMPARE(dtron->number("ps2_dt"), 12.0);
+    // Refused, with the device's own words, and still a change to write.
+    QCOMPARE(model->writeState("ps2_rt"), WriteCommand::State::Refused);
+    QVERIFY2(model->resultText("ps2_rt").contains("exception 8, Write access to parameter denied"),
+             qPrintable(model->resultText("ps2_rt")));
+    QVERIFY(model->isChanged("ps2_rt"));
+    QCOMPARE(model->newValue("ps2_rt"), QString("250"));
+    QCOMPARE(dtron->number("ps2_rt"), 200.0);
+    QVERIFY(treeCell(editor, "ps2_rt", ParameterEditModel::ResultColumn).data().toString().startsWith("Refused:"));
+    // Sent once each: a refusal is never repeated on its own.
+    QCOMPARE(m_sim.writeFrames(), writesBefore + 2);
+    QVERIFY2(editor->status().contains("1 of 2 change(s) written and confirmed") && editor->status().contains("1 refused"),
+             qPrintable(editor->status()));
+    QCOMPARE(editor->findChild<QPushButton *>("writeChanges")->text(), QString("&Write 1 change(s)"));
+    // Written again by hand, once the device allows it: confirmed now.
+    QObject::disconnect(refusal);
+    editor->requestWrite();
+    QTRY_VERIFY(editor->preview());
+    editor->preview()->accept();
+    QVERIFY(ended.wait(30000));
+    QCOMPARE(model->writeState("ps2_rt"), WriteCommand::State::Confirmed);
+    QCOMPARE(dtron->number("ps2_rt"), 250.0);
+    QCOMPARE(model->changeCount(), 0);
+}
+
+void tst_Hmi::parameterEditorFillsInABackup()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    ParameterEditor *editor = dtronEditor(*window);
+    QVERIFY(editor);
+    ParameterEditModel *model = editor->model();
+    SimulatedDevice *dtron = m_sim.line().device(4);
+    dtron->setNumber("ps1_cy1", 20);
+    dtron->setNumber("lc2_limit", 150);
+    dtron->setNumber("ps1_y1", 100);
+    QTRY_COMPARE_WITH_TIMEOUT(model->deviceValueText("ps1_y1"), QString("100"), 20000);
+
+    // A backup as the Parameters dialog and jumoctl write it, then the device changes.
+    const QString file = m_dir.filePath("dtron-parameters.json");
+    {
+        ParametersDialog dialog(window->bus(), window->devicePage("dtron300", 4)->device());
+        dialog.backup(file);
+        QTRY_VERIFY_WITH_TIMEOUT(dialog.status().contains("saved to"), 20000);
+    }
+    dtron->setNumber("ps1_cy1", 25);
+    dtron->setNumber("lc2_limit", 170);
+    dtron->setNumber("ps1_y1", 90);
+    QTRY_COMPARE_WITH_TIMEOUT(model->deviceValueText("ps1_y1"), QString("90"), 20000);
+    // The file lacks ps1_y1: what it does not hold stays as it is, also a change typed here.
+    QFile f(file);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QJsonObject root = QJsonDocument::fromJson(f.readAll()).object();
+    f.close();
+    QJsonObject values = root.value("values").toObject();
+    QVERIFY(values.contains("ps1_y1"));
+    values.remove("ps1_y1");
+    root.insert("values", values);
+    QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    f.write(QJsonDocument(root).toJson());
+    f.close();
+    QVERIFY(typeNewValue(editor, "ps1_y1", "95"));
+
+    const int writesBefore = m_sim.writeFrames();
+    QSignalSpy loaded(editor, &ParameterEditor::backupLoaded);
+    editor->loadBackup(file);
+    QVERIFY(loaded.wait(30000));
+    QVERIFY2(editor->status().contains("2 value(s) that differ from the device filled in"), qPrintable(editor->status()));
+    QCOMPARE(model->changedIds(), QStringList({"ps1_cy1", "ps1_y1", "lc2_limit"}));
+    QCOMPARE(model->newValue("ps1_cy1"), QString("20"));
+    QCOMPARE(model->newValue("lc2_limit"), QString("150"));
+    QCOMPARE(model->newValue("ps1_y1"), QString("95"));
+    QCOMPARE(treeCell(editor, "ps1_cy1", ParameterEditModel::DeviceColumn).data().toString(), QString("25.0"));
+    QCOMPARE(treeCell(editor, "ps1_cy1", ParameterEditModel::NewValueColumn).data().toString(), QString("20.0"));
+    // Nothing went out: a backup only fills in.
+    QCOMPARE(m_sim.writeFrames(), writesBefore);
+
+    // Another family's file, a broken one and one that names a value twice: refused, nothing filled in.
+    editor->discardChanges();
+    QCOMPARE(model->changeCount(), 0);
+    const QString ipcFile = m_dir.filePath("ipc-for-dtron.json");
+    const QString broken = m_dir.filePath("broken.json");
+    const QString twice = m_dir.filePath("twice.json");
+    for (const auto &[path, text] : QList<QPair<QString, QByteArray>>{
+                 {ipcFile, R"({"format":"jumo-parameters","version":1,"family":"ipc300","address":1,"values":{"base_load":"5"}})"},
+                 {broken, R"({"format":"jumo-parameters","version":1,"family":"dtron300","values":{"ps1_cy1":)"},
+                 {twice, R"({"format":"jumo-parameters","version":1,"family":"dtron300","values":{"ps1_cy1":"1","ps1_cy1":"2"}})"}}) {
+        QFile out(path);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(text);
+    }
+    editor->loadBackup(ipcFile);
+    QVERIFY2(editor->status().contains("Not loaded: the file is for the family ipc300, the device is dtron300"),
+             qPrintable(editor->status()));
+    editor->loadBackup(broken);
+    QVERIFY2(editor->status().startsWith("Not loaded: broken.json: not a parameter file"), qPrintable(editor->status()));
+    editor->loadBackup(twice);
+    QVERIFY2(editor->status().contains("names 'ps1_cy1' twice"), qPrintable(editor->status()));
+    editor->loadBackup(m_dir.filePath("no-such-file.json"));
+    QVERIFY2(editor->status().startsWith("Not loaded:"), qPrintable(editor->status()));
+    // A value the device cannot take is refused by the file's check, not filled in.
+    const QString outOfType = m_dir.filePath("out-of-type.json");
+    {
+        QFile out(outOfType);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(R"({"format":"jumo-parameters","version":1,"family":"dtron300","values":{"ps1_dt":"-3"}})");
+    }
+    editor->loadBackup(outOfType);
+    QVERIFY(loaded.wait(30000));
+    QVERIFY2(editor->status().startsWith("Not loaded: 'ps1_dt' in the file"), qPrintable(editor->status()));
+    QCOMPARE(model->changeCount(), 0);
+    QCOMPARE(m_sim.writeFrames(), writesBefore);
+}
+
+void tst_Hmi::parameterEditorInReadOnlyModeWritesNothing()
+{
+    const int before = m_sim.writeFrames();
+    auto window = connectedWindow(true);
+    QVERIFY(window);
+    ParameterEditor *editor = dtronEditor(*window);
+    QVERIFY(editor);
+    ParameterEditModel *model = editor->model();
+    // Nothing can be edited, filled in or written.
+    QCOMPARE(editor->tree()->editTriggers(), QAbstractItemView::NoEditTriggers);
+    QVERIFY(!(model->flags(model->indexOf("ps1_dt", ParameterEditModel::NewValueColumn)) & Qt::ItemIsEditable));
+    for (const char *name : {"writeChanges", "discardChanges", "loadBackup"})
+        QVERIFY2(!editor->findChild<QPushButton *>(name)->isEnabled(), name);
+    QVERIFY(!typeNewValue(editor, "ps1_dt", "33"));
+    QVERIFY(!model->setNewValue("ps1_dt", "33"));
+    QCOMPARE(model->changeCount(), 0);
+    editor->loadBackup(m_dir.filePath("dtron-parameters.json"));
+    QVERIFY(editor->status().startsWith("Read-only mode"));
+    QCOMPARE(model->changeCount(), 0);
+    // Even with changes made before the switch and a write asked for directly: no preview, no frame.
+    DevicePage *page = window->devicePage("dtron300", 4);
+    page->setReadOnly(false);
+    QVERIFY(model->setNewValue("ps1_dt", "33"));
+    page->setReadOnly(true);
+    QVERIFY(!editor->findChild<QPushButton *>("writeChanges")->isEnabled());
+    editor->requestWrite();
+    QVERIFY(!editor->preview());
+    QVERIFY(editor->status().startsWith("Read-only mode"));
+    QTest::qWait(500);
+    QCOMPARE(m_sim.writeFrames(), before);
+}
+
+void tst_Hmi::parameterEditorWaitsForAnOfflineDevice()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    ParameterEditor *editor = dtronEditor(*window);
+    QVERIFY(editor);
+    ParameterEditModel *model = editor->model();
+    const DeviceId id = window->devicePage("dtron300", 4)->device();
+    SimulatedDevice *dtron = m_sim.line().device(4);
+    dtron->setNumber("ps2_tt", 60);
+    dtron->setNumber("ps2_y0", 0);
+    dtron->setNumber("ps2_y1", 100);
+    QTRY_COMPARE_WITH_TIMEOUT(model->deviceValueText("ps2_tt"), QString("60"), 20000);
+    QVERIFY(typeNewValue(editor, "ps2_tt", "65"));
+
+    // The device goes silent: its values go (no frozen number), the change stays, and Write waits.
+    QVERIFY(m_sim.setFault(4, "dead", -1, 0));
+    const auto alive = qScopeGuard([this] { m_sim.setFault(4, "none", -1, 0); });
+    QTRY_VERIFY_WITH_TIMEOUT(!window->bus()->condition(id).isOnline(), 30000);
+    QTRY_COMPARE_WITH_TIMEOUT(model->deviceValueText("ps2_tt"), ValueText::noValue(), 10000);
+    QVERIFY(model->isChanged("ps2_tt"));
+    auto *write = editor->findChild<QPushButton *>("writeChanges");
+    QVERIFY(!write->isEnabled());
+    QVERIFY2(write->toolTip().startsWith("Not now: Not answering since"), qPrintable(write->toolTip()));
+    const int silentWrites = m_sim.writeFrames();
+    editor->requestWrite();
+    QVERIFY(!editor->preview());
+    QVERIFY2(editor->status().startsWith("Not written: Not answering since"), qPrintable(editor->status()));
+    // Nor is a backup compared with a device that does not answer.
+    const QString backup = m_dir.filePath("dtron-offline.json");
+    {
+        QFile out(backup);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(R"({"format":"jumo-parameters","version":1,"family":"dtron300","values":{"ps2_tt":"70"}})");
+    }
+    editor->loadBackup(backup);
+    QVERIFY2(editor->status().startsWith("Not loaded: Not answering since"), qPrintable(editor->status()));
+    QTest::qWait(300);
+    QCOMPARE(m_sim.writeFrames(), silentWrites);
+
+    // Back again: written. Then silent in the middle of a write: the write under way ends
+    // unknown (never a guess); the rest are not sent after it and stay as changes.
+    m_sim.setFault(4, "none", -1, 0);
+    QTRY_VERIFY_WITH_TIMEOUT(window->bus()->condition(id).isOnline(), 60000);
+    QTRY_VERIFY_WITH_TIMEOUT(write->isEnabled(), 20000);
+    QVERIFY(typeNewValue(editor, "ps2_y0", "5"));
+    QVERIFY(typeNewValue(editor, "ps2_y1", "90"));
+    QCOMPARE(model->changedIds(), QStringList({"ps2_tt", "ps2_y0", "ps2_y1"}));
+    bool silenced = false;
+    const QMetaObject::Connection kill = QObject::connect(&m_sim.line(), &SimulatorLine::requestReceived, &m_sim.line(),
+                                                          [this, &silenced](const QByteArray &frame) {
+        if (!silenced && frame.size() > 2 && quint8(frame[0]) == 4 && (quint8(frame[1]) == 0x06 || quint8(frame[1]) == 0x10)) {
+            silenced = true;
+            m_sim.setFault(4, "dead", -1, 0);
+        }
+    });
+    const auto unhook = qScopeGuard([kill] { QObject::disconnect(kill); });
+    QSignalSpy ended(editor, &ParameterEditor::writeEnded);
+    const int writesBefore = m_sim.writeFrames();
+    editor->requestWrite();
+    QTRY_VERIFY(editor->preview());
+    editor->preview()->accept();
+    QVERIFY(ended.wait(60000));
+    QVERIFY(silenced);
+    QCOMPARE(model->writeState("ps2_tt"), WriteCommand::State::Unknown);
+    QVERIFY(model->isChanged("ps2_tt"));
+    for (const QString &rest : QStringList{"ps2_y0", "ps2_y1"}) {
+        QCOMPARE(model->writeState(rest), WriteCommand::State::Idle);
+        QVERIFY2(model->resultText(rest).startsWith("Not written: the write of Parameter set 2: tt ended unknown"),
+                 qPrintable(model->resultText(rest)));
+        QVERIFY(model->isChanged(rest));
+    }
+    // Only the first change's frames went out (the write layer repeats a value after a lost answer).
+    const int sent = m_sim.writeFrames() - writesBefore;
+    QVERIFY2(sent >= 1 && sent <= 3, qPrintable(QString::number(sent)));
+    QCOMPARE(dtron->number("ps2_y0"), 0.0);
+    QCOMPARE(dtron->number("ps2_y1"), 100.0);
+    // The preview of the next write says the first may already be on the device.
+    m_sim.setFault(4, "none", -1, 0);
+    QTRY_VERIFY_WITH_TIMEOUT(window->bus()->condition(id).isOnline(), 60000);
+    editor->requestWrite();
+    QTRY_VERIFY(editor->preview());
+    QVERIFY(editor->preview()->findChild<QLabel *>("previewUnknown"));
+    QVERIFY(editor->preview()->table()->item(0, 4)->text().startsWith("Unknown, check the device"));
+    editor->preview()->reject();
+}
+
+void tst_Hmi::parameterEditorClosedMidWriteSendsNoMore()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    ParameterEditor *editor = dtronEditor(*window);
+    QVERIFY(editor);
+    QPointer<ParameterEditor> alive(editor);
+    const QStringList ids{"lc3_switch_on_delay", "lc3_switch_off_delay", "lc4_switch_on_delay", "lc4_switch_off_delay",
+                          "ps1_tt", "ps2_tt"};
+    int value = 300 + QRandomGenerator::global()->bounded(100);
+    for (const QString &id : ids)
+        QVERIFY(typeNewValue(editor, id, QString::number(value++)));
+    QCOMPARE(editor->model()->changeCount(), ids.size());
+    const int writesBefore = m_sim.writeFrames();
+    editor->requestWrite();
+    QTRY_VERIFY(editor->preview());
+    editor->preview()->accept();
+    // The first write confirmed, then the page goes (its device removed) with five to go.
+    QTRY_VERIFY_WITH_TIMEOUT(editor->model()->writeState(ids.first()) == WriteCommand::State::Confirmed, 20000);
+    window->showDevice("dtron300", 4);
+    QTest::mouseClick(window->findChild<QPushButton *>("removeDeviceButton"), Qt::LeftButton);
+    QTRY_VERIFY(!alive);
+    const int atClose = m_sim.writeFrames();
+    QTest::qWait(1500);
+    // At most the write that was under way when the page went; nothing after it.
+    QVERIFY2(m_sim.writeFrames() - atClose <= 1, qPrintable(QString::number(m_sim.writeFrames() - atClose)));
+    QVERIFY(m_sim.writeFrames() - writesBefore < ids.size());
 }
 
 QTEST_MAIN(tst_Hmi)

@@ -1,6 +1,7 @@
 // Nothing cut off at 1280x800, in English and German: the HMI against the simulator,
-// every page of every family's device page, the overview and the device list. Every
-// visible label, button, tab, group box title and item view cell must show its whole
+// every page of every family's device page (the parameter editor with a change waiting),
+// the overview and the device list. Every visible label, button, tab, group box title
+// and item view cell (a tree's expanded rows too) must show its whole
 // text (a text cut with "…" and the whole of it in the tooltip counts as shown), lie
 // within the widgets around it, and no device page may scroll sideways.
 #include "connectionbar.h"
@@ -10,6 +11,8 @@
 #include "mainwindow.h"
 #include "overviewpage.h"
 #include "models/livevaluesmodel.h"
+#include "models/parametereditmodel.h"
+#include "parametereditor.h"
 #include "protocol/translations.h"
 #include "testpeers.h"
 
@@ -30,6 +33,7 @@
 #include <QTableView>
 #include <QTest>
 #include <QTextDocument>
+#include <QTreeView>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -236,21 +240,50 @@ private:
             return;
         checkInside(view, QString());
         const QAbstractItemModel *model = view->model();
+        const auto *table = qobject_cast<QTableView *>(view);
+        const auto *list = qobject_cast<QListView *>(view);
+        const auto *tree = qobject_cast<QTreeView *>(view);
+        checkRows(view, view->rootIndex());
+        const QHeaderView *header = table ? table->horizontalHeader() : tree ? tree->header() : nullptr;
+        Q_UNUSED(list)
+        if (!header || !header->isVisible())
+            return;
+        const int headerMargin = header->style()->pixelMetric(QStyle::PM_HeaderMargin, nullptr, header);
+        for (int section = 0; section < header->count(); ++section) {
+            if (header->isSectionHidden(section))
+                continue;
+            const QString text = model->headerData(section, Qt::Horizontal).toString();
+            const int need = header->fontMetrics().horizontalAdvance(text) + 2 * headerMargin;
+            if (need > header->sectionSize(section) + 1)
+                m_cuts << Cut{describe(view), text, QStringLiteral("header narrower than its title (%1 > %2 px)")
+                                                           .arg(need).arg(header->sectionSize(section))};
+        }
+    }
+
+    // The rows under a parent, and in a tree those under each expanded row.
+    void checkRows(QAbstractItemView *view, const QModelIndex &parent)
+    {
+        const QAbstractItemModel *model = view->model();
         const QRect viewport = view->viewport()->rect();
         const auto *table = qobject_cast<QTableView *>(view);
         const auto *list = qobject_cast<QListView *>(view);
+        const auto *tree = qobject_cast<QTreeView *>(view);
         const bool wraps = (table && table->wordWrap()) || (list && list->wordWrap());
         const int margin = 2 * (view->style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, view) + 1);
-        for (int row = 0; row < model->rowCount(view->rootIndex()); ++row) {
-            for (int column = 0; column < model->columnCount(view->rootIndex()); ++column) {
-                if (table && table->isColumnHidden(column))
+        for (int row = 0; row < model->rowCount(parent); ++row) {
+            for (int column = 0; column < model->columnCount(parent); ++column) {
+                if ((table && table->isColumnHidden(column)) || (tree && tree->isColumnHidden(column)))
                     continue;
-                const QModelIndex index = model->index(row, column, view->rootIndex());
+                const QModelIndex index = model->index(row, column, parent);
                 const QRect rect = view->visualRect(index);
                 const QString text = index.data().toString();
                 if (text.isEmpty() || !rect.isValid() || !rect.intersects(viewport))
                     continue;
-                const QString where = QStringLiteral("%1 cell %2,%3").arg(describe(view)).arg(row).arg(column);
+                const QString where = QStringLiteral("%1 cell %2,%3%4")
+                                              .arg(describe(view))
+                                              .arg(row)
+                                              .arg(column)
+                                              .arg(parent.isValid() ? QStringLiteral(" under %1").arg(parent.row()) : QString());
                 if (rect.right() > viewport.right() + 1) {
                     m_cuts << Cut{where, text, QStringLiteral("runs past the view's right edge")};
                     continue;
@@ -282,19 +315,9 @@ private:
                     m_cuts << Cut{where, text, QStringLiteral("cell narrower than its text (%1 > %2 px) without the text in its tooltip")
                                                        .arg(need).arg(rect.width())};
             }
-        }
-        const QHeaderView *header = table ? table->horizontalHeader() : nullptr;
-        if (!header || !header->isVisible())
-            return;
-        const int headerMargin = header->style()->pixelMetric(QStyle::PM_HeaderMargin, nullptr, header);
-        for (int section = 0; section < header->count(); ++section) {
-            if (header->isSectionHidden(section))
-                continue;
-            const QString text = model->headerData(section, Qt::Horizontal).toString();
-            const int need = header->fontMetrics().horizontalAdvance(text) + 2 * headerMargin;
-            if (need > header->sectionSize(section) + 1)
-                m_cuts << Cut{describe(view), text, QStringLiteral("header narrower than its title (%1 > %2 px)")
-                                                           .arg(need).arg(header->sectionSize(section))};
+            const QModelIndex first = model->index(row, 0, parent);
+            if (tree && model->hasChildren(first) && tree->isExpanded(first))
+                checkRows(view, first);
         }
     }
 
@@ -432,6 +455,20 @@ void tst_LayoutFit::checkerFindsCutTexts()
     list->setFixedWidth(100);
     layout->addWidget(list);
 
+    // A tree: the rows under an expanded group are checked too.
+    auto *treeModel = new QStandardItemModel(0, 1, &window);
+    auto *group = new QStandardItem(QStringLiteral("Group"));
+    group->appendRow(new QStandardItem(longText));
+    treeModel->appendRow(group);
+    auto *tree = new QTreeView(&window);
+    tree->setObjectName("clippedTree");
+    tree->setModel(treeModel);
+    tree->header()->setStretchLastSection(false);
+    tree->setColumnWidth(0, 90);
+    tree->setMinimumHeight(80);
+    tree->expandAll();
+    layout->addWidget(tree);
+
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     settle();
@@ -446,6 +483,8 @@ void tst_LayoutFit::checkerFindsCutTexts()
     // In the table: the cell without its text in the tooltip, not the one with it.
     QVERIFY2(mentions(cuts, "narrowTable) cell 0,0"), qPrintable(found));
     QVERIFY2(!mentions(cuts, "narrowTable) cell 0,1"), qPrintable(found));
+    QVERIFY2(mentions(cuts, "clippedTree) cell 0,0 under 0"), qPrintable(found));
+    QVERIFY2(!mentions(cuts, "clippedTree) cell 0,0:"), qPrintable(found));
 
     // A page that scrolls sideways is found as well.
     QWidget holder;
@@ -513,6 +552,10 @@ void tst_LayoutFit::everyPageFits()
             QTRY_VERIFY_WITH_TIMEOUT(Validity(value.data(LiveValuesModel::ValidityRole).toInt()) == Validity::Current,
                                      30000);
         }
+        // The parameter editor with a change waiting: the mark, the bold value, the counts.
+        ParameterEditModel *parameters = page->parameters()->model();
+        const QString first = parameters->entryIds().value(0);
+        QVERIFY(parameters->setNewValue(first, QStringLiteral("1")) && parameters->isChanged(first));
         for (int tab = 0; tab < page->tabs()->count(); ++tab) {
             page->tabs()->setCurrentIndex(tab);
             settle();
