@@ -722,7 +722,7 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
         <translation>Gerät: %1</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+59"/>
         <source>&apos;%1&apos; is no number that can be read one way only; write it without thousands separators</source>
         <translation>„%1“ ist keine eindeutig lesbare Zahl; bitte ohne Tausenderpunkte schreiben</translation>
     </message>
@@ -942,7 +942,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Trend</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>Wrong device: %1. Its values are not shown and nothing is written to it until the device at this address is of the family it was added as.</source>
         <translation>Falsches Gerät: %1. Seine Werte werden nicht angezeigt und nichts wird geschrieben, bis das Gerät an dieser Adresse zu der Familie gehört, als die es hinzugefügt wurde.</translation>
     </message>
@@ -2063,13 +2063,13 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>&amp;Farbschema</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+61"/>
         <location line="+45"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-345"/>
+        <location line="-352"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -2109,12 +2109,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>NUR LESEN</translation>
     </message>
     <message>
-        <location line="+545"/>
+        <location line="+552"/>
         <source>Data logging of %1 stopped: %2</source>
         <translation>Datenaufzeichnung von %1 angehalten: %2</translation>
     </message>
     <message>
-        <location line="-509"/>
+        <location line="-516"/>
         <source>address %1: %2</source>
         <translation>Adresse %1: %2</translation>
     </message>
@@ -2237,7 +2237,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Nächster &amp;Reiter der Geräteseite</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+97"/>
         <source>Demo line failed: %1</source>
         <translation>Demo-Leitung fehlgeschlagen: %1</translation>
     </message>
@@ -2434,7 +2434,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::MapLoader</name>
     <message>
-        <location filename="../lib/protocol/maploader.cpp" line="+35"/>
+        <location filename="../lib/protocol/maploader.cpp" line="+38"/>
         <source>malformed JSON at byte %1: %2</source>
         <translation>fehlerhaftes JSON bei Byte %1: %2</translation>
     </message>
@@ -2449,7 +2449,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>die oberste Ebene muss ein JSON-Objekt sein</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/jsonfieldreader.cpp" line="+53"/>
+        <location filename="../lib/protocol/jsonfieldreader.cpp" line="+52"/>
         <source>unknown key &apos;%1&apos;</source>
         <translation>unbekannter Schlüssel &apos;%1&apos;</translation>
     </message>
@@ -2596,13 +2596,13 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     <message>
         <location line="-208"/>
         <location line="+209"/>
-        <location line="+302"/>
+        <location line="+369"/>
         <location filename="../lib/protocol/overlapcheck.cpp" line="+70"/>
         <source>entry &apos;%1&apos; (%2)</source>
         <translation>Eintrag &apos;%1&apos; (%2)</translation>
     </message>
     <message>
-        <location line="-292"/>
+        <location line="-359"/>
         <source>id must be lower case letters, digits and &apos;_&apos;</source>
         <translation>die Kennung darf nur aus Kleinbuchstaben, Ziffern und &apos;_&apos; bestehen</translation>
     </message>
@@ -2742,7 +2742,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>eine Aktion braucht einen beschreibbaren Eintrag</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>&apos;values&apos; is only for enums</source>
         <translation>&apos;values&apos; ist nur für Enums zulässig</translation>
     </message>
@@ -2755,6 +2755,41 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+8"/>
         <source>enum value &apos;%1&apos; must be a number 0..65535 with a text</source>
         <translation>Enum-Wert &apos;%1&apos; muss eine Zahl 0..65535 mit einem Text sein</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>&apos;default&apos; is only for writable entries</source>
+        <translation>&apos;default&apos; gibt es nur für beschreibbare Einträge</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&apos;default&apos; is only for numbers, enums and booleans</source>
+        <translation>&apos;default&apos; gibt es nur für Zahlen, Aufzählungen und Wahrheitswerte</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&apos;default&apos; of a boolean must be true or false, not %1</source>
+        <translation>&apos;default&apos; eines Wahrheitswerts muss true oder false sein, nicht %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&apos;default&apos; must be a number, not %1</source>
+        <translation>&apos;default&apos; muss eine Zahl sein, nicht %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;default&apos; %1 is none of the enum&apos;s values</source>
+        <translation>&apos;default&apos; %1 ist keiner der Werte der Aufzählung</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>&apos;default&apos; of a %1 must be a whole number, not %2</source>
+        <translation>&apos;default&apos; eines %1 muss eine ganze Zahl sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&apos;default&apos; %1 is outside the entry&apos;s range %2..%3</source>
+        <translation>&apos;default&apos; %1 liegt außerhalb des Bereichs %2..%3 des Eintrags</translation>
     </message>
     <message>
         <location line="+11"/>
@@ -3533,7 +3568,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::Theme</name>
     <message>
-        <location filename="../ui/theme.cpp" line="+230"/>
+        <location filename="../ui/theme.cpp" line="+268"/>
         <source>&amp;System</source>
         <translation>&amp;System</translation>
     </message>
@@ -3626,7 +3661,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::TrendView</name>
     <message>
-        <location filename="../ui/trendview.cpp" line="+50"/>
+        <location filename="../ui/trendview.cpp" line="+51"/>
         <source>1 minute</source>
         <translation>1 Minute</translation>
     </message>
@@ -3667,12 +3702,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+67"/>
         <source>Value (no unit)</source>
         <translation>Wert (ohne Einheit)</translation>
     </message>
