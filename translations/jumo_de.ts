@@ -432,18 +432,18 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
 <context>
     <name>jumo::CommissioningReport</name>
     <message>
-        <location filename="../lib/commissioning/commissioningreport.cpp" line="+380"/>
+        <location filename="../lib/commissioning/commissioningreport.cpp" line="+381"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="-156"/>
-        <location line="+254"/>
+        <location line="-157"/>
+        <location line="+255"/>
         <source>Commissioning report</source>
         <translation>Inbetriebnahmebericht</translation>
     </message>
     <message>
-        <location line="-337"/>
+        <location line="-338"/>
         <source>%1 (none set)</source>
         <translation>%1 (keines gesetzt)</translation>
     </message>
@@ -499,12 +499,12 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
     </message>
     <message>
         <location line="+0"/>
-        <location line="+217"/>
+        <location line="+218"/>
         <source>Date</source>
         <translation>Datum</translation>
     </message>
     <message>
-        <location line="-216"/>
+        <location line="-217"/>
         <source>Cabinet</source>
         <translation>Schaltschrank</translation>
     </message>
@@ -516,7 +516,7 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
     <message>
         <location line="+1"/>
         <source>Device tag</source>
-        <translation>Gerätekennzeichen</translation>
+        <translation>Kennzeichen</translation>
     </message>
     <message>
         <location line="+0"/>
@@ -544,7 +544,7 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
         <translation>Software</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Identity</source>
         <translation>Identität</translation>
     </message>

@@ -253,10 +253,11 @@ QString CommissioningReport::titleBlock() const
     };
     QString h = QStringLiteral("<table class=\"title\" width=\"100%\" border=\"1\" cellspacing=\"0\" cellpadding=\"4\" "
                                "style=\"border-collapse:collapse;border-color:#999999\">");
+    // Labels wide enough for a long German word ("Inbetriebnehmer") in one line.
     for (const auto &r : rows) {
-        h += QStringLiteral("<tr>") + cell(r[0], QStringLiteral("width=\"13%\" class=\"label\""))
-                + cell(r[1], QStringLiteral("width=\"37%\"")) + cell(r[2], QStringLiteral("width=\"13%\" class=\"label\""))
-                + cell(r[3], QStringLiteral("width=\"37%\"")) + QStringLiteral("</tr>");
+        h += QStringLiteral("<tr>") + cell(r[0], QStringLiteral("width=\"17%\" class=\"label\""))
+                + cell(r[1], QStringLiteral("width=\"33%\"")) + cell(r[2], QStringLiteral("width=\"17%\" class=\"label\""))
+                + cell(r[3], QStringLiteral("width=\"33%\"")) + QStringLiteral("</tr>");
     }
     h += QStringLiteral("</table>");
     return h;
@@ -487,7 +488,7 @@ QString CommissioningReport::html() const
                         "table{border-collapse:collapse}"
                         "th{background-color:#e8e8e8;text-align:left}"
                         "td{vertical-align:top}"
-                        "td.label{background-color:#f0f0f0;font-weight:bold}"
+                        "td.label{background-color:#f0f0f0;font-weight:bold;font-size:8pt}"
                         "td.differs{font-weight:bold}"
                         "p.note{color:#333333;margin-top:2px;margin-bottom:4px}"
                         "p.warning{margin-top:2px;margin-bottom:4px}"

@@ -1232,6 +1232,42 @@ void tst_Hmi::commissioningReportFromTheMenu()
     // A folder that does not exist: said, nothing written.
     QVERIFY(!window->writeReport("ipc300", 1, m_dir.filePath("missing/report.pdf"), again, &error));
     QVERIFY2(error.contains("missing/report.pdf"), qPrintable(error));
+
+    // The device stops answering: its values are reported as unknown, with why and what
+    // was last known, never as current.
+    const auto voltage = [&] { return window->bus()->entryState(id, "load_voltage")->validity; };
+    m_sim.setFault(1, "dead", -1, 0);
+    const auto alive = qScopeGuard([&] { m_sim.setFault(1, "none", -1, 0); });
+    QTRY_COMPARE_WITH_TIMEOUT(voltage(), Validity::Unknown, 20000);
+    const QString offline = m_dir.filePath("ipc-offline.html");
+    QVERIFY2(window->writeReport("ipc300", 1, offline, again, &error), qPrintable(error));
+    QFile offlineFile(offline);
+    QVERIFY(offlineFile.open(QIODevice::ReadOnly));
+    const QString offlineText = QString::fromUtf8(offlineFile.readAll());
+    const QRegularExpression voltageRow(QStringLiteral("<tr><td>Load voltage</td><td>([^<]*)</td><td>([^<]*)</td></tr>"));
+    const QRegularExpressionMatch row = voltageRow.match(offlineText);
+    QVERIFY2(row.hasMatch(), qPrintable(offlineText));
+    QCOMPARE(row.captured(1), ValueText::noValue());
+    // ("No answer" until the device counts as offline, then "Device not answering".)
+    QVERIFY2(QRegularExpression("^(No answer|Device not answering); last known: [0-9.]+ V$").match(row.captured(2)).hasMatch(),
+             qPrintable(row.captured(2)));
+    QVERIFY(offlineText.contains("their alarms are not known"));
+
+    // A full disk: said, and the earlier report left as it was.
+    SmallDisk disk;
+    if (!disk.mount())
+        return;   // (needs root: tst_jumoctl_line and tst_files cover the full disk too)
+    const QString onDisk = disk.filePath("report.pdf");
+    QVERIFY2(window->writeReport("ipc300", 1, onDisk, again, &error), qPrintable(error));
+    QFile before(onDisk);
+    QVERIFY(before.open(QIODevice::ReadOnly));
+    const QByteArray earlier = before.readAll();
+    before.close();
+    disk.fill();
+    QVERIFY(!window->writeReport("ipc300", 1, onDisk, again, &error));
+    QVERIFY2(error.contains("No space left on device"), qPrintable(error));
+    QVERIFY(before.open(QIODevice::ReadOnly));
+    QCOMPARE(before.readAll(), earlier);
 }
 
 QTEST_MAIN(tst_Hmi)

@@ -323,8 +323,8 @@ void tst_JumoctlLine::reportAsHtmlAndPdf()
     QVERIFY(text.contains("IGBT break"));                  // an active alarm
     QVERIFY(text.contains("<td>Limit value for max. alarm</td><td>"));   // the write of today...
     QVERIFY(text.contains("<td>55.0</td><td>confirmed by read-back</td>"));
-    QVERIFY(text.contains("<td width=\"37%\">19200 baud, 8N1, port "));   // the line in the title block
-    QVERIFY(text.contains("<td width=\"37%\">jumoctl "));
+    QVERIFY(text.contains("<td width=\"33%\">19200 baud, 8N1, port "));   // the line in the title block
+    QVERIFY(text.contains("<td width=\"33%\">jumoctl "));
 
     // PDF needs QtGui: the test process is GUI-less, so the real executable makes it.
     QProcess p;

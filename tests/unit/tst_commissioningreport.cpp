@@ -128,17 +128,17 @@ void tst_CommissioningReport::titleBlockAsEnteredAndEscaped()
     QVERIFY(!html.contains("<script>"));
     QVERIFY(!html.contains("<North>"));
     QVERIFY(rowOf(html, "Site").contains("Plant &lt;North&gt;"));
-    QVERIFY2(rowOf(html, "Site").contains("<td width=\"37%\">3/14/2025 9:26:53 AM</td>"), qPrintable(rowOf(html, "Site")));   // the date beside it
+    QVERIFY2(rowOf(html, "Site").contains("<td width=\"33%\">3/14/2025 9:26:53 AM</td>"), qPrintable(rowOf(html, "Site")));   // the date beside it
     QVERIFY(rowOf(html, "Cabinet").contains("=A1+B2"));
     QVERIFY(rowOf(html, "Device tag").contains("TIC-101"));
-    QVERIFY(rowOf(html, "Device tag").contains("<td width=\"37%\">1</td>"));   // the address
+    QVERIFY(rowOf(html, "Device tag").contains("<td width=\"33%\">1</td>"));   // the address
     QVERIFY(rowOf(html, "Device").contains("JUMO IPC 300 electronic transformer"));
     QVERIFY(rowOf(html, "Device").contains("19200 baud, 8E1, port /dev/ttyUSB0"));
     QVERIFY(rowOf(html, "Models").contains("jumoctl 0.1.0"));
     QVERIFY(html.contains("<title>Commissioning report TIC-101</title>"));
     // Fields left empty show as such, not as a blank that could be filled in later.
     const QString empty = ipcReport(states);
-    QVERIFY(rowOf(empty, "Site").contains(QStringLiteral("<td width=\"37%\">\u2014</td>")));
+    QVERIFY(rowOf(empty, "Site").contains(QStringLiteral("<td width=\"33%\">\u2014</td>")));
 }
 
 void tst_CommissioningReport::defaultsAreTheManuals()
