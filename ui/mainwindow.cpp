@@ -3,6 +3,7 @@
 #include "adddevicedialog.h"
 #include "commissioning/commissioningreport.h"
 #include "reportwriter.h"
+#include "reportdetailsdialog.h"
 #include "models/alarmbitsmodel.h"
 #include "connectionbar.h"
 #include "logs/datalogger.h"
@@ -27,6 +28,7 @@
 
 #include <QApplication>
 #include <QFileDialog>
+#include <QRegularExpression>
 #include <QCloseEvent>
 #include <QGridLayout>
 #include <QLabel>
@@ -286,10 +288,23 @@ void MainWindow::buildMenus()
             return;
         }
         const DeviceId id = m_devices[index].id;
-        const QString path = QFileDialog::getSaveFileName(this, tr("Commissioning report"), QString(),
+        const QString family = m_bus.deviceMap(id)->family;
+        const quint8 address = m_bus.deviceAddress(id);
+        ReportDetailsDialog details(QStringLiteral("%1 @ %2").arg(m_bus.deviceMap(id)->shortName).arg(address),
+                                    reportTitle(family, address), this);
+        details.setObjectName(QStringLiteral("reportDetailsDialog"));
+        if (details.exec() != QDialog::Accepted)
+            return;
+        const ReportTitle title = details.title();
+        rememberReportTitle(family, address, title);
+        // A name that says what it is: the tag (or the device) and the day.
+        QString name = title.tag.isEmpty() ? QStringLiteral("%1-%2").arg(family).arg(address) : title.tag;
+        name.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9._-]+")), QStringLiteral("_"));
+        const QString suggested = tr("commissioning-report-%1-%2.pdf").arg(name, QDate::currentDate().toString(Qt::ISODate));
+        const QString path = QFileDialog::getSaveFileName(this, tr("Commissioning report"), suggested,
                                                           tr("PDF (*.pdf);;HTML (*.html)"));
         QString error;
-        if (!path.isEmpty() && !writeReport(m_bus.deviceMap(id)->family, m_bus.deviceAddress(id), path, &error))
+        if (!path.isEmpty() && !writeReport(family, address, path, title, &error))
             QMessageBox::warning(this, tr("Report"), error);
     });
 
@@ -691,7 +706,25 @@ void MainWindow::openScanDialog()
     dialog->show();
 }
 
-bool MainWindow::writeReport(const QString &family, quint8 address, const QString &path, QString *error)
+ReportTitle MainWindow::reportTitle(const QString &family, quint8 address)
+{
+    QSettings &s = settings();
+    return {s.value(QStringLiteral("report/site")).toString(), s.value(QStringLiteral("report/cabinet")).toString(),
+            s.value(QStringLiteral("report/tags/%1@%2").arg(family).arg(address)).toString(),
+            s.value(QStringLiteral("report/engineer")).toString()};
+}
+
+void MainWindow::rememberReportTitle(const QString &family, quint8 address, const ReportTitle &title)
+{
+    QSettings &s = settings();
+    s.setValue(QStringLiteral("report/site"), title.site);
+    s.setValue(QStringLiteral("report/cabinet"), title.cabinet);
+    s.setValue(QStringLiteral("report/tags/%1@%2").arg(family).arg(address), title.tag);
+    s.setValue(QStringLiteral("report/engineer"), title.engineer);
+}
+
+bool MainWindow::writeReport(const QString &family, quint8 address, const QString &path, const ReportTitle &title,
+                             QString *error)
 {
     for (const DeviceEntry &d : std::as_const(m_devices)) {
         if (m_bus.deviceMap(d.id)->family != family || m_bus.deviceAddress(d.id) != address)
@@ -704,8 +737,13 @@ bool MainWindow::writeReport(const QString &family, quint8 address, const QStrin
             if (r.value("device").toString() == device)
                 writes << r;
         }
-        report.setWrites(writes);
-        return jumo::writeReport(report.html(), path, error);
+        report.setWrites(writes, m_sessionStart);
+        report.setTitle(title);
+        report.setLine(m_bus.settings());
+        report.setSoftware(QStringLiteral("%1 %2").arg(tr("JUMO HMI"), QStringLiteral(JUMO_VERSION)));
+        const ReportWriter::Pages pages{tr("Commissioning report of %1").arg(device), report.pageHeader(),
+                                        report.pageFooter()};
+        return ReportWriter::write(report.html(), path, pages, error);
     }
     if (error)
         *error = tr("no device %1@%2").arg(family).arg(address);

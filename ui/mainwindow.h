@@ -4,7 +4,9 @@
 #pragma once
 
 #include "bus/bus.h"
+#include "commissioning/commissioningreport.h"
 
+#include <QDateTime>
 #include <QJsonObject>
 #include <QMap>
 #include <QMainWindow>
@@ -76,7 +78,12 @@ public:
     void showOverview();
     void openScanDialog();
     // The commissioning report of a device, with the writes since this window opened.
-    bool writeReport(const QString &family, quint8 address, const QString &path, QString *error);
+    bool writeReport(const QString &family, quint8 address, const QString &path, const ReportTitle &title,
+                     QString *error);
+    // The title block offered for a device's next report: what was given last time (the
+    // tag per device, the rest for every device).
+    ReportTitle reportTitle(const QString &family, quint8 address);
+    void rememberReportTitle(const QString &family, quint8 address, const ReportTitle &title);
 
 signals:
     void demoReady();
@@ -153,6 +160,7 @@ private:
     int m_unloggedRecords = 0;
     QMap<QString, QString> m_logFailures;
     QList<QJsonObject> m_sessionWrites;   // audit records appended by this window
+    QDateTime m_sessionStart = QDateTime::currentDateTime();
     mutable QList<DeviceEntry> m_devices;
     int m_requestsAtLastStatus = 0;
     QString m_lastError;

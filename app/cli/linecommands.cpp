@@ -17,6 +17,7 @@
 #include "protocol/printable.h"
 #include "protocol/regularfile.h"
 #include "reportwriter.h"
+#include "jumoversion.h"
 #include "logs/writeaudit.h"
 #include "modbuslogging.h"
 #include "systemsettings.h"
@@ -921,9 +922,15 @@ void LineCommands::startRestore(const QList<ParameterDifference> &differences)
 std::optional<int> LineCommands::report(const QStringList &arguments)
 {
     CommandParser parser(QStringLiteral("report"),
-                         tr("Writes the commissioning report of a device: identity, parameters, live values, active "
-                            "alarms and today's writes. FILE ending in .pdf gives PDF, else HTML."));
+                         tr("Writes the commissioning report of a device, a document to sign: a title block (site, "
+                            "cabinet, tag, engineer, date, device, line), identity, parameters with the manual's "
+                            "defaults, live values, active alarms, today's writes and signature lines. FILE ending in "
+                            ".pdf gives PDF (A4, numbered pages), else HTML."));
     addLineOptions(parser);
+    parser.addOption({QStringLiteral("site"), tr("Site for the report's title block (the plant, the hall)."), tr("text")});
+    parser.addOption({QStringLiteral("cabinet"), tr("Cabinet or panel the device is in."), tr("text")});
+    parser.addOption({QStringLiteral("tag"), tr("The device's tag in the plant, e.g. TIC-101."), tr("text")});
+    parser.addOption({QStringLiteral("engineer"), tr("Name of the commissioning engineer."), tr("name")});
     parser.addPositionalArgument(QStringLiteral("device"), tr("FAMILY@ADDRESS, e.g. ipc300@1."));
     parser.addPositionalArgument(QStringLiteral("file"), tr("Report file (.pdf or .html)."));
     if (const auto stop = parser.parseArguments(arguments, m_out, m_err, 2, 2))
@@ -934,17 +941,19 @@ std::optional<int> LineCommands::report(const QStringList &arguments)
     if (const auto stop = openLine(parser))
         return stop;
     const QString path = parser.positionalArguments().at(1);
+    const ReportTitle title{parser.value(QStringLiteral("site")), parser.value(QStringLiteral("cabinet")),
+                            parser.value(QStringLiteral("tag")), parser.value(QStringLiteral("engineer"))};
     m_targets = {target};
-    m_identity->pass(claims(), [this, path] { startReport(path); }, [this](int code) { finish(code); });
+    m_identity->pass(claims(), [this, path, title] { startReport(path, title); }, [this](int code) { finish(code); });
     return std::nullopt;
 }
 
-void LineCommands::startReport(const QString &path)
+void LineCommands::startReport(const QString &path, const ReportTitle &title)
 {
     Target &target = m_targets.first();
     m_bus.setPolling(false);
     target.id = m_bus.addDevice(target.map, target.address);
-    connect(&m_bus, &Bus::pollCycleFinished, this, [this, path](DeviceId id, double) {
+    connect(&m_bus, &Bus::pollCycleFinished, this, [this, path, title](DeviceId id, double) {
         const Target &t = m_targets.first();
         if (id != t.id)
             return;
@@ -974,9 +983,13 @@ void LineCommands::startReport(const QString &path)
             finish(exitcode::Failed);
             return;
         }
-        report.setWrites(writes);
+        report.setWrites(writes, since);
+        report.setTitle(title);
+        report.setLine(m_bus.settings());
+        report.setSoftware(QStringLiteral("jumoctl %1").arg(QStringLiteral(JUMO_VERSION)));
         QString error;
-        if (!writeReport(report.html(), path, &error)) {
+        const ReportWriter::Pages pages{tr("Commissioning report of %1").arg(device), report.pageHeader(), report.pageFooter()};
+        if (!ReportWriter::write(report.html(), path, pages, &error)) {
             m_err << error << Qt::endl;
             finish(1);
             return;

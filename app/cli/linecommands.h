@@ -4,6 +4,7 @@
 
 #include "bus/bus.h"
 #include "bus/identitycheck.h"
+#include "commissioning/commissioningreport.h"
 #include "commissioning/parameterset.h"
 #include "writeassignment.h"
 
@@ -64,7 +65,7 @@ private:
     std::optional<int> monitor(const QStringList &arguments);
     void startMonitor(const QStringList &ids, int interval);
     std::optional<int> report(const QStringList &arguments);
-    void startReport(const QString &path);
+    void startReport(const QString &path, const ReportTitle &title);
     // The targets as claims for the identity check.
     QList<IdentityCheck::Claim> claims() const;
     std::optional<int> parameters(const QString &command, const QStringList &arguments);

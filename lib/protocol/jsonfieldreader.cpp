@@ -30,15 +30,14 @@ const QRegularExpression &decimalPattern()
     return pattern;
 }
 
-// A JSON value as the file spells it, for messages.
-QString shown(const QJsonValue &value)
+} // namespace
+
+QString JsonFieldReader::shown(const QJsonValue &value)
 {
     if (value.isString())
         return value.toString();
     return QString::fromUtf8(QJsonDocument(QJsonArray{value}).toJson(QJsonDocument::Compact)).mid(1).chopped(1);
 }
-
-} // namespace
 
 void JsonFieldReader::fail(const QString &where, const QString &problem)
 {

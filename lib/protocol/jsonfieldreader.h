@@ -43,6 +43,8 @@ public:
     std::optional<quint16> parseHex16(const QJsonValue &value, const QString &key, const QString &where);
     // A decimal key of an object ("2", not "02" or " 2"), within [minimum, maximum].
     static std::optional<int> decimalKey(const QString &key, int minimum, int maximum);
+    // A JSON value as the file spells it, for messages.
+    static QString shown(const QJsonValue &value);
     // Lower case letters, digits and '_', starting with a letter; the whole string.
     static bool isId(const QString &text);
     // Where the text has a raw control character (JSON allows only tab, CR and LF

@@ -12,6 +12,9 @@
 #include <QLoggingCategory>
 #include <QSet>
 
+#include <cmath>
+#include <limits>
+
 Q_LOGGING_CATEGORY(lcMap, "jumo.map", QtWarningMsg)
 
 namespace jumo {
@@ -479,7 +482,7 @@ private:
 
         checkKeys(o, {"address", "id", "label", "type", "bytes", "words", "access", "storage", "unit", "configuredUnit",
                       "decimals", "significantDigits", "group", "min", "max", "values", "bits", "activation", "action", "control", "restoreValue", "precondition",
-                      "reserved", "alias", "notes", "erratum"},
+                      "reserved", "alias", "notes", "erratum", "default"},
                   where);
         e.address = parseHex16(o.value("address"), "address", where).value_or(0);
         e.id = requireString(o, "id", where);
@@ -562,6 +565,7 @@ private:
 
         parseEnumValues(o, e, where);
         parseBits(o, e, where);
+        parseDefault(o, e, where);
 
         if (errors().size() != errorsBefore)
             return std::nullopt;
@@ -589,6 +593,72 @@ private:
             else
                 e.enumValues.insert(*key, it.value().toString());
         }
+    }
+
+    // "default": what the manual gives as the factory setting or the value after power
+    // on; a value the entry can hold, of its own JSON type (a number, an enum's value,
+    // true or false), within its range.
+    void parseDefault(const QJsonObject &o, RegisterEntry &e, const QString &where)
+    {
+        const QJsonValue v = o.value("default");
+        if (v.isUndefined())
+            return;
+        if (!e.isWritable() || e.reserved) {
+            fail(where, tr("'default' is only for writable entries"));
+            return;
+        }
+        const auto shown = [&v] {
+            return v.isString() ? QStringLiteral("'%1'").arg(v.toString().left(40)) : JsonFieldReader::shown(v).left(40);
+        };
+        switch (e.type) {
+        case ValueType::Text:
+        case ValueType::Bitfield:
+            fail(where, tr("'default' is only for numbers, enums and booleans"));
+            return;
+        case ValueType::Bool:
+            if (!v.isBool()) {
+                fail(where, tr("'default' of a boolean must be true or false, not %1").arg(shown()));
+                return;
+            }
+            e.defaultValue = v.toBool() ? 1 : 0;
+            return;
+        default:
+            break;
+        }
+        const double d = v.toDouble();
+        if (!v.isDouble() || !std::isfinite(d)) {
+            fail(where, tr("'default' must be a number, not %1").arg(shown()));
+            return;
+        }
+        if (e.type == ValueType::Enum) {
+            if (d != std::floor(d) || d < 0 || d > 0xFFFF || !e.enumValues.contains(int(d)))
+                fail(where, tr("'default' %1 is none of the enum's values").arg(shown()));
+            else
+                e.defaultValue = d;
+            return;
+        }
+        double low = -std::numeric_limits<float>::max();
+        double high = std::numeric_limits<float>::max();
+        switch (e.type) {
+        case ValueType::Int16: low = -32768; high = 32767; break;
+        case ValueType::UInt16: low = 0; high = 65535; break;
+        case ValueType::Int32: low = -2147483648.0; high = 2147483647.0; break;
+        case ValueType::UInt32: low = 0; high = 4294967295.0; break;
+        default: break;
+        }
+        if (e.type != ValueType::Float && d != std::floor(d)) {
+            fail(where, tr("'default' of a %1 must be a whole number, not %2").arg(valueTypeName(e.type), shown()));
+            return;
+        }
+        if (e.minimum)
+            low = std::max(low, *e.minimum);
+        if (e.maximum)
+            high = std::min(high, *e.maximum);
+        if (d < low || d > high) {
+            fail(where, tr("'default' %1 is outside the entry's range %2..%3").arg(shown()).arg(low).arg(high));
+            return;
+        }
+        e.defaultValue = d;
     }
 
     void parseBits(const QJsonObject &o, RegisterEntry &e, const QString &where)

@@ -99,6 +99,9 @@ struct RegisterEntry
     bool action = false;
     QString control;
     std::optional<double> restoreValue;
+    // What the manual gives as the factory setting, or for a value the device keeps in
+    // RAM as the value after power on; bools as 0 or 1, enums as their value.
+    std::optional<double> defaultValue;
     QString precondition;
     bool reserved = false;
     QString alias;

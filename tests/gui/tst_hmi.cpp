@@ -33,6 +33,7 @@
 #include "parametereditor.h"
 #include "parametersdialog.h"
 #include "parameterwritepreview.h"
+#include "reportdetailsdialog.h"
 #include "logs/datalogger.h"
 #include "models/valuetext.h"
 #include "scandialog.h"
@@ -45,6 +46,7 @@
 #include <QTabWidget>
 #include <QCheckBox>
 #include <QElapsedTimer>
+#include <QFileDialog>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
@@ -227,6 +229,7 @@ private slots:
     void parameterEditorInReadOnlyModeWritesNothing();
     void parameterEditorWaitsForAnOfflineDevice();
     void parameterEditorClosedMidWriteSendsNoMore();
+    void commissioningReportFromTheMenu();
 
 private:
     // A window connected to the line with the IPC 300 at address 1 on its page.
@@ -1341,6 +1344,17 @@ void tst_Hmi::mnemonicsAreUnique()
         }
         check(menu->title(), keys);
     }
+    // The report's title block dialog: its labels and buttons.
+    ReportDetailsDialog details(QStringLiteral("IPC 300 @ 1"), {}, &window);
+    QList<QPair<QString, QString>> detailKeys;
+    for (QLabel *label : details.findChildren<QLabel *>()) {
+        if (label->buddy())
+            detailKeys << qMakePair(letter(label->text()), label->text());
+    }
+    for (QAbstractButton *button : details.findChildren<QAbstractButton *>())
+        detailKeys << qMakePair(letter(button->text()), button->text());
+    QCOMPARE(detailKeys.size(), 6);
+    check(details.windowTitle(), detailKeys);
     QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(QLatin1Char('\n'))));
 }
 
@@ -1769,6 +1783,113 @@ void tst_Hmi::parameterEditorClosedMidWriteSendsNoMore()
     // At most the write that was under way when the page went; nothing after it.
     QVERIFY2(m_sim.writeFrames() - atClose <= 1, qPrintable(QString::number(m_sim.writeFrames() - atClose)));
     QVERIFY(m_sim.writeFrames() - writesBefore < ids.size());
+}
+
+void tst_Hmi::commissioningReportFromTheMenu()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    const DeviceId id = window->devicePage("ipc300", 1)->device();
+    QTRY_VERIFY_WITH_TIMEOUT(window->bus()->entryState(id, "load_voltage")
+                                     && window->bus()->entryState(id, "load_voltage")->isCurrent(), 20000);
+    const QString path = m_dir.filePath("ipc-report.pdf");
+    QFile::remove(path);
+    QAction *action = nullptr;
+    for (QAction *a : window->findChildren<QAction *>()) {
+        if (a->shortcut() == QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R))
+            action = a;
+    }
+    QVERIFY(action);
+
+    // The dialogs come one after the other: the title block, then the file.
+    QStringList answered;
+    int polls = 0;
+    std::function<void()> answer = [&] {
+        QWidget *modal = QApplication::activeModalWidget();
+        if (auto *details = qobject_cast<ReportDetailsDialog *>(modal)) {
+            answered << QStringLiteral("details:") + details->findChild<QLineEdit *>("siteEdit")->text();
+            details->findChild<QLineEdit *>("siteEdit")->setText("Plant <North> & Co");
+            details->findChild<QLineEdit *>("cabinetEdit")->setText("=A1");
+            details->findChild<QLineEdit *>("tagEdit")->setText("TIC/101");
+            details->findChild<QLineEdit *>("engineerEdit")->setText("Erika Mustermann");
+            details->accept();
+        } else if (auto *files = qobject_cast<QFileDialog *>(modal)) {
+            // The file name offered says what the file is; the test's own is typed over it.
+            auto *name = files->findChild<QLineEdit *>(QStringLiteral("fileNameEdit"));
+            answered << QStringLiteral("file:") + name->text();
+            name->setText(path);
+            static_cast<QDialog *>(files)->accept();   // QFileDialog::accept, which checks the name
+            return;
+        }
+        if (++polls < 200)
+            QTimer::singleShot(50, this, answer);
+    };
+    QTimer::singleShot(50, this, answer);
+    action->trigger();
+    QCOMPARE(answered.size(), 2);
+    QCOMPARE(answered.at(0), QString("details:"));
+    QVERIFY2(answered.at(1).startsWith("file:commissioning-report-TIC_101-"), qPrintable(answered.at(1)));
+    QFile pdf(path);
+    QVERIFY(pdf.open(QIODevice::ReadOnly));
+    QVERIFY(pdf.read(5) == "%PDF-");
+
+    // Remembered for the next report: the site, cabinet and engineer for every device, the tag for this one.
+    const ReportTitle again = window->reportTitle("ipc300", 1);
+    QCOMPARE(again.site, QString("Plant <North> & Co"));
+    QCOMPARE(again.tag, QString("TIC/101"));
+    QCOMPARE(again.engineer, QString("Erika Mustermann"));
+    QCOMPARE(window->reportTitle("tya200", 2).tag, QString());
+    QCOMPARE(window->reportTitle("tya200", 2).site, QString("Plant <North> & Co"));
+
+    // The same report as HTML: the title block as entered, values with units.
+    QString error;
+    const QString html = m_dir.filePath("ipc-report.html");
+    QVERIFY2(window->writeReport("ipc300", 1, html, again, &error), qPrintable(error));
+    QFile file(html);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(file.readAll());
+    QVERIFY(text.contains("Plant &lt;North&gt; &amp; Co"));
+    QVERIFY(text.contains("<td>Load voltage</td><td>") && text.contains(" V</td><td>current</td>"));
+    QVERIFY(text.contains("19200 baud, 8N1"));
+    // A folder that does not exist: said, nothing written.
+    QVERIFY(!window->writeReport("ipc300", 1, m_dir.filePath("missing/report.pdf"), again, &error));
+    QVERIFY2(error.contains("missing/report.pdf"), qPrintable(error));
+
+    // The device stops answering: its values are reported as unknown, with why and what
+    // was last known, never as current.
+    const auto voltage = [&] { return window->bus()->entryState(id, "load_voltage")->validity; };
+    m_sim.setFault(1, "dead", -1, 0);
+    const auto alive = qScopeGuard([&] { m_sim.setFault(1, "none", -1, 0); });
+    QTRY_COMPARE_WITH_TIMEOUT(voltage(), Validity::Unknown, 20000);
+    const QString offline = m_dir.filePath("ipc-offline.html");
+    QVERIFY2(window->writeReport("ipc300", 1, offline, again, &error), qPrintable(error));
+    QFile offlineFile(offline);
+    QVERIFY(offlineFile.open(QIODevice::ReadOnly));
+    const QString offlineText = QString::fromUtf8(offlineFile.readAll());
+    const QRegularExpression voltageRow(QStringLiteral("<tr><td>Load voltage</td><td>([^<]*)</td><td>([^<]*)</td></tr>"));
+    const QRegularExpressionMatch row = voltageRow.match(offlineText);
+    QVERIFY2(row.hasMatch(), qPrintable(offlineText));
+    QCOMPARE(row.captured(1), ValueText::noValue());
+    // ("No answer" until the device counts as offline, then "Device not answering".)
+    QVERIFY2(QRegularExpression("^(No answer|Device not answering); last known: [0-9.]+ V$").match(row.captured(2)).hasMatch(),
+             qPrintable(row.captured(2)));
+    QVERIFY(offlineText.contains("their alarms are not known"));
+
+    // A full disk: said, and the earlier report left as it was.
+    SmallDisk disk;
+    if (!disk.mount())
+        return;   // (needs root: tst_jumoctl_line and tst_files cover the full disk too)
+    const QString onDisk = disk.filePath("report.pdf");
+    QVERIFY2(window->writeReport("ipc300", 1, onDisk, again, &error), qPrintable(error));
+    QFile before(onDisk);
+    QVERIFY(before.open(QIODevice::ReadOnly));
+    const QByteArray earlier = before.readAll();
+    before.close();
+    disk.fill();
+    QVERIFY(!window->writeReport("ipc300", 1, onDisk, again, &error));
+    QVERIFY2(error.contains("No space left on device"), qPrintable(error));
+    QVERIFY(before.open(QIODevice::ReadOnly));
+    QCOMPARE(before.readAll(), earlier);
 }
 
 QTEST_MAIN(tst_Hmi)

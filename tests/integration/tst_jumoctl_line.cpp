@@ -10,6 +10,7 @@
 #include <QJsonObject>
 #include <QRegularExpression>
 #include <QScopeGuard>
+#include <QStandardPaths>
 #include <QTest>
 
 #include <csignal>
@@ -36,6 +37,7 @@ private slots:
     void backupChangeDiffRestore();
     void restoreRefusesOtherFamilyAndVersion();
     void reportAsHtmlAndPdf();
+    void reportIsADocumentToSign();
     void wrongFamilyIsRefused_data();
     void wrongFamilyIsRefused();
     void noIdentifyIsAudited();
@@ -315,10 +317,14 @@ void tst_JumoctlLine::reportAsHtmlAndPdf()
     const QString text = QString::fromUtf8(html.readAll());
     QVERIFY(text.contains("Commissioning report"));
     QVERIFY(text.contains("SIM-0000001"));                 // identity: fabrication number
-    QVERIFY(text.contains("<td>max_alarm_limit</td>"));    // a parameter...
-    QVERIFY(text.contains("<td>55 A</td>") || text.contains("<td>55</td>"));
+    // A parameter by its label, in the unit of what the alarm monitors (set on the device).
+    QVERIFY2(text.contains("<td>Limit value for max. alarm</td><td>55.0</td>"), qPrintable(text));
+    QVERIFY(text.contains("<td>230.0 V</td>") || text.contains(" V</td>"));   // a live value with its unit
     QVERIFY(text.contains("IGBT break"));                  // an active alarm
-    QVERIFY(text.contains("<td>confirmed: "));             // the write of today
+    QVERIFY(text.contains("<td>Limit value for max. alarm</td><td>"));   // the write of today...
+    QVERIFY(text.contains("<td>55.0</td><td>confirmed by read-back</td>"));
+    QVERIFY(text.contains("<td width=\"33%\">19200 baud, 8N1, port "));   // the line in the title block
+    QVERIFY(text.contains("<td width=\"33%\">jumoctl "));
 
     // PDF needs QtGui: the test process is GUI-less, so the real executable makes it.
     QProcess p;
@@ -330,6 +336,39 @@ void tst_JumoctlLine::reportAsHtmlAndPdf()
     QVERIFY(pdf.open(QIODevice::ReadOnly));
     QVERIFY(pdf.read(5) == "%PDF-");
     QVERIFY(pdf.size() > 10000);
+}
+
+void tst_JumoctlLine::reportIsADocumentToSign()
+{
+    const QString pdftotext = QStandardPaths::findExecutable("pdftotext");
+    if (pdftotext.isEmpty())
+        QSKIP("pdftotext (poppler-utils) is not installed: the PDF's text cannot be read");
+    QTemporaryDir dir;
+    const QString path = dir.filePath("dtron.pdf");
+    QProcess p;   // PDF needs QtGui: the real executable makes it
+    p.start(QStringLiteral(JUMOCTL_PATH), QStringList{"report", "--site", "Plant <North> & Co", "--tag", "TIC-101",
+                                                      "--engineer", "Erika Mustermann", "--cabinet", "=A1+B2"}
+                                                  + port() + QStringList{"dtron300@4", path});
+    QTRY_VERIFY_WITH_TIMEOUT(p.state() == QProcess::NotRunning, 60000);
+    QCOMPARE(p.exitCode(), 0);
+    QProcess text;
+    text.start(pdftotext, {"-layout", path, "-"});
+    QVERIFY(text.waitForFinished(30000));
+    QCOMPARE(text.exitCode(), 0);
+    const QString t = QString::fromUtf8(text.readAllStandardOutput());
+    for (const char *expected : {"Plant <North> & Co", "TIC-101", "Erika Mustermann", "=A1+B2", "Page 1 of ",
+                                 "19200 baud, 8N1", "Commissioning engineer", "Customer", "Signature",
+                                 "5.3 Controller parameters"})
+        QVERIFY2(t.contains(QString::fromUtf8(expected)), expected);
+    // A value with its unit (the sampling cycle in ms, a delay in s) and the last page numbered as such.
+    QVERIFY2(t.contains(QRegularExpression(" [0-9]+(\\.[0-9]+)? (ms|s|%)\\b")), qPrintable(t));
+    const QRegularExpression of("Page 1 of ([0-9]+)");
+    const int pages = of.match(t).captured(1).toInt();
+    QVERIFY(pages >= 2);
+    QVERIFY(t.contains(QStringLiteral("Page %1 of %1").arg(pages)));
+    QCOMPARE(t.count("Page "), pages);   // one number on every page
+    // The signature lines come last.
+    QVERIFY(t.lastIndexOf("Signature") > t.lastIndexOf("Writes since"));
 }
 
 void tst_JumoctlLine::wrongFamilyIsRefused_data()

@@ -95,6 +95,7 @@ private slots:
     void refusesMalformedJson();
     void refusesAKeyGivenTwice();
     void precisionFromTheMapOrTheUnit();
+    void defaultsAreRead();
     void builtinMapsLoad();
     void faceplateFromTheMap();
     void userFolderReplacesBuiltinAndReportsBrokenFiles();
@@ -340,6 +341,70 @@ void tst_MapLoader::refusesBadMap_data()
             << faceplate({{"kind", "process_controller"}, {"values", oneValue},
                           {"program", QJsonObject{{"segment", "value_a"}, {"segments", "value_a"}}}})
             << "faceplate.program" << "timeLeft";
+    // Defaults (the manual's factory settings): a value the entry can hold, of its type.
+    const auto withDefault = [](int index, const QJsonValue &value, const std::function<void(QJsonObject &)> &more = {}) {
+        return Mutation([=](QJsonObject &m) {
+            editEntry(m, index, [&](QJsonObject &e) {
+                e["default"] = value;
+                if (more)
+                    more(e);
+            });
+        });
+    };
+    const auto writableFloat = [](QJsonObject &e) {
+        e["access"] = "RW";
+        e["min"] = 0;
+        e["max"] = 100;
+    };
+    QTest::newRow("default outside the range") << withDefault(0, 150, writableFloat) << "entry 'value_a' (0x0000)"
+                                               << "'default' 150 is outside the entry's range 0..100";
+    QTest::newRow("default below the range") << withDefault(0, -0.5, writableFloat) << "entry 'value_a' (0x0000)"
+                                             << "'default' -0.5 is outside the entry's range 0..100";
+    QTest::newRow("default as a string") << withDefault(0, "10", writableFloat) << "entry 'value_a' (0x0000)"
+                                         << "'default' must be a number, not '10'";
+    QTest::newRow("default that is no enum value") << withDefault(1, 2) << "entry 'mode' (0x0002)"
+                                                   << "'default' 2 is none of the enum's values";
+    QTest::newRow("default as an enum's label") << withDefault(1, "On") << "entry 'mode' (0x0002)"
+                                                << "'default' must be a number, not 'On'";
+    QTest::newRow("default of a read-only entry") << withDefault(0, 1) << "entry 'value_a' (0x0000)"
+                                                  << "'default' is only for writable entries";
+    QTest::newRow("default of a bit field") << withDefault(2, 0, [](QJsonObject &e) { e["access"] = "RW"; })
+                                            << "entry 'alarms' (0x0003)" << "'default' is only for numbers, enums and booleans";
+    QTest::newRow("fractional default of an integer") << withDefault(1, 2.5, [](QJsonObject &e) {
+        e["type"] = "uint16";
+        e.remove("values");
+    }) << "entry 'mode' (0x0002)" << "'default' of a uint16 must be a whole number, not 2.5";
+    QTest::newRow("negative default of an unsigned integer") << withDefault(1, -1, [](QJsonObject &e) {
+        e["type"] = "uint16";
+        e.remove("values");
+    }) << "entry 'mode' (0x0002)" << "'default' -1 is outside the entry's range 0..65535";
+    QTest::newRow("default of a boolean as a number") << withDefault(1, 0, [](QJsonObject &e) {
+        e["type"] = "bool";
+        e.remove("values");
+    }) << "entry 'mode' (0x0002)" << "'default' of a boolean must be true or false, not 0";
+}
+
+void tst_MapLoader::defaultsAreRead()
+{
+    QJsonObject map = validMap();
+    editEntry(map, 0, [](QJsonObject &e) {
+        e["access"] = "RW";
+        e["min"] = 0;
+        e["max"] = 100;
+        e["default"] = 10;
+    });
+    editEntry(map, 1, [](QJsonObject &e) { e["default"] = 1; });
+    appendEntry(map, QJsonObject{{"address", "0x0010"}, {"id", "output"}, {"label", "Output"}, {"type", "bool"},
+                                 {"access", "RW"}, {"group", "1 Test"}, {"default", false}});
+    appendEntry(map, QJsonObject{{"address", "0x0011"}, {"id", "delay"}, {"label", "Delay"}, {"type", "int16"},
+                                 {"access", "RW"}, {"group", "1 Test"}, {"default", -5}});
+    const MapLoadResult r = MapLoader::loadData(QJsonDocument(map).toJson(), "test.json");
+    QVERIFY2(r.ok(), qPrintable(r.errors.join('\n')));
+    QCOMPARE(r.map->entry("value_a")->defaultValue, std::optional<double>(10));
+    QCOMPARE(r.map->entry("mode")->defaultValue, std::optional<double>(1));
+    QCOMPARE(r.map->entry("output")->defaultValue, std::optional<double>(0));
+    QCOMPARE(r.map->entry("delay")->defaultValue, std::optional<double>(-5));
+    QVERIFY(!r.map->entry("alarms")->defaultValue);   // none given: none known
 }
 
 void tst_MapLoader::precisionFromTheMapOrTheUnit()
