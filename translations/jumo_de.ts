@@ -432,120 +432,360 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
 <context>
     <name>jumo::CommissioningReport</name>
     <message>
-        <location filename="../lib/commissioning/commissioningreport.cpp" line="+35"/>
-        <source>not read</source>
-        <translation>nicht gelesen</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location filename="../lib/commissioning/commissioningreport.cpp" line="+381"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>unknown (%1); last known: %2</source>
-        <translation>unbekannt (%1); zuletzt bekannt: %2</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <location line="+1"/>
-        <location filename="../ui/reportwriter.cpp" line="+26"/>
+        <location line="-157"/>
+        <location line="+255"/>
         <source>Commissioning report</source>
         <translation>Inbetriebnahmebericht</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>address %1</source>
-        <translation>Adresse %1</translation>
+        <location line="-338"/>
+        <source>%1 (none set)</source>
+        <translation>%1 (keines gesetzt)</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>(empty)</source>
+        <translation>(leer)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Made %1</source>
-        <translation>Erstellt %1</translation>
+        <source>%1 (stale)</source>
+        <translation>%1 (veraltet)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>current</source>
+        <translation>aktuell</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>stale: not read in the last cycle</source>
+        <translation>veraltet: im letzten Zyklus nicht gelesen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1; last known: %2</source>
+        <translation>%1; zuletzt bekannt: %2</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Values without a unit are in a unit set on the device: %1.</source>
+        <translation>Werte ohne Einheit sind in einer am Gerät eingestellten Einheit: %1.</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1, address %2, %3</source>
+        <translation>%1, Adresse %2, %3</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 baud, %2</source>
+        <translation>%1 Baud, %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, port %1</source>
+        <translation>, Schnittstelle %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Site</source>
+        <translation>Standort</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+218"/>
+        <source>Date</source>
+        <translation>Datum</translation>
+    </message>
+    <message>
+        <location line="-217"/>
+        <source>Cabinet</source>
+        <translation>Schaltschrank</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Engineer</source>
+        <translation>Inbetriebnehmer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device tag</source>
+        <translation>Kennzeichen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Line</source>
+        <translation>Leitung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Models</source>
+        <translation>Modelle</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Software</source>
+        <translation>Software</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Identity</source>
         <translation>Identität</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+2"/>
         <source>The family has no identity registers.</source>
         <translation>Die Gerätefamilie hat keine Identitätsregister.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+22"/>
+        <source>The family has no parameters.</source>
+        <translation>Die Gerätefamilie hat keine Parameter.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+2"/>
+        <location line="+134"/>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <location line="-136"/>
+        <source>Default</source>
+        <translation>Standardwert</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Default: the factory setting, or the value after power on, where the manual gives one; %1 marks a value that differs from it. Differing: %2 of %3 compared.</source>
+        <translation>Standardwert: die Werkseinstellung oder der Wert nach dem Einschalten, wo das Handbuch einen nennt; %1 kennzeichnet einen davon abweichenden Wert. Abweichend: %2 von %3 verglichenen.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The manual gives no default values for these parameters: none are compared.</source>
+        <translation>Das Handbuch nennt für diese Parameter keine Standardwerte: Es wird keiner verglichen.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>The family has no live values.</source>
+        <translation>Die Gerätefamilie hat keine Live-Werte.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>As read at %1. A value that could not be read shows %2 and why.</source>
+        <translation>Gelesen am %1. Ein Wert, der nicht gelesen werden konnte, zeigt %2 und den Grund.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>%1, bit %2</source>
+        <translation>%1, Bit %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Active alarms and warnings</source>
         <translation>Aktive Alarme und Warnungen</translation>
     </message>
     <message>
-        <location line="+19"/>
-        <source>bit %1</source>
-        <translation>Bit %1</translation>
+        <location line="+3"/>
+        <source>Unknown: %1 could not be read; their alarms are not known.</source>
+        <translation>Unbekannt: %1 konnte nicht gelesen werden; deren Alarme sind nicht bekannt.</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>Unknown: %1 could not be read</source>
-        <translation>Unbekannt: %1 konnte nicht gelesen werden</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <location line="+30"/>
-        <source>none</source>
-        <translation>keine</translation>
-    </message>
-    <message>
-        <location line="-25"/>
-        <source>Register</source>
-        <translation>Register</translation>
+        <location line="+3"/>
+        <source>None active.</source>
+        <translation>Keiner aktiv.</translation>
     </message>
     <message>
         <location line="+0"/>
-        <source>Id</source>
-        <translation>Kennung</translation>
+        <source>None of the others active.</source>
+        <translation>Von den übrigen keiner aktiv.</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Where</source>
+        <translation>Wo</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Writes since %1</source>
+        <translation>Schreibvorgänge seit %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Writes</source>
+        <translation>Schreibvorgänge</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>None.</source>
+        <translation>Keine.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>confirmed by read-back</source>
+        <translation>durch Rücklesen bestätigt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>accepted (cannot be read back)</source>
+        <translation>angenommen (nicht rücklesbar)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read back another value</source>
+        <translation>anderer Wert zurückgelesen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>refused by the device</source>
+        <translation>vom Gerät abgelehnt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown: the answer was lost</source>
+        <translation>unbekannt: die Antwort ging verloren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not verified</source>
+        <translation>nicht überprüft</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not sent</source>
+        <translation>nicht gesendet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not sent: read-only mode</source>
+        <translation>nicht gesendet: Nur-Lese-Modus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not sent: invalid value</source>
+        <translation>nicht gesendet: ungültiger Wert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>identity not checked</source>
+        <translation>Identität nicht geprüft</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>broadcast acknowledged</source>
+        <translation>Broadcast bestätigt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Outcome</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Signatures</source>
+        <translation>Unterschriften</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The device was commissioned with the parameters above.</source>
+        <translation>Das Gerät wurde mit den obigen Parametern in Betrieb genommen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Commissioning engineer</source>
+        <translation>Inbetriebnehmer</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Customer</source>
+        <translation>Kunde</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+4"/>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location line="-2"/>
+        <source>Signature</source>
+        <translation>Unterschrift</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Commissioning report %1</source>
+        <translation>Inbetriebnahmebericht %1</translation>
+    </message>
+    <message>
+        <location line="-130"/>
         <source>Signal</source>
         <translation>Signal</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-50"/>
+        <location line="+2"/>
+        <location line="+48"/>
         <source>Value</source>
         <translation>Wert</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>Storage</source>
-        <translation>Speicherort</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="-58"/>
+        <location line="+30"/>
         <source>Parameters</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+20"/>
         <source>Live values</source>
         <translation>Live-Werte</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>Writes of the session</source>
-        <translation>Schreibvorgänge der Sitzung</translation>
-    </message>
-    <message>
-        <location line="+0"/>
+        <location line="+94"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
         <location line="+0"/>
-        <source>Entry</source>
-        <translation>Eintrag</translation>
-    </message>
-    <message>
-        <location line="+1"/>
         <source>Old value</source>
         <translation>Alter Wert</translation>
     </message>
@@ -553,11 +793,6 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
         <location line="+0"/>
         <source>New value</source>
         <translation>Neuer Wert</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Result</source>
-        <translation>Ergebnis</translation>
     </message>
 </context>
 <context>
@@ -1336,7 +1571,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+68"/>
+        <location filename="../app/cli/linecommands.cpp" line="+69"/>
         <source>the audit log did not take a record: %1</source>
         <translation>das Audit-Protokoll hat einen Eintrag nicht aufgenommen: %1</translation>
     </message>
@@ -1586,12 +1821,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <message>
         <location line="+1"/>
         <location line="+393"/>
-        <location line="+153"/>
+        <location line="+159"/>
         <source>FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="-544"/>
+        <location line="-550"/>
         <source>Entry ids.</source>
         <translation>Kennungen der Einträge.</translation>
     </message>
@@ -1642,7 +1877,44 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>%1 kann nicht gelesen werden</translation>
     </message>
     <message>
-        <location line="-666"/>
+        <location line="+139"/>
+        <source>Writes the commissioning report of a device, a document to sign: a title block (site, cabinet, tag, engineer, date, device, line), identity, parameters with the manual&apos;s defaults, live values, active alarms, today&apos;s writes and signature lines. FILE ending in .pdf gives PDF (A4, numbered pages), else HTML.</source>
+        <translation>Schreibt den Inbetriebnahmebericht eines Geräts, ein Dokument zum Unterschreiben: Kopfdaten (Standort, Schaltschrank, Kennzeichen, Inbetriebnehmer, Datum, Gerät, Leitung), Identität, Parameter mit den Standardwerten des Handbuchs, Live-Werte, aktive Alarme, die heutigen Schreibvorgänge und Unterschriftszeilen. Endet DATEI auf .pdf, entsteht PDF (A4, nummerierte Seiten), sonst HTML.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Site for the report&apos;s title block (the plant, the hall).</source>
+        <translation>Standort für die Kopfdaten des Berichts (die Anlage, die Halle).</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>text</source>
+        <translation>Text</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>Cabinet or panel the device is in.</source>
+        <translation>Schaltschrank oder Tafel, in dem das Gerät sitzt.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The device&apos;s tag in the plant, e.g. TIC-101.</source>
+        <translation>Kennzeichen des Geräts in der Anlage, z. B. TIC-101.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Name of the commissioning engineer.</source>
+        <translation>Name des Inbetriebnehmers.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location line="-813"/>
         <source>Never write to the line (control-room mode; the system configuration can set it for everyone).</source>
         <translation>Nie auf die Leitung schreiben (Leitwarten-Modus; die Systemkonfiguration kann ihn für alle festlegen).</translation>
     </message>
@@ -1879,17 +2151,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>nichts geschrieben</translation>
     </message>
     <message>
-        <location line="+34"/>
-        <source>Writes the commissioning report of a device: identity, parameters, live values, active alarms and today&apos;s writes. FILE ending in .pdf gives PDF, else HTML.</source>
-        <translation>Schreibt den Inbetriebnahmebericht eines Geräts: Identität, Parameter, Live-Werte, aktive Alarme und die heutigen Schreibvorgänge. Endet FILE auf .pdf, entsteht ein PDF, sonst HTML.</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+44"/>
         <source>Report file (.pdf or .html).</source>
         <translation>Berichtsdatei (.pdf oder .html).</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>%1 did not answer: no report written</source>
         <translation>%1 hat nicht geantwortet: kein Bericht geschrieben</translation>
     </message>
@@ -1899,7 +2166,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>kein Bericht geschrieben: die Schreibvorgänge von heute sind unbekannt: %1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+9"/>
+        <source>Commissioning report of %1</source>
+        <translation>Inbetriebnahmebericht von %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>report of %1 written to %2</source>
         <translation>Bericht von %1 in %2 geschrieben</translation>
     </message>
@@ -1986,7 +2258,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 <context>
     <name>jumo::MainWindow</name>
     <message>
-        <location filename="../ui/mainwindow.cpp" line="+72"/>
+        <location filename="../ui/mainwindow.cpp" line="+74"/>
         <location line="+4"/>
         <source>Time</source>
         <translation>Zeit</translation>
@@ -2059,11 +2331,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
     </message>
     <message>
         <location line="+0"/>
+        <location line="+644"/>
         <source>JUMO HMI</source>
         <translation>JUMO HMI</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-642"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
@@ -2093,7 +2366,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Inbetriebnahme&amp;bericht des angezeigten Geräts...</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+20"/>
+        <source>commissioning-report-%1-%2.pdf</source>
+        <translation>inbetriebnahmebericht-%1-%2.pdf</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
@@ -2169,7 +2447,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-362"/>
+        <location line="-375"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -2209,12 +2487,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>NUR LESEN</translation>
     </message>
     <message>
-        <location line="+562"/>
+        <location line="+598"/>
         <source>Data logging of %1 stopped: %2</source>
         <translation>Datenaufzeichnung von %1 angehalten: %2</translation>
     </message>
     <message>
-        <location line="-526"/>
+        <location line="-562"/>
         <source>address %1: %2</source>
         <translation>Adresse %1: %2</translation>
     </message>
@@ -2265,12 +2543,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
     </message>
     <message>
         <location line="+11"/>
-        <location line="+8"/>
+        <location line="+21"/>
         <source>Report</source>
         <translation>Bericht</translation>
     </message>
     <message>
-        <location line="-29"/>
+        <location line="-42"/>
         <location line="+10"/>
         <location line="+11"/>
         <source>Open the page of a device first.</source>
@@ -2285,7 +2563,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         </translation>
     </message>
     <message>
-        <location line="+105"/>
+        <location line="+118"/>
         <source>Commissioning report</source>
         <translation>Inbetriebnahmebericht</translation>
     </message>
@@ -2405,7 +2683,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Zuerst mit einer Leitung verbinden.</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+48"/>
+        <source>Commissioning report of %1</source>
+        <translation>Inbetriebnahmebericht von %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>no device %1@%2</source>
         <translation>kein Gerät %1@%2</translation>
     </message>
@@ -2534,7 +2817,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::MapLoader</name>
     <message>
-        <location filename="../lib/protocol/maploader.cpp" line="+35"/>
+        <location filename="../lib/protocol/maploader.cpp" line="+38"/>
         <source>malformed JSON at byte %1: %2</source>
         <translation>fehlerhaftes JSON bei Byte %1: %2</translation>
     </message>
@@ -2549,7 +2832,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>die oberste Ebene muss ein JSON-Objekt sein</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/jsonfieldreader.cpp" line="+53"/>
+        <location filename="../lib/protocol/jsonfieldreader.cpp" line="+52"/>
         <source>unknown key &apos;%1&apos;</source>
         <translation>unbekannter Schlüssel &apos;%1&apos;</translation>
     </message>
@@ -2697,13 +2980,13 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     <message>
         <location line="-367"/>
         <location line="+368"/>
-        <location line="+302"/>
+        <location line="+369"/>
         <location filename="../lib/protocol/overlapcheck.cpp" line="+70"/>
         <source>entry &apos;%1&apos; (%2)</source>
         <translation>Eintrag &apos;%1&apos; (%2)</translation>
     </message>
     <message>
-        <location line="-292"/>
+        <location line="-359"/>
         <source>id must be lower case letters, digits and &apos;_&apos;</source>
         <translation>die Kennung darf nur aus Kleinbuchstaben, Ziffern und &apos;_&apos; bestehen</translation>
     </message>
@@ -2898,7 +3181,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>eine Aktion braucht einen beschreibbaren Eintrag</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>&apos;values&apos; is only for enums</source>
         <translation>&apos;values&apos; ist nur für Enums zulässig</translation>
     </message>
@@ -2911,6 +3194,41 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+8"/>
         <source>enum value &apos;%1&apos; must be a number 0..65535 with a text</source>
         <translation>Enum-Wert &apos;%1&apos; muss eine Zahl 0..65535 mit einem Text sein</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>&apos;default&apos; is only for writable entries</source>
+        <translation>&apos;default&apos; gibt es nur für beschreibbare Einträge</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&apos;default&apos; is only for numbers, enums and booleans</source>
+        <translation>&apos;default&apos; gibt es nur für Zahlen, Aufzählungen und Wahrheitswerte</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&apos;default&apos; of a boolean must be true or false, not %1</source>
+        <translation>&apos;default&apos; eines Wahrheitswerts muss true oder false sein, nicht %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&apos;default&apos; must be a number, not %1</source>
+        <translation>&apos;default&apos; muss eine Zahl sein, nicht %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;default&apos; %1 is none of the enum&apos;s values</source>
+        <translation>&apos;default&apos; %1 ist keiner der Werte der Aufzählung</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>&apos;default&apos; of a %1 must be a whole number, not %2</source>
+        <translation>&apos;default&apos; eines %1 muss eine ganze Zahl sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&apos;default&apos; %1 is outside the entry&apos;s range %2..%3</source>
+        <translation>&apos;default&apos; %1 liegt außerhalb des Bereichs %2..%3 des Eintrags</translation>
     </message>
     <message>
         <location line="+11"/>
@@ -4239,6 +4557,72 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
 </context>
 <context>
+    <name>jumo::ReportDetailsDialog</name>
+    <message>
+        <location filename="../ui/reportdetailsdialog.cpp" line="+22"/>
+        <source>Commissioning report</source>
+        <translation>Inbetriebnahmebericht</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Plant, hall or building</source>
+        <translation>Anlage, Halle oder Gebäude</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cabinet or panel</source>
+        <translation>Schaltschrank oder Tafel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>e.g. TIC-101</source>
+        <translation>z. B. TIC-101</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Who commissions the device</source>
+        <translation>Wer das Gerät in Betrieb nimmt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose a &amp;file...</source>
+        <translation>&amp;Datei wählen...</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The title block of the report of %1. What you enter here is offered again next time.</source>
+        <translation>Die Kopfdaten des Berichts von %1. Was Sie hier eingeben, wird beim nächsten Mal wieder angeboten.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Site:</source>
+        <translation>Stand&amp;ort:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Cabinet:</source>
+        <translation>&amp;Schaltschrank:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device &amp;tag:</source>
+        <translation>Geräte&amp;kennzeichen:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Engineer:</source>
+        <translation>&amp;Inbetriebnehmer:</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::ReportWriter</name>
+    <message>
+        <location filename="../ui/reportwriter.cpp" line="+169"/>
+        <source>Page %1 of %2</source>
+        <translation>Seite %1 von %2</translation>
+    </message>
+</context>
+<context>
     <name>jumo::RtuTransport</name>
     <message>
         <location filename="../lib/bus/rtutransport.cpp" line="+143"/>
@@ -4598,7 +4982,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ValueText</name>
     <message>
-        <location filename="../lib/models/valuetext.cpp" line="+29"/>
+        <location filename="../lib/bus/valuetext.cpp" line="+29"/>
         <source>(configured)</source>
         <translation>(konfiguriert)</translation>
     </message>

@@ -3,7 +3,7 @@
 #include "bitswitches.h"
 #include "bus/bus.h"
 #include "models/livevaluesmodel.h"
-#include "models/valuetext.h"
+#include "bus/valuetext.h"
 #include "models/writecommand.h"
 #include "protocol/valuecodec.h"
 #include "protocol/valueformat.h"

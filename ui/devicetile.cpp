@@ -2,7 +2,7 @@
 
 #include "models/alarmbitsmodel.h"
 #include "models/livevaluesmodel.h"
-#include "models/valuetext.h"
+#include "bus/valuetext.h"
 #include "protocol/registermap.h"
 
 #include <QCoreApplication>

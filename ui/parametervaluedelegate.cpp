@@ -1,7 +1,7 @@
 #include "parametervaluedelegate.h"
 
 #include "models/parametereditmodel.h"
-#include "models/valuetext.h"
+#include "bus/valuetext.h"
 #include "protocol/valueformat.h"
 #include "theme.h"
 

@@ -1,7 +1,7 @@
 #include "commissioning/commissioningreport.h"
 
 #include "commissioning/parameterset.h"
-#include "models/valuetext.h"
+#include "bus/valuetext.h"
 #include "protocol/valuecodec.h"
 #include "protocol/valueformat.h"
 

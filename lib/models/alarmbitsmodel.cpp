@@ -1,6 +1,6 @@
 #include "models/alarmbitsmodel.h"
 
-#include "models/valuetext.h"
+#include "bus/valuetext.h"
 
 #include <QCoreApplication>
 

@@ -1,6 +1,6 @@
 #include "models/livevaluesmodel.h"
 
-#include "models/valuetext.h"
+#include "bus/valuetext.h"
 #include "protocol/valueformat.h"
 
 #include <QCoreApplication>

@@ -1,6 +1,6 @@
 #include "models/parametereditmodel.h"
 
-#include "models/valuetext.h"
+#include "bus/valuetext.h"
 #include "protocol/valuecodec.h"
 #include "protocol/valueformat.h"
 

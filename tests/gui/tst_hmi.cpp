@@ -35,7 +35,7 @@
 #include "parameterwritepreview.h"
 #include "reportdetailsdialog.h"
 #include "logs/datalogger.h"
-#include "models/valuetext.h"
+#include "bus/valuetext.h"
 #include "scandialog.h"
 #include "testpeers.h"
 #include "trendview.h"

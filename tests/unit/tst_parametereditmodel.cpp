@@ -7,7 +7,7 @@
 #include "bus/entrystate.h"
 #include "fakeline.h"
 #include "models/parametereditmodel.h"
-#include "models/valuetext.h"
+#include "bus/valuetext.h"
 
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>

@@ -1,4 +1,4 @@
-#include "models/valuetext.h"
+#include "bus/valuetext.h"
 
 #include "protocol/valuecodec.h"
 #include "protocol/valueformat.h"
