@@ -966,18 +966,19 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+106"/>
-        <location line="+231"/>
+        <location line="+124"/>
+        <location line="+126"/>
         <location line="+205"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="-414"/>
+        <location line="-432"/>
         <source>Bar: %1 to %2 %3</source>
         <translation>Balken: %1 bis %2 %3</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+20"/>
         <source>Bar: 0 to %1 (nominal)</source>
         <translation>Balken: 0 bis %1 (Nennwert)</translation>
     </message>
@@ -988,11 +989,21 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>No bar: its scale, %1, is not above zero.</source>
+        <translation>Kein Balken: Die Skala, %1, ist nicht größer als null.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No bar: the device reports %1, which the map gives no number.</source>
+        <translation>Kein Balken: Das Gerät meldet %1, wofür die Registertabelle keine Zahl nennt.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>No bar: its scale is not known yet.</source>
         <translation>Kein Balken: Die Skala ist noch nicht bekannt.</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+79"/>
         <location line="+11"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
