@@ -161,6 +161,7 @@ void DeviceTile::refresh()
     }
     m_rows.clear();
     m_barsDrawn = 0;
+    m_barsFilled = 0;
     for (const FaceplateValue &v : face.values) {
         Row r = row(v.entry, v.label);
         const RegisterEntry *e = m_map.entry(v.entry);
@@ -178,15 +179,27 @@ void DeviceTile::refresh()
         case FaceplateValue::Scale::Nominal:
         case FaceplateValue::Scale::Limit: {
             std::optional<double> full = 1.0;
+            QString unnumbered;   // a scale entry read, but its value has no number (an enum without a text)
             for (const QString &id : v.scaleFrom) {
                 const std::optional<double> part = number(id);
+                if (!part && unnumbered.isEmpty() && m_values->rowOf(id) >= 0) {
+                    const QModelIndex index = m_values->index(m_values->rowOf(id), LiveValuesModel::ValueColumn);
+                    if (index.data(LiveValuesModel::NumericRole).isValid())
+                        unnumbered = QStringLiteral("%1 = %2").arg(mapText(m_map.entry(id)->label),
+                                                                    index.data(LiveValuesModel::NumericRole).toString());
+                }
                 full = full && part ? std::optional<double>(*full * *part) : std::nullopt;
             }
+            const QString amount = full ? QStringLiteral("%1 %2").arg(QLocale().toString(*full, 'g', 6), e ? e->unit : QString()).trimmed()
+                                        : QString();
             if (full && *full > 0) {
                 high = *full;
-                const QString amount = QStringLiteral("%1 %2").arg(QLocale().toString(*full, 'g', 6), e ? e->unit : QString()).trimmed();
                 r.scaleText = v.scale == FaceplateValue::Scale::Nominal ? tr("Bar: 0 to %1 (nominal)").arg(amount)
                                                                         : tr("Bar: 0 to %1 (limit set on the device)").arg(amount);
+            } else if (full) {
+                r.scaleText = tr("No bar: its scale, %1, is not above zero.").arg(amount);
+            } else if (!unnumbered.isEmpty()) {
+                r.scaleText = tr("No bar: the device reports %1, which the map gives no number.").arg(unnumbered);
             } else {
                 r.scaleText = tr("No bar: its scale is not known yet.");
             }
@@ -202,6 +215,7 @@ void DeviceTile::refresh()
                 const double f = (*value - low) / (*high - low);
                 r.beyond = f > 1 || f < 0;
                 r.fraction = std::clamp(f, 0.0, 1.0);
+                ++m_barsFilled;
             }
         }
         addLine(r);
@@ -257,6 +271,11 @@ void DeviceTile::refresh()
         m_alarmNames = alarmNames.join(QStringLiteral(", "));
     else if (online && !warningNames.isEmpty())
         m_alarmNames = warningNames.join(QStringLiteral(", "));
+    // Names read from words that have aged are the last known ones, and say so (in
+    // place of the count, which says it too).
+    m_alarmNamesStale = !m_alarmNames.isEmpty() && m_alarms->alarmsStale();
+    if (m_alarmNamesStale)
+        m_alarmNames += QLatin1Char(' ') + tr("(stale)");
 
     m_modeText.clear();
     if (!face.modeOtherwise.isEmpty() || !face.modes.isEmpty()) {
@@ -682,9 +701,11 @@ void DeviceTile::paintEvent(QPaintEvent *)
         y += lh;
     }
     const QString alarmLine = m_alarmNames.isEmpty() ? m_alarmText : m_alarmNames;
-    painter.setFont(m_alarmNames.isEmpty() ? normal : bold);
+    QFont alarmFont = m_alarmNames.isEmpty() ? normal : bold;
+    alarmFont.setItalic(m_alarmNamesStale);   // as stale values are
+    painter.setFont(alarmFont);
     painter.drawText(QRect(area.left(), y, area.width(), lh), Qt::AlignLeft | Qt::AlignVCenter,
-                     (m_alarmNames.isEmpty() ? fm : boldFm).elidedText(alarmLine, Qt::ElideRight, area.width()));
+                     QFontMetrics(alarmFont).elidedText(alarmLine, Qt::ElideRight, area.width()));
 }
 
 void DeviceTile::changeEvent(QEvent *event)

@@ -41,7 +41,7 @@ public:
     QString valuesText() const { return m_valuesText; }
     QString stateText() const { return m_stateText; }     // "Online", "Line lost since 10:42:17"
     QString alarmText() const { return m_alarmText; }     // "2 active alarm(s)", "Alarms unknown"
-    QString alarmNames() const { return m_alarmNames; }   // "Load error, Max. alarm"
+    QString alarmNames() const { return m_alarmNames; }   // "Load error, Max. alarm", "Load error (stale)"
     QString modeText() const { return m_modeText; }       // "Manual", "Mode unknown", empty without modes
     QString programText() const { return m_programText; }
     Summary summary() const { return m_summary; }
@@ -51,6 +51,8 @@ public:
     static Theme::Role roleOf(Summary summary);
     // How many bars are drawn with a known scale (for tests).
     int barsDrawn() const { return m_barsDrawn; }
+    // How many of them are filled: only a current value against a known scale is.
+    int barsFilled() const { return m_barsFilled; }
 
     // "Online", "Not answering since 10:42:17": the words of the tile and the device list.
     static QString conditionText(const DeviceCondition &condition);
@@ -123,9 +125,11 @@ private:
     QString m_stateText;
     QString m_alarmText;
     QString m_alarmNames;
+    bool m_alarmNamesStale = false;
     QString m_modeText;
     QString m_programText;
     int m_barsDrawn = 0;
+    int m_barsFilled = 0;
 };
 
 } // namespace jumo

@@ -148,7 +148,8 @@ private:
         return values;
     }
 
-    // A readable bool entry or a readable single bit ("entry.bit").
+    // A readable bool entry or a readable single bit ("entry.bit"). Not of an alias or a
+    // reserve: the HMI reads and shows neither, so the state would stay unknown forever.
     void checkStateReference(const RegisterMap &map, const QString &reference, const QString &where)
     {
         if (!checkReference(map, reference, where))
@@ -156,8 +157,21 @@ private:
         const RegisterEntry *e = map.entry(reference.section(QLatin1Char('.'), 0, 0));
         const QString bit = reference.section(QLatin1Char('.'), 1);
         const bool single = bit.isEmpty() ? e->type == ValueType::Bool : e->bitById(bit)->width == 1;
-        if (!e->isReadable() || !single)
+        if (!e->isReadable() || !single || !e->alias.isEmpty() || e->reserved)
             fail(where, tr("'%1' must be a readable bool entry or a single bit of a readable bit field").arg(reference));
+    }
+
+    // A number, or an enum whose every text starts with one ("100 A"): what a bar, its
+    // scale and a program's segments and time are made of.
+    static bool isNumeric(const RegisterEntry &e)
+    {
+        if (e.type == ValueType::Enum) {
+            bool numbers = !e.enumValues.isEmpty();
+            for (const QString &text : e.enumValues)
+                numbers = numbers && leadingNumber(text).has_value();
+            return numbers;
+        }
+        return e.type != ValueType::Text && e.type != ValueType::Bitfield && e.type != ValueType::Bool;
     }
 
     QList<FaceplateState> faceplateStates(const RegisterMap &map, const QJsonObject &o, const char *key,
@@ -187,23 +201,31 @@ private:
         return states;
     }
 
-    // A readable number entry, or (for a scale) an enum whose texts start with a number.
-    void checkFaceplateEntry(const RegisterMap &map, const QString &id, const QString &where, bool scale)
+    // What an entry of the faceplate is for: shown as it is, drawn as a bar, the scale of a
+    // bar, or counted (a program's segments and time left).
+    enum class FaceplateUse { Shown, Bar, Scale, Count };
+
+    // A readable entry the HMI reads (no alias, no reserve); a number where it is drawn,
+    // scaled or counted.
+    void checkFaceplateEntry(const RegisterMap &map, const QString &id, const QString &where, FaceplateUse use)
     {
         const RegisterEntry *e = map.entry(id);
         if (!e || !e->isReadable() || !e->alias.isEmpty()) {
             fail(where, tr("'%1' is not a readable entry").arg(id));
             return;
         }
-        if (scale) {
-            const bool number = e->type != ValueType::Text && e->type != ValueType::Bitfield && e->type != ValueType::Bool
-                    && e->type != ValueType::Enum;
-            bool enumNumbers = e->type == ValueType::Enum && !e->enumValues.isEmpty();
-            for (const QString &text : e->enumValues)
-                enumNumbers = enumNumbers && leadingNumber(text).has_value();
-            if (!number && !enumNumbers)
-                fail(where, tr("the scale '%1' must be a number, or an enum whose every text starts with one").arg(id));
+        if (e->reserved) {
+            fail(where, tr("'%1' is a reserve, which the HMI does not read").arg(id));
+            return;
         }
+        if (use == FaceplateUse::Shown || isNumeric(*e))
+            return;
+        if (use == FaceplateUse::Scale)
+            fail(where, tr("the scale '%1' must be a number, or an enum whose every text starts with one").arg(id));
+        else if (use == FaceplateUse::Bar)
+            fail(where, tr("'%1' has a bar, so it must be a number, or an enum whose every text starts with one").arg(id));
+        else
+            fail(where, tr("'%1' must be a number").arg(id));
     }
 
     void parseFaceplate(const QJsonValue &value, RegisterMap &map)
@@ -226,7 +248,7 @@ private:
         if (const RegisterEntry *e = map.entry(spec.primary); e && spec.primaryLabel.isEmpty())
             spec.primaryLabel = e->label;
         if (!spec.primary.isEmpty())
-            checkFaceplateEntry(map, spec.primary, where + QStringLiteral(".primary"), false);
+            checkFaceplateEntry(map, spec.primary, where + QStringLiteral(".primary"), FaceplateUse::Shown);
         const QJsonValue values = o.value("values");
         if (!values.isArray() || values.toArray().isEmpty()) {
             fail(where, tr("'values' must be a non-empty array"));
@@ -239,8 +261,6 @@ private:
                 FaceplateValue fv;
                 fv.entry = requireString(vo, "entry", valueWhere);
                 fv.label = optionalString(vo, "label", valueWhere);
-                if (!fv.entry.isEmpty())
-                    checkFaceplateEntry(map, fv.entry, valueWhere, false);
                 const QString scale = optionalString(vo, "scale", valueWhere);
                 if (scale == QLatin1String("range")) {
                     fv.scale = FaceplateValue::Scale::Range;
@@ -255,10 +275,13 @@ private:
                     if (fv.scaleFrom.isEmpty() || fv.scaleFrom.size() > 2)
                         fail(valueWhere, tr("'from' names one entry, or two whose product is the scale"));
                     for (const QString &id : std::as_const(fv.scaleFrom))
-                        checkFaceplateEntry(map, id, valueWhere, true);
+                        checkFaceplateEntry(map, id, valueWhere, FaceplateUse::Scale);
                 } else if (!scale.isEmpty()) {
                     fail(valueWhere, tr("unknown scale '%1' (expected range, nominal or limit)").arg(scale));
                 }
+                if (!fv.entry.isEmpty())
+                    checkFaceplateEntry(map, fv.entry, valueWhere,
+                                        fv.scale == FaceplateValue::Scale::None ? FaceplateUse::Shown : FaceplateUse::Bar);
                 if (fv.scale != FaceplateValue::Scale::Range && (vo.contains("min") || vo.contains("max")))
                     fail(valueWhere, tr("'min' and 'max' are only for the scale 'range'"));
                 if (fv.scale == FaceplateValue::Scale::None || fv.scale == FaceplateValue::Scale::Range) {
@@ -271,7 +294,9 @@ private:
         spec.modes = faceplateStates(map, o, "modes", where);
         spec.modeOtherwise = optionalString(o, "modeOtherwise", where);
         spec.modeNote = optionalString(o, "modeNote", where);
-        if (o.contains("program")) {
+        if (o.contains("program") && !o.value("program").isObject()) {
+            fail(where, tr("'program' must be an object"));
+        } else if (o.contains("program")) {
             const QString programWhere = where + QStringLiteral(".program");
             const QJsonObject p = o.value("program").toObject();
             checkKeys(p, {"segment", "segments", "timeLeft", "states", "otherwise"}, programWhere);
@@ -280,7 +305,7 @@ private:
             spec.programTimeLeft = requireString(p, "timeLeft", programWhere);
             for (const QString &id : {spec.programSegment, spec.programSegments, spec.programTimeLeft}) {
                 if (!id.isEmpty())
-                    checkFaceplateEntry(map, id, programWhere, false);
+                    checkFaceplateEntry(map, id, programWhere, FaceplateUse::Count);
             }
             spec.programStates = faceplateStates(map, p, "states", programWhere);
             spec.programOtherwise = optionalString(p, "otherwise", programWhere);

@@ -341,6 +341,80 @@ void tst_MapLoader::refusesBadMap_data()
             << faceplate({{"kind", "process_controller"}, {"values", oneValue},
                           {"program", QJsonObject{{"segment", "value_a"}, {"segments", "value_a"}}}})
             << "faceplate.program" << "timeLeft";
+    // With entries the faceplate cannot show: a second name of a word, a reserve, a word
+    // that can only be written, a switch.
+    auto withOddEntries = [](QJsonObject &m) {
+        appendEntry(m, QJsonObject{{"address", "0x0000"}, {"id", "value_a_again"}, {"label", "Value A again"},
+                                   {"type", "float"}, {"access", "R"}, {"group", "1 Test"}, {"alias", "value_a"}});
+        appendEntry(m, QJsonObject{{"address", "0x0003"}, {"id", "alarms_again"}, {"label", "Alarms again"},
+                                   {"type", "bitfield"}, {"access", "R"}, {"group", "1 Test"}, {"alias", "alarms"},
+                                   {"bits", QJsonArray{QJsonObject{{"bit", 0}, {"id", "low"}, {"label", "Low"}, {"kind", "status"}}}}});
+        appendEntry(m, QJsonObject{{"address", "0x0010"}, {"id", "reserve_10"}, {"label", "Reserve"}, {"type", "uint16"},
+                                   {"access", "R"}, {"group", "1 Test"}, {"reserved", true}});
+        appendEntry(m, QJsonObject{{"address", "0x0011"}, {"id", "command"}, {"label", "Command"}, {"type", "uint16"},
+                                   {"access", "W"}, {"group", "1 Test"}});
+        appendEntry(m, QJsonObject{{"address", "0x0012"}, {"id", "manual"}, {"label", "Manual"}, {"type", "bool"},
+                                   {"access", "R"}, {"group", "1 Test"}});
+        appendEntry(m, QJsonObject{{"address", "0x0013"}, {"id", "manual_again"}, {"label", "Manual again"}, {"type", "bool"},
+                                   {"access", "R"}, {"group", "1 Test"}, {"alias", "manual"}});
+    };
+    auto oddFaceplate = [withOddEntries](const QJsonObject &face) {
+        return Mutation([face, withOddEntries](QJsonObject &m) {
+            withOddEntries(m);
+            m["faceplate"] = face;
+        });
+    };
+    auto oneRow = [](const QJsonObject &row) { return QJsonObject{{"kind", "power_unit"}, {"values", QJsonArray{row}}}; };
+    QTest::newRow("faceplate value as a number") << faceplate({{"kind", "power_unit"}, {"values", QJsonArray{5}}})
+                                                 << "faceplate.values[0]" << "entry";
+    QTest::newRow("faceplate values as an object") << faceplate({{"kind", "power_unit"}, {"values", oneValue.first()}})
+                                                   << "faceplate" << "'values' must be a non-empty array";
+    QTest::newRow("faceplate min as a string")
+            << faceplate(oneRow({{"entry", "value_a"}, {"scale", "range"}, {"min", "0"}, {"max", 10}}))
+            << "faceplate.values[0]" << "'min' must be a number, not 0";
+    QTest::newRow("faceplate from as a string")
+            << faceplate(oneRow({{"entry", "value_a"}, {"scale", "nominal"}, {"from", "value_a"}}))
+            << "faceplate.values[0]" << "'from' must be an array of strings";
+    QTest::newRow("faceplate kind as a number") << faceplate({{"kind", 1}, {"values", oneValue}})
+                                                << "faceplate" << "'kind' is missing or not a non-empty string";
+    QTest::newRow("faceplate as an array") << Mutation([](QJsonObject &m) { m["faceplate"] = QJsonArray{}; })
+                                           << "test.json" << "'faceplate' must be an object";
+    QTest::newRow("faceplate value of a write-only entry") << oddFaceplate(oneRow({{"entry", "command"}}))
+                                                           << "faceplate.values[0]" << "'command' is not a readable entry";
+    QTest::newRow("faceplate value of an alias") << oddFaceplate(oneRow({{"entry", "value_a_again"}}))
+                                                 << "faceplate.values[0]" << "'value_a_again' is not a readable entry";
+    QTest::newRow("faceplate value of a reserve") << oddFaceplate(oneRow({{"entry", "reserve_10"}}))
+                                                  << "faceplate.values[0]" << "'reserve_10'";
+    QTest::newRow("faceplate primary of a reserve")
+            << oddFaceplate({{"kind", "process_controller"}, {"primary", "reserve_10"}, {"values", oneValue}})
+            << "faceplate.primary" << "'reserve_10'";
+    QTest::newRow("faceplate bar of a text") << faceplate(oneRow({{"entry", "name"}, {"scale", "range"}}))
+                                             << "faceplate.values[0]" << "'name'";
+    QTest::newRow("faceplate bar of an enum of words") << faceplate(oneRow({{"entry", "mode"}, {"scale", "range"}}))
+                                                       << "faceplate.values[0]" << "'mode'";
+    QTest::newRow("faceplate bar of a bit field") << faceplate(oneRow({{"entry", "alarms"}, {"scale", "range"}}))
+                                                  << "faceplate.values[0]" << "'alarms'";
+    QTest::newRow("faceplate mode on an alias")
+            << oddFaceplate({{"kind", "process_controller"}, {"values", oneValue},
+                             {"modes", QJsonArray{QJsonObject{{"when", "manual_again"}, {"text", "Manual"}}}}})
+            << "faceplate.modes[0]" << "'manual_again'";
+    QTest::newRow("faceplate mode on a bit of an alias")
+            << oddFaceplate({{"kind", "process_controller"}, {"values", oneValue},
+                             {"modes", QJsonArray{QJsonObject{{"when", "alarms_again.low"}, {"text", "Low"}}}}})
+            << "faceplate.modes[0]" << "'alarms_again.low'";
+    QTest::newRow("faceplate scale from a reserve")
+            << oddFaceplate(oneRow({{"entry", "value_a"}, {"scale", "limit"}, {"from", QJsonArray{"reserve_10"}}}))
+            << "faceplate.values[0]" << "'reserve_10'";
+    QTest::newRow("faceplate program as a list")
+            << faceplate({{"kind", "process_controller"}, {"values", oneValue}, {"program", QJsonArray{"value_a"}}})
+            << "faceplate" << "'program' must be an object";
+    QTest::newRow("faceplate program segment of a text")
+            << faceplate({{"kind", "process_controller"}, {"values", oneValue},
+                          {"program", QJsonObject{{"segment", "name"}, {"segments", "value_a"}, {"timeLeft", "value_a"}}}})
+            << "faceplate.program" << "'name'";
+    QTest::newRow("faceplate mode as a string")
+            << faceplate({{"kind", "process_controller"}, {"values", oneValue}, {"modes", QJsonArray{"manual"}}})
+            << "faceplate.modes[0]" << "'when'";
     // Defaults (the manual's factory settings): a value the entry can hold, of its type.
     const auto withDefault = [](int index, const QJsonValue &value, const std::function<void(QJsonObject &)> &more = {}) {
         return Mutation([=](QJsonObject &m) {

@@ -1,0 +1,210 @@
+// What a faceplate shows of values that are not current, against the simulator over a
+// pty line: no bar is filled for a stale, unknown or error value, alarm names read from
+// aged words say so, a scale that is zero, negative or without a number says why there
+// is no bar. And the overview's columns and density settle at every window size, for
+// 1 to 62 devices, without a faceplate cut off.
+#include "connectionbar.h"
+#include "devicetile.h"
+#include "mainwindow.h"
+#include "overviewpage.h"
+#include "sim/simulateddevice.h"
+#include "testpeers.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QScopeGuard>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QTest>
+
+using namespace jumo;
+using namespace jumo::test;
+
+class tst_Faceplate : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void staleAlarmNamesSaySo();
+    void noBarForAValueThatIsNotCurrent();
+    void scaleThatGivesNoBarSaysWhy();
+    void columnsAndDensitySettle_data();
+    void columnsAndDensitySettle();
+
+private:
+    // A window on the line with the IPC 300 at address 1 and the dTRON 300 at 4, on the overview.
+    std::unique_ptr<MainWindow> connectedWindow(const QString &name);
+
+    QTemporaryDir m_dir;
+    TestLine m_line;
+    SimulatorPeer m_sim;
+};
+
+void tst_Faceplate::initTestCase()
+{
+    QVERIFY(m_line.start());
+    QVERIFY(m_sim.startOneOfEachFamily(m_line.deviceEnd()));
+}
+
+std::unique_ptr<MainWindow> tst_Faceplate::connectedWindow(const QString &name)
+{
+    MainWindow::Options options;
+    options.settingsFile = m_dir.filePath(name + QStringLiteral(".ini"));
+    options.logFolder = m_dir.filePath(name + QStringLiteral("-logs"));
+    auto window = std::make_unique<MainWindow>(families(), options);
+    window->connectionBar()->setSettings(m_line.masterEnd(), 19200, "8N1");
+    if (!window->connectLine() || !window->addDevice(families().family("ipc300"), 1)
+        || !window->addDevice(families().family("dtron300"), 4))
+        return nullptr;
+    window->show();
+    window->showOverview();
+    return window;
+}
+
+void tst_Faceplate::staleAlarmNamesSaySo()
+{
+    // Polling stops while an alarm is on: the alarm is the last one known, not a live one.
+    auto window = connectedWindow("stale");
+    QVERIFY(window);
+    DeviceTile *tile = window->deviceTile("ipc300", 1);
+    SimulatedDevice *sim = m_sim.line().device(1);
+    QVERIFY(sim->setFlag("malfunction_signal_1.fuse_failure", true));
+    auto off = qScopeGuard([sim] { sim->setFlag("malfunction_signal_1.fuse_failure", false); });
+    QTRY_COMPARE_WITH_TIMEOUT(tile->alarmNames(), QString("Fuse failure"), 20000);
+    QTRY_COMPARE_WITH_TIMEOUT(tile->barsFilled(), 4, 20000);
+    window->bus()->setPolling(false);
+    QTRY_COMPARE_WITH_TIMEOUT(tile->alarmNames(), QString("Fuse failure (stale)"), 30000);
+    QVERIFY(tile->toolTip().contains("Fuse failure (stale)"));
+    // Still the worst known (an alarm), but nothing else reads as live: no bar, no mode.
+    QCOMPARE(tile->summary(), DeviceTile::Summary::Alarm);
+    QTRY_COMPARE_WITH_TIMEOUT(tile->barsFilled(), 0, 30000);
+    QCOMPARE(tile->modeText(), QString("unknown"));
+    window->bus()->setPolling(true);
+    QTRY_COMPARE_WITH_TIMEOUT(tile->alarmNames(), QString("Fuse failure"), 20000);
+}
+
+void tst_Faceplate::noBarForAValueThatIsNotCurrent()
+{
+    auto window = connectedWindow("error");
+    QVERIFY(window);
+    DeviceTile *tile = window->deviceTile("ipc300", 1);
+    QTRY_COMPARE_WITH_TIMEOUT(tile->barsFilled(), 4, 20000);
+    // An error value is read and current, but it is no number: its track stays empty.
+    SimulatedDevice *sim = m_sim.line().device(1);
+    QVERIFY(sim->forceStatus("load_current", ValueStatus::Overrange));
+    auto ok = qScopeGuard([sim] { sim->forceStatus("load_current", ValueStatus::Ok); });
+    QTRY_VERIFY_WITH_TIMEOUT(tile->valuesText().contains("Current: Overrange"), 20000);
+    QCOMPARE(tile->barsDrawn(), 4);
+    QCOMPARE(tile->barsFilled(), 3);
+    QVERIFY(sim->forceStatus("load_current", ValueStatus::Ok));
+    QTRY_COMPARE_WITH_TIMEOUT(tile->barsFilled(), 4, 20000);
+    // A device that stops answering: no bar, no mode, no program.
+    DeviceTile *dtron = window->deviceTile("dtron300", 4);
+    QTRY_COMPARE_WITH_TIMEOUT(dtron->barsFilled(), 1, 20000);
+    QVERIFY(m_sim.setFault(4, "dead", -1, 0));
+    auto alive = qScopeGuard([this] { m_sim.setFault(4, "none", -1, 0); });
+    QTRY_COMPARE_WITH_TIMEOUT(dtron->summary(), DeviceTile::Summary::NotAnswering, 30000);
+    QCOMPARE(dtron->barsFilled(), 0);
+    QCOMPARE(dtron->modeText(), QString("unknown"));
+    QCOMPARE(dtron->programText(), QString("unknown"));
+    QVERIFY(m_sim.setFault(4, "none", -1, 0));
+    QTRY_COMPARE_WITH_TIMEOUT(dtron->barsFilled(), 1, 30000);
+}
+
+void tst_Faceplate::scaleThatGivesNoBarSaysWhy()
+{
+    auto window = connectedWindow("scales");
+    QVERIFY(window);
+    DeviceTile *tile = window->deviceTile("ipc300", 1);
+    QTRY_COMPARE_WITH_TIMEOUT(tile->barsDrawn(), 4, 20000);
+    SimulatedDevice *sim = m_sim.line().device(1);
+    const double powerLimit = sim->number("power_limit");
+    const double voltageLimit = sim->number("load_voltage_limit");
+    const quint16 nominalAddress = sim->map().entry("nominal_current")->address;
+    const quint16 nominal = sim->word(nominalAddress);
+    auto restore = qScopeGuard([=] {
+        sim->setNumber("power_limit", powerLimit);
+        sim->setNumber("load_voltage_limit", voltageLimit);
+        sim->setWords(nominalAddress, {nominal});
+    });
+    QVERIFY(sim->setNumber("power_limit", 0));
+    QVERIFY(sim->setNumber("load_voltage_limit", -5));
+    QVERIFY(sim->setWords(nominalAddress, {7}));   // the map knows 0, 1 and 2
+    QTRY_COMPARE_WITH_TIMEOUT(tile->barsDrawn(), 1, 20000);
+    const QString tip = tile->toolTip();
+    QVERIFY2(tip.contains("Power – No bar: its scale, 0 W, is not above zero."), qPrintable(tip));
+    QVERIFY2(tip.contains("Voltage – No bar: its scale, -5 V, is not above zero."), qPrintable(tip));
+    QVERIFY2(tip.contains("Current – No bar: the device reports Nominal current = 7, which the map gives no number."),
+             qPrintable(tip));
+    restore.dismiss();
+    QVERIFY(sim->setNumber("power_limit", powerLimit));
+    QVERIFY(sim->setNumber("load_voltage_limit", voltageLimit));
+    QVERIFY(sim->setWords(nominalAddress, {nominal}));
+    QTRY_COMPARE_WITH_TIMEOUT(tile->barsDrawn(), 4, 20000);
+}
+
+void tst_Faceplate::columnsAndDensitySettle_data()
+{
+    QTest::addColumn<int>("devices");
+    QTest::addColumn<bool>("compact");
+    QTest::newRow("one") << 1 << false;
+    QTest::newRow("four") << 4 << false;
+    QTest::newRow("a full line") << 31 << false;
+    QTest::newRow("two lines") << 62 << false;
+    QTest::newRow("two lines, compact chosen") << 62 << true;
+}
+
+void tst_Faceplate::columnsAndDensitySettle()
+{
+    // Widths up and down, at heights around where the comfortable faceplates stop fitting:
+    // the layout must come to rest after each (no switching between the densities as the
+    // scroll bar comes and goes), never cut a faceplate, never scroll a comfortable one.
+    QFETCH(int, devices);
+    QFETCH(bool, compact);
+    MainWindow::Options options;
+    options.settingsFile = m_dir.filePath(QStringLiteral("settle-%1-%2.ini").arg(devices).arg(compact));
+    options.logFolder = m_dir.filePath(QStringLiteral("settle-logs"));
+    MainWindow window(families(), options);
+    const QStringList order{"ipc300", "tya200", "quantrol", "dtron300"};
+    for (int address = 1; address <= devices; ++address)
+        QVERIFY(window.addDevice(families().family(order.at(address % 4)), quint8(address)));
+    window.findChild<QAction *>("compactOverview")->setChecked(compact);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.showOverview();
+    auto *overview = window.findChild<OverviewPage *>(QStringLiteral("overview"));
+    QVERIFY(overview);
+    QWidget *viewport = overview->scrollArea()->viewport();
+    QList<int> widths;
+    for (int width = 800; width <= 3840; width += 23)
+        widths << width;
+    for (int width = 3840; width >= 800; width -= 29)
+        widths << width;
+    for (int height : {500, 1040}) {
+        for (int width : widths) {
+            window.resize(width, height);
+            QCoreApplication::processEvents();
+            const auto density = overview->density();
+            const int columns = overview->columns();
+            const int viewportWidth = viewport->width();
+            for (int i = 0; i < 4; ++i)
+                QCoreApplication::processEvents();
+            const QString at = QStringLiteral("%1x%2").arg(window.width()).arg(window.height());
+            QVERIFY2(overview->density() == density && overview->columns() == columns && viewport->width() == viewportWidth,
+                     qPrintable(at));
+            if (compact)
+                QCOMPARE(overview->density(), DeviceTile::Density::Compact);
+            if (overview->density() == DeviceTile::Density::Comfortable)
+                QVERIFY2(!overview->scrollArea()->verticalScrollBar()->isVisible(), qPrintable(at));
+            for (DeviceTile *tile : overview->findChildren<DeviceTile *>()) {
+                const QRect r(tile->mapTo(viewport, QPoint(0, 0)), tile->size());
+                QVERIFY2(r.left() >= 0 && r.right() < viewport->width() && tile->width() >= tile->minimumSizeHint().width(),
+                         qPrintable(at + QLatin1Char(' ') + tile->objectName()));
+            }
+        }
+    }
+}
+
+QTEST_MAIN(tst_Faceplate)
+#include "tst_faceplate.moc"
