@@ -1201,18 +1201,19 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+106"/>
-        <location line="+231"/>
+        <location line="+124"/>
+        <location line="+126"/>
         <location line="+205"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="-414"/>
+        <location line="-432"/>
         <source>Bar: %1 to %2 %3</source>
         <translation>Balken: %1 bis %2 %3</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+20"/>
         <source>Bar: 0 to %1 (nominal)</source>
         <translation>Balken: 0 bis %1 (Nennwert)</translation>
     </message>
@@ -1223,11 +1224,21 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>No bar: its scale, %1, is not above zero.</source>
+        <translation>Kein Balken: Die Skala, %1, ist nicht größer als null.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No bar: the device reports %1, which the map gives no number.</source>
+        <translation>Kein Balken: Das Gerät meldet %1, wofür die Registertabelle keine Zahl nennt.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>No bar: its scale is not known yet.</source>
         <translation>Kein Balken: Die Skala ist noch nicht bekannt.</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+79"/>
         <location line="+11"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
@@ -2913,12 +2924,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+25"/>
-        <location line="+69"/>
+        <location line="+88"/>
         <source>&apos;%1&apos; is not a readable entry</source>
         <translation>&apos;%1&apos; ist kein lesbarer Eintrag</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+106"/>
         <source>&apos;protocol&apos; must be an object</source>
         <translation>&apos;protocol&apos; muss ein Objekt sein</translation>
     </message>
@@ -2978,8 +2989,8 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Eintrag #%1 (%2)</translation>
     </message>
     <message>
-        <location line="-367"/>
-        <location line="+368"/>
+        <location line="-392"/>
+        <location line="+393"/>
         <location line="+369"/>
         <location filename="../lib/protocol/overlapcheck.cpp" line="+70"/>
         <source>entry &apos;%1&apos; (%2)</source>
@@ -3041,7 +3052,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Adressbereich %1..%2 ist leer</translation>
     </message>
     <message>
-        <location line="-283"/>
+        <location line="-308"/>
         <source>malformed JSON at byte %1: &apos;%2&apos; given twice in one object</source>
         <translation>fehlerhaftes JSON bei Byte %1: &apos;%2&apos; zweimal im selben Objekt angegeben</translation>
     </message>
@@ -3056,22 +3067,37 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;configuredUnit&apos; nennt &apos;%1&apos;, das &apos;configuredUnits&apos; nicht definiert</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+48"/>
         <source>&apos;%1&apos; must be a readable bool entry or a single bit of a readable bit field</source>
         <translation>&apos;%1&apos; muss ein lesbarer Bool-Eintrag oder ein einzelnes Bit eines lesbaren Bitfelds sein</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+24"/>
         <source>&apos;%1&apos; must be an array</source>
         <translation>&apos;%1&apos; muss ein Array sein</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+33"/>
+        <source>&apos;%1&apos; is a reserve, which the HMI does not read</source>
+        <translation>&apos;%1&apos; ist eine Reserve, die die HMI nicht liest</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>the scale &apos;%1&apos; must be a number, or an enum whose every text starts with one</source>
         <translation>die Skala &apos;%1&apos; muss eine Zahl sein oder eine Aufzählung, deren Texte alle mit einer Zahl beginnen</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+2"/>
+        <source>&apos;%1&apos; has a bar, so it must be a number, or an enum whose every text starts with one</source>
+        <translation>&apos;%1&apos; hat einen Balken, muss also eine Zahl sein oder eine Aufzählung, deren Texte alle mit einer Zahl beginnen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1&apos; must be a number</source>
+        <translation>&apos;%1&apos; muss eine Zahl sein</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>&apos;faceplate&apos; must be an object</source>
         <translation>&apos;faceplate&apos; muss ein Objekt sein</translation>
     </message>
@@ -3086,7 +3112,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;values&apos; muss ein nicht leeres Array sein</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+16"/>
         <source>&apos;max&apos; must be above &apos;min&apos;</source>
         <translation>&apos;max&apos; muss größer als &apos;min&apos; sein</translation>
     </message>
@@ -3101,7 +3127,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>unbekannte Skala &apos;%1&apos; (erwartet: range, nominal oder limit)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>&apos;min&apos; and &apos;max&apos; are only for the scale &apos;range&apos;</source>
         <translation>&apos;min&apos; und &apos;max&apos; gibt es nur für die Skala &apos;range&apos;</translation>
     </message>
@@ -3111,7 +3137,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;from&apos; gibt es nur für die Skalen &apos;nominal&apos; und &apos;limit&apos;</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+9"/>
+        <source>&apos;program&apos; must be an object</source>
+        <translation>&apos;program&apos; muss ein Objekt sein</translation>
+    </message>
+    <message>
+        <location line="+61"/>
         <source>&apos;alwaysAnswersAddress&apos; must be 1..247 or 255, not %1</source>
         <translation>&apos;alwaysAnswersAddress&apos; muss 1..247 oder 255 sein, nicht %1</translation>
     </message>
