@@ -2641,12 +2641,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+25"/>
-        <location line="+88"/>
+        <location line="+94"/>
         <source>&apos;%1&apos; is not a readable entry</source>
         <translation>&apos;%1&apos; ist kein lesbarer Eintrag</translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+110"/>
         <source>&apos;protocol&apos; must be an object</source>
         <translation>&apos;protocol&apos; muss ein Objekt sein</translation>
     </message>
@@ -2706,8 +2706,8 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Eintrag #%1 (%2)</translation>
     </message>
     <message>
-        <location line="-392"/>
-        <location line="+393"/>
+        <location line="-402"/>
+        <location line="+403"/>
         <location line="+302"/>
         <location filename="../lib/protocol/overlapcheck.cpp" line="+70"/>
         <source>entry &apos;%1&apos; (%2)</source>
@@ -2769,7 +2769,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Adressbereich %1..%2 ist leer</translation>
     </message>
     <message>
-        <location line="-308"/>
+        <location line="-318"/>
         <source>malformed JSON at byte %1: &apos;%2&apos; given twice in one object</source>
         <translation>fehlerhaftes JSON bei Byte %1: &apos;%2&apos; zweimal im selben Objekt angegeben</translation>
     </message>
@@ -2784,7 +2784,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;configuredUnit&apos; nennt &apos;%1&apos;, das &apos;configuredUnits&apos; nicht definiert</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+54"/>
         <source>&apos;%1&apos; must be a readable bool entry or a single bit of a readable bit field</source>
         <translation>&apos;%1&apos; muss ein lesbarer Bool-Eintrag oder ein einzelnes Bit eines lesbaren Bitfelds sein</translation>
     </message>
@@ -2827,6 +2827,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+9"/>
         <source>&apos;values&apos; must be a non-empty array</source>
         <translation>&apos;values&apos; muss ein nicht leeres Array sein</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&apos;values&apos; has %1 rows; a faceplate shows at most %2</source>
+        <translation>&apos;values&apos; hat %1 Zeilen; ein Gerätebild der Übersicht zeigt höchstens %2</translation>
     </message>
     <message>
         <location line="+16"/>
