@@ -661,15 +661,24 @@ void DeviceTile::paintEvent(QPaintEvent *)
                     painter.fillRect(QRectF(from, track.top() + 1, std::max<qreal>(1.5, to - from), track.height() - 1),
                                      Theme::color(Theme::Role::BarFill));
                     if (r.beyond) {
-                        // Beyond its scale: the track gets a heavy outline and an arrow head.
+                        // Beyond its scale: the track gets a heavy outline and an arrow head
+                        // pointing out of the end the value has passed, in the tile's colour
+                        // where it lies on the fill, else in the text colour, so it stands out
+                        // from what is under it (an ink arrow on the fill merged with the outline).
                         painter.setPen(QPen(ink, 2));
                         painter.setBrush(Qt::NoBrush);
                         painter.drawRect(track);
-                        const qreal x = *r.fraction >= 1 ? track.right() - 1 : track.left() + 1;
-                        const qreal d = *r.fraction >= 1 ? -track.height() * 0.6 : track.height() * 0.6;
-                        painter.setBrush(ink);
-                        painter.drawPolygon(QPolygonF{QPointF(x, track.center().y()), QPointF(x + d, track.top() + 1),
-                                                      QPointF(x + d, track.bottom() - 1)});
+                        const bool high = *r.fraction >= 1;
+                        const QRectF inner = track.adjusted(2, 2, -2, -2);
+                        const qreal x = high ? inner.right() : inner.left();
+                        const qreal d = (high ? -1 : 1) * std::max<qreal>(4, inner.height() * 1.2);
+                        painter.save();
+                        painter.setRenderHint(QPainter::Antialiasing);
+                        painter.setPen(Qt::NoPen);
+                        painter.setBrush(high || r.zero > 0 ? background : ink);
+                        painter.drawPolygon(QPolygonF{QPointF(x, inner.center().y()), QPointF(x + d, inner.top()),
+                                                      QPointF(x + d, inner.bottom())});
+                        painter.restore();
                     }
                     if (r.zero > 0) {
                         painter.setPen(QPen(ink, 1));

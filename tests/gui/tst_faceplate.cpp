@@ -4,6 +4,7 @@
 // is no bar. And the overview's columns and density settle at every window size, for
 // 1 to 62 devices, without a faceplate cut off.
 #include "connectionbar.h"
+#include "devicepage.h"
 #include "devicetile.h"
 #include "mainwindow.h"
 #include "overviewpage.h"
@@ -29,6 +30,7 @@ private slots:
     void staleAlarmNamesSaySo();
     void noBarForAValueThatIsNotCurrent();
     void scaleThatGivesNoBarSaysWhy();
+    void tabReachesEveryFaceplateInView();
     void columnsAndDensitySettle_data();
     void columnsAndDensitySettle();
 
@@ -142,6 +144,40 @@ void tst_Faceplate::scaleThatGivesNoBarSaysWhy()
     QVERIFY(sim->setNumber("load_voltage_limit", voltageLimit));
     QVERIFY(sim->setWords(nominalAddress, {nominal}));
     QTRY_COMPARE_WITH_TIMEOUT(tile->barsDrawn(), 4, 20000);
+}
+
+void tst_Faceplate::tabReachesEveryFaceplateInView()
+{
+    // 31 faceplates in a window too small for them: Tab goes from one to the next in
+    // their order, the overview scrolls each into view, Space opens the device.
+    MainWindow::Options options;
+    options.settingsFile = m_dir.filePath(QStringLiteral("tab.ini"));
+    options.logFolder = m_dir.filePath(QStringLiteral("tab-logs"));
+    MainWindow window(families(), options);
+    const QStringList order{"ipc300", "tya200", "quantrol", "dtron300"};
+    for (int address = 1; address <= 31; ++address)
+        QVERIFY(window.addDevice(families().family(order.at(address % 4)), quint8(address)));
+    window.resize(1000, 600);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.showOverview();
+    QApplication::setActiveWindow(&window);
+    auto *overview = window.findChild<OverviewPage *>(QStringLiteral("overview"));
+    QVERIFY(overview->scrollArea()->verticalScrollBar()->isVisible());
+    QWidget *viewport = overview->scrollArea()->viewport();
+    DeviceTile *first = window.deviceTile(order.at(1), 1);
+    first->setFocus(Qt::TabFocusReason);
+    QTRY_VERIFY(first->hasFocus());
+    for (int address = 2; address <= 31; ++address) {
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
+        DeviceTile *tile = window.deviceTile(order.at(address % 4), quint8(address));
+        QVERIFY2(tile->hasFocus(), qPrintable(QApplication::focusWidget()->objectName()));
+        const QRect onScreen(tile->mapTo(viewport, QPoint(0, 0)), tile->size());
+        QVERIFY2(viewport->rect().contains(onScreen), qPrintable(tile->objectName()));
+    }
+    DeviceTile *last = window.deviceTile(order.at(31 % 4), 31);
+    QTest::keyClick(last, Qt::Key_Space);
+    QTRY_VERIFY(window.devicePage(order.at(31 % 4), 31) && window.devicePage(order.at(31 % 4), 31)->isVisible());
 }
 
 void tst_Faceplate::columnsAndDensitySettle_data()
