@@ -966,19 +966,19 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+106"/>
-        <location line="+124"/>
+        <location line="+130"/>
         <location line="+126"/>
         <location line="+205"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="-432"/>
+        <location line="-438"/>
         <source>Bar: %1 to %2 %3</source>
         <translation>Balken: %1 bis %2 %3</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+24"/>
         <source>Bar: 0 to %1 (nominal)</source>
         <translation>Balken: 0 bis %1 (Nennwert)</translation>
     </message>
@@ -991,6 +991,11 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <location line="+2"/>
         <source>No bar: its scale, %1, is not above zero.</source>
         <translation>Kein Balken: Die Skala, %1, ist nicht größer als null.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No bar: %1, a part of its scale, is not above zero.</source>
+        <translation>Kein Balken: %1, ein Teil der Skala, ist nicht größer als null.</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -1025,18 +1030,18 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+380"/>
+        <location line="+389"/>
         <source>Mode: %1</source>
         <translation>Betriebsart: %1</translation>
     </message>
     <message>
-        <location line="-378"/>
-        <location line="+383"/>
+        <location line="-387"/>
+        <location line="+392"/>
         <source>Program: %1</source>
         <translation>Programm: %1</translation>
     </message>
     <message>
-        <location line="-367"/>
+        <location line="-376"/>
         <source>Wrong device</source>
         <translation>Falsches Gerät</translation>
     </message>

@@ -180,8 +180,12 @@ void DeviceTile::refresh()
         case FaceplateValue::Scale::Limit: {
             std::optional<double> full = 1.0;
             QString unnumbered;   // a scale entry read, but its value has no number (an enum without a text)
+            QString notPositive;  // a part of the scale that is zero or below ("Power limit = -5")
             for (const QString &id : v.scaleFrom) {
                 const std::optional<double> part = number(id);
+                // Two negative parts make a positive product, and no scale at all.
+                if (part && *part <= 0 && notPositive.isEmpty())
+                    notPositive = QStringLiteral("%1 = %2").arg(mapText(m_map.entry(id)->label), QLocale().toString(*part, 'g', 6));
                 if (!part && unnumbered.isEmpty() && m_values->rowOf(id) >= 0) {
                     const QModelIndex index = m_values->index(m_values->rowOf(id), LiveValuesModel::ValueColumn);
                     if (index.data(LiveValuesModel::NumericRole).isValid())
@@ -192,12 +196,14 @@ void DeviceTile::refresh()
             }
             const QString amount = full ? QStringLiteral("%1 %2").arg(QLocale().toString(*full, 'g', 6), e ? e->unit : QString()).trimmed()
                                         : QString();
-            if (full && *full > 0) {
+            if (full && notPositive.isEmpty()) {
                 high = *full;
                 r.scaleText = v.scale == FaceplateValue::Scale::Nominal ? tr("Bar: 0 to %1 (nominal)").arg(amount)
                                                                         : tr("Bar: 0 to %1 (limit set on the device)").arg(amount);
-            } else if (full) {
+            } else if (full && v.scaleFrom.size() == 1) {
                 r.scaleText = tr("No bar: its scale, %1, is not above zero.").arg(amount);
+            } else if (full) {
+                r.scaleText = tr("No bar: %1, a part of its scale, is not above zero.").arg(notPositive);
             } else if (!unnumbered.isEmpty()) {
                 r.scaleText = tr("No bar: the device reports %1, which the map gives no number.").arg(unnumbered);
             } else {

@@ -13,6 +13,10 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QScopeGuard>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -30,6 +34,7 @@ private slots:
     void staleAlarmNamesSaySo();
     void noBarForAValueThatIsNotCurrent();
     void scaleThatGivesNoBarSaysWhy();
+    void scaleOfTwoNegativePartsGivesNoBar();
     void tabReachesEveryFaceplateInView();
     void columnsAndDensitySettle_data();
     void columnsAndDensitySettle();
@@ -178,6 +183,54 @@ void tst_Faceplate::tabReachesEveryFaceplateInView()
     DeviceTile *last = window.deviceTile(order.at(31 % 4), 31);
     QTest::keyClick(last, Qt::Key_Space);
     QTRY_VERIFY(window.devicePage(order.at(31 % 4), 31) && window.devicePage(order.at(31 % 4), 31)->isVisible());
+}
+
+void tst_Faceplate::scaleOfTwoNegativePartsGivesNoBar()
+{
+    // A user's map scales the power by the product of two limits: two negative limits
+    // make a positive product, and still no scale.
+    QFile builtin(QStringLiteral(":/maps/ipc300.json"));
+    QVERIFY(builtin.open(QIODevice::ReadOnly));
+    QJsonObject map = QJsonDocument::fromJson(builtin.readAll()).object();
+    QJsonObject face = map.value("faceplate").toObject();
+    QJsonArray values = face.value("values").toArray();
+    QJsonObject power = values.at(3).toObject();
+    QCOMPARE(power.value("entry").toString(), QString("power"));
+    power["from"] = QJsonArray{"power_limit", "load_voltage_limit"};
+    values.replace(3, power);
+    face["values"] = values;
+    map["faceplate"] = face;
+    QTemporaryDir folder;
+    QFile file(folder.filePath("ipc300.json"));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(QJsonDocument(map).toJson());
+    file.close();
+    const FamilyRegistry registry = FamilyRegistry::load({folder.path()}, true);
+    QVERIFY2(registry.errors().isEmpty(), qPrintable(registry.errors().join('\n')));
+
+    MainWindow::Options options;
+    options.settingsFile = m_dir.filePath(QStringLiteral("product.ini"));
+    options.logFolder = m_dir.filePath(QStringLiteral("product-logs"));
+    MainWindow window(registry, options);
+    window.connectionBar()->setSettings(m_line.masterEnd(), 19200, "8N1");
+    QVERIFY(window.connectLine());
+    QVERIFY(window.addDevice(registry.family("ipc300"), 1));
+    window.show();
+    window.showOverview();
+    DeviceTile *tile = window.deviceTile("ipc300", 1);
+    QTRY_COMPARE_WITH_TIMEOUT(tile->barsDrawn(), 4, 20000);
+    SimulatedDevice *sim = m_sim.line().device(1);
+    const double powerLimit = sim->number("power_limit");
+    const double voltageLimit = sim->number("load_voltage_limit");
+    auto restore = qScopeGuard([=] {
+        sim->setNumber("power_limit", powerLimit);
+        sim->setNumber("load_voltage_limit", voltageLimit);
+    });
+    QVERIFY(sim->setNumber("power_limit", -20));
+    QVERIFY(sim->setNumber("load_voltage_limit", -10));
+    QTRY_COMPARE_WITH_TIMEOUT(tile->barsDrawn(), 2, 20000);
+    QVERIFY2(tile->toolTip().contains("Power – No bar: Power limit value = -20, a part of its scale, is not above zero."),
+             qPrintable(tile->toolTip()));
 }
 
 void tst_Faceplate::columnsAndDensitySettle_data()
