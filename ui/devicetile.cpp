@@ -180,8 +180,12 @@ void DeviceTile::refresh()
         case FaceplateValue::Scale::Limit: {
             std::optional<double> full = 1.0;
             QString unnumbered;   // a scale entry read, but its value has no number (an enum without a text)
+            QString notPositive;  // a part of the scale that is zero or below ("Power limit = -5")
             for (const QString &id : v.scaleFrom) {
                 const std::optional<double> part = number(id);
+                // Two negative parts make a positive product, and no scale at all.
+                if (part && *part <= 0 && notPositive.isEmpty())
+                    notPositive = QStringLiteral("%1 = %2").arg(mapText(m_map.entry(id)->label), QLocale().toString(*part, 'g', 6));
                 if (!part && unnumbered.isEmpty() && m_values->rowOf(id) >= 0) {
                     const QModelIndex index = m_values->index(m_values->rowOf(id), LiveValuesModel::ValueColumn);
                     if (index.data(LiveValuesModel::NumericRole).isValid())
@@ -192,12 +196,14 @@ void DeviceTile::refresh()
             }
             const QString amount = full ? QStringLiteral("%1 %2").arg(QLocale().toString(*full, 'g', 6), e ? e->unit : QString()).trimmed()
                                         : QString();
-            if (full && *full > 0) {
+            if (full && notPositive.isEmpty()) {
                 high = *full;
                 r.scaleText = v.scale == FaceplateValue::Scale::Nominal ? tr("Bar: 0 to %1 (nominal)").arg(amount)
                                                                         : tr("Bar: 0 to %1 (limit set on the device)").arg(amount);
-            } else if (full) {
+            } else if (full && v.scaleFrom.size() == 1) {
                 r.scaleText = tr("No bar: its scale, %1, is not above zero.").arg(amount);
+            } else if (full) {
+                r.scaleText = tr("No bar: %1, a part of its scale, is not above zero.").arg(notPositive);
             } else if (!unnumbered.isEmpty()) {
                 r.scaleText = tr("No bar: the device reports %1, which the map gives no number.").arg(unnumbered);
             } else {
@@ -661,15 +667,24 @@ void DeviceTile::paintEvent(QPaintEvent *)
                     painter.fillRect(QRectF(from, track.top() + 1, std::max<qreal>(1.5, to - from), track.height() - 1),
                                      Theme::color(Theme::Role::BarFill));
                     if (r.beyond) {
-                        // Beyond its scale: the track gets a heavy outline and an arrow head.
+                        // Beyond its scale: the track gets a heavy outline and an arrow head
+                        // pointing out of the end the value has passed, in the tile's colour
+                        // where it lies on the fill, else in the text colour, so it stands out
+                        // from what is under it (an ink arrow on the fill merged with the outline).
                         painter.setPen(QPen(ink, 2));
                         painter.setBrush(Qt::NoBrush);
                         painter.drawRect(track);
-                        const qreal x = *r.fraction >= 1 ? track.right() - 1 : track.left() + 1;
-                        const qreal d = *r.fraction >= 1 ? -track.height() * 0.6 : track.height() * 0.6;
-                        painter.setBrush(ink);
-                        painter.drawPolygon(QPolygonF{QPointF(x, track.center().y()), QPointF(x + d, track.top() + 1),
-                                                      QPointF(x + d, track.bottom() - 1)});
+                        const bool high = *r.fraction >= 1;
+                        const QRectF inner = track.adjusted(2, 2, -2, -2);
+                        const qreal x = high ? inner.right() : inner.left();
+                        const qreal d = (high ? -1 : 1) * std::max<qreal>(4, inner.height() * 1.2);
+                        painter.save();
+                        painter.setRenderHint(QPainter::Antialiasing);
+                        painter.setPen(Qt::NoPen);
+                        painter.setBrush(high || r.zero > 0 ? background : ink);
+                        painter.drawPolygon(QPolygonF{QPointF(x, inner.center().y()), QPointF(x + d, inner.top()),
+                                                      QPointF(x + d, inner.bottom())});
+                        painter.restore();
                     }
                     if (r.zero > 0) {
                         painter.setPen(QPen(ink, 1));

@@ -137,10 +137,16 @@ private:
         return map;
     }
 
+    static constexpr int maxFaceplateValues = 16;
+
+    // The overview's values the HMI reads, as many as a faceplate shows.
     static QList<FaceplateValue> defaultFaceplateValues(const RegisterMap &map)
     {
         QList<FaceplateValue> values;
         for (const QString &id : map.overview) {
+            const RegisterEntry *e = map.entry(id);
+            if (!e || !e->alias.isEmpty() || e->reserved || values.size() == maxFaceplateValues)
+                continue;
             FaceplateValue value;
             value.entry = id;
             values << value;
@@ -252,6 +258,10 @@ private:
         const QJsonValue values = o.value("values");
         if (!values.isArray() || values.toArray().isEmpty()) {
             fail(where, tr("'values' must be a non-empty array"));
+        } else if (values.toArray().size() > maxFaceplateValues) {
+            // A faceplate is read at a glance; a taller one pushes its alarms out of sight
+            // and makes every faceplate of its row as tall.
+            fail(where, tr("'values' has %1 rows; a faceplate shows at most %2").arg(values.toArray().size()).arg(maxFaceplateValues));
         } else {
             int index = 0;
             for (const QJsonValue &v : values.toArray()) {

@@ -4,6 +4,7 @@
 // is no bar. And the overview's columns and density settle at every window size, for
 // 1 to 62 devices, without a faceplate cut off.
 #include "connectionbar.h"
+#include "devicepage.h"
 #include "devicetile.h"
 #include "mainwindow.h"
 #include "overviewpage.h"
@@ -12,6 +13,10 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QScopeGuard>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -29,6 +34,8 @@ private slots:
     void staleAlarmNamesSaySo();
     void noBarForAValueThatIsNotCurrent();
     void scaleThatGivesNoBarSaysWhy();
+    void scaleOfTwoNegativePartsGivesNoBar();
+    void tabReachesEveryFaceplateInView();
     void columnsAndDensitySettle_data();
     void columnsAndDensitySettle();
 
@@ -142,6 +149,88 @@ void tst_Faceplate::scaleThatGivesNoBarSaysWhy()
     QVERIFY(sim->setNumber("load_voltage_limit", voltageLimit));
     QVERIFY(sim->setWords(nominalAddress, {nominal}));
     QTRY_COMPARE_WITH_TIMEOUT(tile->barsDrawn(), 4, 20000);
+}
+
+void tst_Faceplate::tabReachesEveryFaceplateInView()
+{
+    // 31 faceplates in a window too small for them: Tab goes from one to the next in
+    // their order, the overview scrolls each into view, Space opens the device.
+    MainWindow::Options options;
+    options.settingsFile = m_dir.filePath(QStringLiteral("tab.ini"));
+    options.logFolder = m_dir.filePath(QStringLiteral("tab-logs"));
+    MainWindow window(families(), options);
+    const QStringList order{"ipc300", "tya200", "quantrol", "dtron300"};
+    for (int address = 1; address <= 31; ++address)
+        QVERIFY(window.addDevice(families().family(order.at(address % 4)), quint8(address)));
+    window.resize(1000, 600);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.showOverview();
+    QApplication::setActiveWindow(&window);
+    auto *overview = window.findChild<OverviewPage *>(QStringLiteral("overview"));
+    QVERIFY(overview->scrollArea()->verticalScrollBar()->isVisible());
+    QWidget *viewport = overview->scrollArea()->viewport();
+    DeviceTile *first = window.deviceTile(order.at(1), 1);
+    first->setFocus(Qt::TabFocusReason);
+    QTRY_VERIFY(first->hasFocus());
+    for (int address = 2; address <= 31; ++address) {
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
+        DeviceTile *tile = window.deviceTile(order.at(address % 4), quint8(address));
+        QVERIFY2(tile->hasFocus(), qPrintable(QApplication::focusWidget()->objectName()));
+        const QRect onScreen(tile->mapTo(viewport, QPoint(0, 0)), tile->size());
+        QVERIFY2(viewport->rect().contains(onScreen), qPrintable(tile->objectName()));
+    }
+    DeviceTile *last = window.deviceTile(order.at(31 % 4), 31);
+    QTest::keyClick(last, Qt::Key_Space);
+    QTRY_VERIFY(window.devicePage(order.at(31 % 4), 31) && window.devicePage(order.at(31 % 4), 31)->isVisible());
+}
+
+void tst_Faceplate::scaleOfTwoNegativePartsGivesNoBar()
+{
+    // A user's map scales the power by the product of two limits: two negative limits
+    // make a positive product, and still no scale.
+    QFile builtin(QStringLiteral(":/maps/ipc300.json"));
+    QVERIFY(builtin.open(QIODevice::ReadOnly));
+    QJsonObject map = QJsonDocument::fromJson(builtin.readAll()).object();
+    QJsonObject face = map.value("faceplate").toObject();
+    QJsonArray values = face.value("values").toArray();
+    QJsonObject power = values.at(3).toObject();
+    QCOMPARE(power.value("entry").toString(), QString("power"));
+    power["from"] = QJsonArray{"power_limit", "load_voltage_limit"};
+    values.replace(3, power);
+    face["values"] = values;
+    map["faceplate"] = face;
+    QTemporaryDir folder;
+    QFile file(folder.filePath("ipc300.json"));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(QJsonDocument(map).toJson());
+    file.close();
+    const FamilyRegistry registry = FamilyRegistry::load({folder.path()}, true);
+    QVERIFY2(registry.errors().isEmpty(), qPrintable(registry.errors().join('\n')));
+
+    MainWindow::Options options;
+    options.settingsFile = m_dir.filePath(QStringLiteral("product.ini"));
+    options.logFolder = m_dir.filePath(QStringLiteral("product-logs"));
+    MainWindow window(registry, options);
+    window.connectionBar()->setSettings(m_line.masterEnd(), 19200, "8N1");
+    QVERIFY(window.connectLine());
+    QVERIFY(window.addDevice(registry.family("ipc300"), 1));
+    window.show();
+    window.showOverview();
+    DeviceTile *tile = window.deviceTile("ipc300", 1);
+    QTRY_COMPARE_WITH_TIMEOUT(tile->barsDrawn(), 4, 20000);
+    SimulatedDevice *sim = m_sim.line().device(1);
+    const double powerLimit = sim->number("power_limit");
+    const double voltageLimit = sim->number("load_voltage_limit");
+    auto restore = qScopeGuard([=] {
+        sim->setNumber("power_limit", powerLimit);
+        sim->setNumber("load_voltage_limit", voltageLimit);
+    });
+    QVERIFY(sim->setNumber("power_limit", -20));
+    QVERIFY(sim->setNumber("load_voltage_limit", -10));
+    QTRY_COMPARE_WITH_TIMEOUT(tile->barsDrawn(), 2, 20000);
+    QVERIFY2(tile->toolTip().contains("Power – No bar: Power limit value = -20, a part of its scale, is not above zero."),
+             qPrintable(tile->toolTip()));
 }
 
 void tst_Faceplate::columnsAndDensitySettle_data()

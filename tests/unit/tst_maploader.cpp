@@ -412,6 +412,11 @@ void tst_MapLoader::refusesBadMap_data()
             << faceplate({{"kind", "process_controller"}, {"values", oneValue},
                           {"program", QJsonObject{{"segment", "name"}, {"segments", "value_a"}, {"timeLeft", "value_a"}}}})
             << "faceplate.program" << "'name'";
+    QJsonArray seventeen;
+    for (int i = 0; i < 17; ++i)
+        seventeen.append(QJsonObject{{"entry", "value_a"}});
+    QTest::newRow("faceplate of 17 rows") << faceplate({{"kind", "power_unit"}, {"values", seventeen}})
+                                          << "faceplate" << "'values' has 17 rows; a faceplate shows at most 16";
     QTest::newRow("faceplate mode as a string")
             << faceplate({{"kind", "process_controller"}, {"values", oneValue}, {"modes", QJsonArray{"manual"}}})
             << "faceplate.modes[0]" << "'when'";
@@ -536,6 +541,14 @@ void tst_MapLoader::faceplateFromTheMap()
     QCOMPARE(r.map->faceplate.values.size(), 1);
     QCOMPARE(r.map->faceplate.values[0].label, QString("Value A"));
     QCOMPARE(r.map->faceplate.values[0].scale, FaceplateValue::Scale::None);
+    // A long overview gives a faceplate of as many rows as one shows.
+    QJsonArray many;
+    for (int i = 0; i < 20; ++i)
+        many.append("value_a");
+    plain["overview"] = many;
+    const MapLoadResult longOverview = MapLoader::loadData(QJsonDocument(plain).toJson(), "test.json");
+    QVERIFY2(longOverview.ok(), qPrintable(longOverview.errors.join('\n')));
+    QCOMPARE(longOverview.map->faceplate.values.size(), 16);
 
     // The built-in maps: bars against nominal values and limits, modes, the dTRON's program.
     const FamilyRegistry registry = FamilyRegistry::load({}, true);
