@@ -1201,19 +1201,19 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+106"/>
-        <location line="+124"/>
+        <location line="+130"/>
         <location line="+126"/>
         <location line="+205"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="-432"/>
+        <location line="-438"/>
         <source>Bar: %1 to %2 %3</source>
         <translation>Balken: %1 bis %2 %3</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+24"/>
         <source>Bar: 0 to %1 (nominal)</source>
         <translation>Balken: 0 bis %1 (Nennwert)</translation>
     </message>
@@ -1226,6 +1226,11 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <location line="+2"/>
         <source>No bar: its scale, %1, is not above zero.</source>
         <translation>Kein Balken: Die Skala, %1, ist nicht größer als null.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No bar: %1, a part of its scale, is not above zero.</source>
+        <translation>Kein Balken: %1, ein Teil der Skala, ist nicht größer als null.</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -1260,18 +1265,18 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+380"/>
+        <location line="+389"/>
         <source>Mode: %1</source>
         <translation>Betriebsart: %1</translation>
     </message>
     <message>
-        <location line="-378"/>
-        <location line="+383"/>
+        <location line="-387"/>
+        <location line="+392"/>
         <source>Program: %1</source>
         <translation>Programm: %1</translation>
     </message>
     <message>
-        <location line="-367"/>
+        <location line="-376"/>
         <source>Wrong device</source>
         <translation>Falsches Gerät</translation>
     </message>
@@ -2924,12 +2929,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+25"/>
-        <location line="+88"/>
+        <location line="+94"/>
         <source>&apos;%1&apos; is not a readable entry</source>
         <translation>&apos;%1&apos; ist kein lesbarer Eintrag</translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+110"/>
         <source>&apos;protocol&apos; must be an object</source>
         <translation>&apos;protocol&apos; muss ein Objekt sein</translation>
     </message>
@@ -2989,8 +2994,8 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Eintrag #%1 (%2)</translation>
     </message>
     <message>
-        <location line="-392"/>
-        <location line="+393"/>
+        <location line="-402"/>
+        <location line="+403"/>
         <location line="+369"/>
         <location filename="../lib/protocol/overlapcheck.cpp" line="+70"/>
         <source>entry &apos;%1&apos; (%2)</source>
@@ -3052,7 +3057,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Adressbereich %1..%2 ist leer</translation>
     </message>
     <message>
-        <location line="-308"/>
+        <location line="-318"/>
         <source>malformed JSON at byte %1: &apos;%2&apos; given twice in one object</source>
         <translation>fehlerhaftes JSON bei Byte %1: &apos;%2&apos; zweimal im selben Objekt angegeben</translation>
     </message>
@@ -3067,7 +3072,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;configuredUnit&apos; nennt &apos;%1&apos;, das &apos;configuredUnits&apos; nicht definiert</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+54"/>
         <source>&apos;%1&apos; must be a readable bool entry or a single bit of a readable bit field</source>
         <translation>&apos;%1&apos; muss ein lesbarer Bool-Eintrag oder ein einzelnes Bit eines lesbaren Bitfelds sein</translation>
     </message>
@@ -3110,6 +3115,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+9"/>
         <source>&apos;values&apos; must be a non-empty array</source>
         <translation>&apos;values&apos; muss ein nicht leeres Array sein</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&apos;values&apos; has %1 rows; a faceplate shows at most %2</source>
+        <translation>&apos;values&apos; hat %1 Zeilen; ein Gerätebild der Übersicht zeigt höchstens %2</translation>
     </message>
     <message>
         <location line="+16"/>
