@@ -171,8 +171,12 @@ bool EventLog::writeLine(QByteArray line)
     const QByteArray name = QFile::encodeName(m_path);
     // Another process (jumoctl, a second HMI) may rotate or remove the file between two
     // appends: the lock is taken on the file held open, then the name must still lead to
-    // it; otherwise the file the name leads to now is opened.
-    for (int attempt = 0; attempt < 8; ++attempt) {
+    // it; otherwise the file the name leads to now is opened. Each time round, another
+    // writer has rotated the file, so it makes progress; flock is not fair, though, and a
+    // busy writer can rotate many times while this one waits for the lock. A record is
+    // worth the wait: 256 rounds, not 8 (a suspected cause of a rare lost record in
+    // tst_eventlog's two-writer test; not reproduced).
+    for (int attempt = 0; attempt < 256; ++attempt) {
         if (m_fd < 0 && !openFile())
             return false;
         int locked;
