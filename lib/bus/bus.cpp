@@ -6,6 +6,7 @@
 #include <QLoggingCategory>
 
 #include <algorithm>
+#include <atomic>
 
 Q_LOGGING_CATEGORY(lcBus, "jumo.bus", QtWarningMsg)
 
@@ -137,7 +138,10 @@ void Bus::invalidateAll(ReadError reason)
 
 DeviceId Bus::addDevice(std::shared_ptr<const RegisterMap> map, quint8 address)
 {
-    const DeviceId id = m_nextDeviceId++;
+    // Unique in the process, not only on this line: a station with several lines keys its
+    // pages, tiles and publications by device id.
+    static std::atomic<DeviceId> nextDeviceId{1};
+    const DeviceId id = nextDeviceId++;
     m_scheduler.addDevice(id, map, address, now());
     m_store.addDevice(id, map);
     m_store.setAllowance(id, initialAllowanceMs);

@@ -202,7 +202,6 @@ private:
     QDateTime m_lineSince;
     std::optional<InFlight> m_inFlight;
     QList<DeviceId> m_forgetAfterFlight;   // removed while their request was under way
-    DeviceId m_nextDeviceId = 1;
     int m_nextTicket = 1;
     qint64 m_wakeAtMs = -1;                // the earliest dispatch already asked for
     bool m_sweeping = false;

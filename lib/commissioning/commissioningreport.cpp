@@ -118,12 +118,6 @@ QString dateTimeText(const QDateTime &time, const QLocale &locale)
     return dateText(time.date(), locale) + QLatin1Char(' ') + timeText(time.time(), locale);
 }
 
-bool isNumeric(ValueType type)
-{
-    return type == ValueType::Float || type == ValueType::Int16 || type == ValueType::UInt16
-            || type == ValueType::Int32 || type == ValueType::UInt32;
-}
-
 // A bit field for people: the words in hex and the set bits by their labels.
 QString bitsText(const DecodedValue &v, const RegisterEntry &entry)
 {

@@ -38,20 +38,6 @@ bool sectionBefore(const QString &a, const QString &b)
     return a < b;
 }
 
-bool isNumeric(ValueType type)
-{
-    switch (type) {
-    case ValueType::Float:
-    case ValueType::Int16:
-    case ValueType::UInt16:
-    case ValueType::Int32:
-    case ValueType::UInt32:
-        return true;
-    default:
-        return false;
-    }
-}
-
 // What the type can hold at all, for whole-number types.
 std::optional<std::pair<double, double>> typeBounds(ValueType type)
 {
@@ -412,20 +398,28 @@ QVariant ParameterEditModel::headerData(int section, Qt::Orientation orientation
     }
 }
 
+const RegisterEntry *ParameterEditModel::editableEntry(const QString &id, QString *message) const
+{
+    QString why;
+    const RegisterEntry *e = entry(id);
+    if (!e)
+        why = tr("'%1' is no parameter listed here").arg(id);
+    else if (m_readOnly)
+        why = tr("read-only mode: nothing is changed or written");
+    else if (m_locked)
+        why = tr("a write is under way: changes wait until it has ended");
+    if (why.isEmpty())
+        return e;
+    if (message)
+        *message = why;
+    return nullptr;
+}
+
 bool ParameterEditModel::setNewValue(const QString &id, const QString &typed, QString *message)
 {
-    const RegisterEntry *e = entry(id);
-    auto refuse = [message](const QString &why) {
-        if (message)
-            *message = why;
-        return false;
-    };
+    const RegisterEntry *e = editableEntry(id, message);
     if (!e)
-        return refuse(tr("'%1' is no parameter listed here").arg(id));
-    if (m_readOnly)
-        return refuse(tr("read-only mode: nothing is changed or written"));
-    if (m_locked)
-        return refuse(tr("a write is under way: changes wait until it has ended"));
+        return false;
     const QString t = typed.trimmed();
     if (t.isEmpty()) {
         revert(id);
@@ -435,9 +429,12 @@ bool ParameterEditModel::setNewValue(const QString &id, const QString &typed, QS
     if (isNumeric(e->type)) {
         const std::optional<QString> number = ValueFormat::parseNumber(t);
         // Never handed on as typed: the codec would read "1.500" as 1.5.
-        if (!number)
-            return refuse(tr("'%1' is no number that can be read one way only: write it without thousands separators")
-                                  .arg(t));
+        if (!number) {
+            if (message)
+                *message = tr("'%1' is no number that can be read one way only: write it without thousands separators")
+                                   .arg(t);
+            return false;
+        }
         exact = *number;
     } else if (e->type == ValueType::Enum) {
         for (auto it = e->enumValues.cbegin(); it != e->enumValues.cend(); ++it) {
@@ -455,18 +452,9 @@ bool ParameterEditModel::setNewValue(const QString &id, const QString &typed, QS
 
 bool ParameterEditModel::setExactValue(const QString &id, const QString &exact, QString *message)
 {
-    const RegisterEntry *e = entry(id);
-    auto refuse = [message](const QString &why) {
-        if (message)
-            *message = why;
-        return false;
-    };
+    const RegisterEntry *e = editableEntry(id, message);
     if (!e)
-        return refuse(tr("'%1' is no parameter listed here").arg(id));
-    if (m_readOnly)
-        return refuse(tr("read-only mode: nothing is changed or written"));
-    if (m_locked)
-        return refuse(tr("a write is under way: changes wait until it has ended"));
+        return false;
     return takeValue(*e, exact.trimmed(), message);
 }
 

@@ -105,6 +105,8 @@ private:
     };
 
     void onEntriesUpdated(DeviceId device, const QStringList &ids);
+    // The entry of a parameter that may be edited now; else null, with the reason.
+    const RegisterEntry *editableEntry(const QString &id, QString *message) const;
     bool takeValue(const RegisterEntry &e, const QString &exact, QString *message);
     // Why a number is no value of the entry, or empty: range, whole numbers.
     QString rangeProblem(const RegisterEntry &e, double value, const QString &typed) const;

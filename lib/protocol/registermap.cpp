@@ -74,6 +74,20 @@ QString formatAddress(quint16 address)
 }
 
 QString valueTypeName(ValueType type) { return nameOf(valueTypeNames, type); }
+
+bool isNumeric(ValueType type)
+{
+    switch (type) {
+    case ValueType::Float:
+    case ValueType::Int16:
+    case ValueType::UInt16:
+    case ValueType::Int32:
+    case ValueType::UInt32:
+        return true;
+    default:
+        return false;
+    }
+}
 std::optional<ValueType> valueTypeFromName(const QString &name) { return lookup(valueTypeNames, name); }
 QString accessName(Access access) { return nameOf(accessNames, access); }
 std::optional<Access> accessFromName(const QString &name) { return lookup(accessNames, name); }

@@ -26,6 +26,8 @@ enum class WordOrder { ABCD, CDAB, BADC, DCBA };
 QString formatAddress(quint16 address);
 
 QString valueTypeName(ValueType type);
+// A number with a unit and a range (not a bool, enum, bit field or text).
+bool isNumeric(ValueType type);
 std::optional<ValueType> valueTypeFromName(const QString &name);
 QString accessName(Access access);
 std::optional<Access> accessFromName(const QString &name);

@@ -15,20 +15,6 @@ QLocale withoutGroups(QLocale locale)
     return locale;
 }
 
-bool isNumeric(ValueType type)
-{
-    switch (type) {
-    case ValueType::Float:
-    case ValueType::Int16:
-    case ValueType::UInt16:
-    case ValueType::Int32:
-    case ValueType::UInt32:
-        return true;
-    default:
-        return false;
-    }
-}
-
 } // namespace
 
 QString ValueFormat::number(double value, DisplayPrecision precision, const QLocale &locale)
