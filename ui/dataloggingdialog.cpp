@@ -14,14 +14,14 @@
 
 namespace jumo {
 
-DataLoggingDialog::DataLoggingDialog(Bus *bus, DeviceId device, DataLogger *logger, QWidget *parent)
-    : QDialog(parent), m_bus(bus), m_device(device), m_logger(logger), m_entries(new QListWidget(this)),
+DataLoggingDialog::DataLoggingDialog(const DeviceSource *devices, DeviceId device, DataLogger *logger, QWidget *parent)
+    : QDialog(parent), m_devices(devices), m_device(device), m_logger(logger), m_entries(new QListWidget(this)),
       m_interval(new QSpinBox(this)), m_maxSize(new QSpinBox(this)), m_keepFiles(new QSpinBox(this)),
       m_folder(new QLineEdit(this)),
       m_startStop(new QPushButton(this)), m_state(new QLabel(this))
 {
     setWindowTitle(tr("Data logging"));
-    const auto map = bus->deviceMap(device);
+    const auto map = devices->deviceMap(device);
     for (const RegisterEntry &e : map->entries()) {
         if (!e.isReadable() || e.reserved || e.type == ValueType::Text || !e.alias.isEmpty())
             continue;

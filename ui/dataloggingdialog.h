@@ -20,13 +20,13 @@ class DataLoggingDialog : public QDialog
     Q_OBJECT
 
 public:
-    DataLoggingDialog(Bus *bus, DeviceId device, DataLogger *logger, QWidget *parent = nullptr);
+    DataLoggingDialog(const DeviceSource *devices, DeviceId device, DataLogger *logger, QWidget *parent = nullptr);
 
 private:
     void toggle();
     void refresh();
 
-    Bus *m_bus;
+    const DeviceSource *m_devices;
     DeviceId m_device;
     DataLogger *m_logger;
     QListWidget *m_entries;

@@ -25,7 +25,7 @@ Bus::Bus(QObject *parent) : Bus(nullptr, nullptr, parent)
 }
 
 Bus::Bus(Clock *clock, LineConnection::TransportFactory transport, QObject *parent)
-    : QObject(parent), m_ownClock(clock ? nullptr : std::make_unique<SteadyClock>()),
+    : DeviceSource(parent), m_ownClock(clock ? nullptr : std::make_unique<SteadyClock>()),
       m_clock(clock ? clock : m_ownClock.get()), m_line(m_clock, std::move(transport), this)
 {
     qRegisterMetaType<jumo::ModbusResult>();

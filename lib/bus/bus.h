@@ -41,20 +41,7 @@ struct TrafficRecord
     QString error;              // empty when the reply was good
 };
 
-// Whether a device can be heard, and since when (wall-clock time, for people).
-struct DeviceCondition
-{
-    // Identifying: the device answers and is being checked to be of its family;
-    // WrongDevice: a device of another family answers (detail names it).
-    enum class State { Online, Offline, LineLost, Disconnected, Identifying, WrongDevice };
-    State state = State::Disconnected;
-    QDateTime since;
-    QString detail;
-
-    bool isOnline() const { return state == State::Online; }
-};
-
-class Bus : public QObject
+class Bus : public DeviceSource
 {
     Q_OBJECT
 
@@ -74,7 +61,7 @@ public:
     // Opens the port; returns false with the reason in lastError() if it cannot.
     bool open();
     void close();
-    LineState state() const { return m_line.state(); }
+    LineState state() const override { return m_line.state(); }
     QString lastError() const { return m_line.lastError(); }
 
     // Checks every device with the identify probes of these families (all known ones)
@@ -84,11 +71,11 @@ public:
 
     DeviceId addDevice(std::shared_ptr<const RegisterMap> map, quint8 address);
     void removeDevice(DeviceId id);
-    QList<DeviceId> devices() const { return m_scheduler.devices(); }
-    std::shared_ptr<const RegisterMap> deviceMap(DeviceId id) const;
-    quint8 deviceAddress(DeviceId id) const;
+    QList<DeviceId> devices() const override { return m_scheduler.devices(); }
+    std::shared_ptr<const RegisterMap> deviceMap(DeviceId id) const override;
+    quint8 deviceAddress(DeviceId id) const override;
     // "ipc300@1", the name of a device in logs and messages.
-    QString deviceName(DeviceId id) const;
+    QString deviceName(DeviceId id) const override;
 
     // Which entries a poll cycle reads (empty: every readable entry) and how often a
     // cycle starts (0: as fast as the line allows).
@@ -99,10 +86,10 @@ public:
     bool isPolling() const { return m_scheduler.isPolling(); }
     void requestCycle(DeviceId id);
 
-    const EntryState *entryState(DeviceId id, const QString &entryId) const;
+    const EntryState *entryState(DeviceId id, const QString &entryId) const override;
     const DeviceStatistics *statistics(DeviceId id) const;
     bool isOnline(DeviceId id) const;
-    DeviceCondition condition(DeviceId id) const;
+    DeviceCondition condition(DeviceId id) const override;
     // While a device is offline: the time between its probes (doubles up to 30 s).
     int backoffMs(DeviceId id) const;
     // The read requests of one poll cycle.
@@ -138,18 +125,13 @@ public:
     int requestTimeoutMs(const ProtocolInfo &protocol, int requestBytes, int replyBytes) const;
     double interFrameDelayMs() const;
     // The monotonic clock of EntryState times and TrafficRecord times.
-    qint64 clockMs() const { return m_clock->nowMs(); }
+    qint64 clockMs() const override { return m_clock->nowMs(); }
     Clock *clock() const { return m_clock; }
 
 signals:
-    void stateChanged(jumo::LineState state);
     void lineError(const QString &message);
-    // Values or validity of these entries changed (one signal per poll block).
-    void entriesUpdated(jumo::DeviceId id, const QStringList &entryIds);
     void pollCycleFinished(jumo::DeviceId id, double cycleMs);
     void onlineChanged(jumo::DeviceId id, bool online);
-    // Online, offline, line lost, disconnected: communication with the device changed.
-    void conditionChanged(jumo::DeviceId id, const jumo::DeviceCondition &condition);
     void writeFinished(int ticket, const jumo::WriteOutcome &outcome);
     // Every write asked for, before any check: the device ("family@0" for a broadcast),
     // with the value it replaces where one is known.

@@ -6,6 +6,7 @@
 
 #include "bus/bussettings.h"
 #include "bus/clock.h"
+#include "bus/devicesource.h"
 #include "bus/transport.h"
 
 #include <QObject>
@@ -14,8 +15,6 @@
 #include <memory>
 
 namespace jumo {
-
-enum class LineState { Disconnected, Connected, Lost };
 
 class LineConnection : public QObject
 {

@@ -2,15 +2,15 @@
 
 namespace jumo {
 
-AlarmJournal::AlarmJournal(Bus *bus, EventLog *log, QObject *parent) : QObject(parent), m_bus(bus), m_log(log)
+AlarmJournal::AlarmJournal(const DeviceSource *devices, EventLog *log, QObject *parent) : QObject(parent), m_devices(devices), m_log(log)
 {
-    connect(m_bus, &Bus::entriesUpdated, this, &AlarmJournal::onEntriesUpdated);
-    connect(m_bus, &Bus::conditionChanged, this, &AlarmJournal::onConditionChanged);
+    connect(m_devices, &DeviceSource::entriesUpdated, this, &AlarmJournal::onEntriesUpdated);
+    connect(m_devices, &DeviceSource::conditionChanged, this, &AlarmJournal::onConditionChanged);
 }
 
 void AlarmJournal::onConditionChanged(DeviceId device, const DeviceCondition &condition)
 {
-    const auto map = m_bus->deviceMap(device);
+    const auto map = m_devices->deviceMap(device);
     if (!map)
         return;
     using State = DeviceCondition::State;
@@ -32,7 +32,7 @@ void AlarmJournal::onConditionChanged(DeviceId device, const DeviceCondition &co
         state = QStringLiteral("stopped: line closed");
     if (state.isEmpty())
         return;
-    m_log->append(QJsonObject{{"device", QStringLiteral("%1@%2").arg(map->family).arg(m_bus->deviceAddress(device))},
+    m_log->append(QJsonObject{{"device", QStringLiteral("%1@%2").arg(map->family).arg(m_devices->deviceAddress(device))},
                               {"register", QString()},
                               {"bit", QString()},
                               {"id", QStringLiteral("communication")},
@@ -49,15 +49,15 @@ QStringList AlarmJournal::columns()
 
 void AlarmJournal::onEntriesUpdated(DeviceId device, const QStringList &ids)
 {
-    const auto map = m_bus->deviceMap(device);
+    const auto map = m_devices->deviceMap(device);
     if (!map)
         return;
-    const QString deviceName = QStringLiteral("%1@%2").arg(map->family).arg(m_bus->deviceAddress(device));
+    const QString deviceName = QStringLiteral("%1@%2").arg(map->family).arg(m_devices->deviceAddress(device));
     for (const QString &id : ids) {
         const RegisterEntry *e = map->entry(id);
         if (!e || e->type != ValueType::Bitfield || e->isCommand())
             continue;
-        const EntryState *s = m_bus->entryState(device, id);
+        const EntryState *s = m_devices->entryState(device, id);
         if (!s || !s->isCurrent())
             continue;   // no reading, no event: a lost reply changes no bit
         const QString key = deviceName + QLatin1Char('/') + id;

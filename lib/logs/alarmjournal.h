@@ -3,7 +3,7 @@
 // and device, in an EventLog that survives restarts.
 #pragma once
 
-#include "bus/bus.h"
+#include "bus/devicesource.h"
 #include "logs/eventlog.h"
 
 #include <QHash>
@@ -15,7 +15,7 @@ class AlarmJournal : public QObject
     Q_OBJECT
 
 public:
-    AlarmJournal(Bus *bus, EventLog *log, QObject *parent = nullptr);
+    AlarmJournal(const DeviceSource *devices, EventLog *log, QObject *parent = nullptr);
 
     static QStringList columns();
 
@@ -23,7 +23,7 @@ private:
     void onEntriesUpdated(DeviceId device, const QStringList &ids);
     void onConditionChanged(DeviceId device, const DeviceCondition &condition);
 
-    Bus *m_bus;
+    const DeviceSource *m_devices;
     EventLog *m_log;
     QHash<QString, quint32> m_last;   // "device/entry" -> raw value last seen
     QHash<DeviceId, DeviceCondition::State> m_condition;

@@ -13,7 +13,7 @@ Q_DECLARE_LOGGING_CATEGORY(lcLog)
 
 namespace jumo {
 
-DataLogger::DataLogger(Bus *bus, QObject *parent) : QObject(parent), m_bus(bus)
+DataLogger::DataLogger(const DeviceSource *devices, QObject *parent) : QObject(parent), m_devices(devices)
 {
     connect(&m_timer, &QTimer::timeout, this, &DataLogger::sample);
 }
@@ -129,16 +129,16 @@ void DataLogger::sample()
     QByteArray rows;
     int count = 0;
     for (const auto &[device, id] : std::as_const(m_settings.entries)) {
-        const auto map = m_bus->deviceMap(device);
+        const auto map = m_devices->deviceMap(device);
         if (!map)
             continue;
         const RegisterEntry *e = map->entry(id);
-        const EntryState *s = m_bus->entryState(device, id);
+        const EntryState *s = m_devices->entryState(device, id);
         // Only a current good value is written; otherwise the status says why not.
         const QString value = csvField(s && s->isCurrent() && s->value.isOk() ? s->value.display : QString());
         rows += QStringLiteral("%1,%2@%3,%4,%5,%6,%7\n")
                         .arg(time, map->family)
-                        .arg(m_bus->deviceAddress(device))
+                        .arg(m_devices->deviceAddress(device))
                         .arg(id, value, e ? e->unit : QString(), s ? s->statusName() : QStringLiteral("not_read"))
                         .toUtf8();
         ++count;

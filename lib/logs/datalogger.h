@@ -5,7 +5,7 @@
 // (failed) rather than go on with rows that never reach the disk.
 #pragma once
 
-#include "bus/bus.h"
+#include "bus/devicesource.h"
 
 #include <QDate>
 #include <QFile>
@@ -27,7 +27,7 @@ public:
         QList<QPair<DeviceId, QString>> entries;   // device, entry id
     };
 
-    DataLogger(Bus *bus, QObject *parent = nullptr);
+    DataLogger(const DeviceSource *devices, QObject *parent = nullptr);
 
     bool start(const Settings &settings, QString *error);
     void stop();
@@ -48,7 +48,7 @@ private:
     bool closeFile(QString *error);
     void fail(const QString &reason);
 
-    Bus *m_bus;
+    const DeviceSource *m_devices;
     Settings m_settings;
     QTimer m_timer;
     QFile m_file;

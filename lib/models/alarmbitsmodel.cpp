@@ -8,8 +8,8 @@
 
 namespace jumo {
 
-AlarmBitsModel::AlarmBitsModel(Bus *bus, DeviceId device, QObject *parent)
-    : QAbstractListModel(parent), m_bus(bus), m_device(device), m_map(bus->deviceMap(device))
+AlarmBitsModel::AlarmBitsModel(const DeviceSource *devices, DeviceId device, QObject *parent)
+    : QAbstractListModel(parent), m_devices(devices), m_device(device), m_map(devices->deviceMap(device))
 {
     if (m_map) {
         for (const RegisterEntry &e : m_map->entries()) {
@@ -22,7 +22,7 @@ AlarmBitsModel::AlarmBitsModel(Bus *bus, DeviceId device, QObject *parent)
             }
         }
     }
-    connect(m_bus, &Bus::entriesUpdated, this, &AlarmBitsModel::onEntriesUpdated);
+    connect(m_devices, &DeviceSource::entriesUpdated, this, &AlarmBitsModel::onEntriesUpdated);
     recount();
 }
 
@@ -42,7 +42,7 @@ int AlarmBitsModel::rowOf(const QString &reference) const
 
 AlarmBitsModel::BitState AlarmBitsModel::bitState(const Row &row) const
 {
-    const EntryState *s = m_bus->entryState(m_device, row.entry->id);
+    const EntryState *s = m_devices->entryState(m_device, row.entry->id);
     if (!s || s->validity == Validity::Unknown || !s->hasValue())
         return BitState::Unknown;
     return (s->value.raw & row.bit->mask()) ? BitState::On : BitState::Off;
@@ -76,7 +76,7 @@ void AlarmBitsModel::recount()
     for (const Row &r : std::as_const(m_rows)) {
         const BitState state = bitState(r);
         known = known && state != BitState::Unknown;
-        const EntryState *s = m_bus->entryState(m_device, r.entry->id);
+        const EntryState *s = m_devices->entryState(m_device, r.entry->id);
         stale = stale || (s && s->validity == Validity::Stale);
         count += r.bit->kind == BitKind::Alarm && state == BitState::On;
     }
@@ -96,7 +96,7 @@ QVariant AlarmBitsModel::data(const QModelIndex &index, int role) const
     if (!index.isValid() || index.row() >= m_rows.size())
         return {};
     const Row &row = m_rows.at(index.row());
-    const EntryState *state = m_bus->entryState(m_device, row.entry->id);
+    const EntryState *state = m_devices->entryState(m_device, row.entry->id);
     switch (role) {
     case Qt::DisplayRole:
         return QCoreApplication::translate("jumo::maps", row.bit->label.toUtf8().constData());

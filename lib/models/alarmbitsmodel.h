@@ -2,7 +2,7 @@
 // LED grid: label, kind, on/off, and a tooltip with register, bit and the manual's words.
 #pragma once
 
-#include "bus/bus.h"
+#include "bus/devicesource.h"
 
 #include <QAbstractListModel>
 
@@ -20,7 +20,7 @@ public:
                 ValidityRole,     // int(Validity) of the word the bit is in
                 ReferenceRole, GroupTitleRole };
 
-    AlarmBitsModel(Bus *bus, DeviceId device, QObject *parent = nullptr);
+    AlarmBitsModel(const DeviceSource *devices, DeviceId device, QObject *parent = nullptr);
 
     int rowCount(const QModelIndex &parent = {}) const override;
     QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
@@ -48,7 +48,7 @@ private:
     BitState bitState(const Row &row) const;
     void recount();
 
-    Bus *m_bus;
+    const DeviceSource *m_devices;
     DeviceId m_device;
     std::shared_ptr<const RegisterMap> m_map;
     QList<Row> m_rows;

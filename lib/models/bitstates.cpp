@@ -4,10 +4,10 @@
 
 namespace jumo {
 
-QList<BitStateReading> readBitStates(const Bus &bus, DeviceId device, const RegisterEntry &entry)
+QList<BitStateReading> readBitStates(const DeviceSource &devices, DeviceId device, const RegisterEntry &entry)
 {
     QList<BitStateReading> out;
-    const auto map = bus.deviceMap(device);
+    const auto map = devices.deviceMap(device);
     if (!map)
         return out;
     for (const BitDefinition *bit : BitWrite::switchableBits(entry)) {
@@ -16,7 +16,7 @@ QList<BitStateReading> readBitStates(const Bus &bus, DeviceId device, const Regi
         const auto [source, sourceBit] = BitWrite::reportOf(*map, entry, *bit);
         if (source) {
             reading.reportedIn = source->id + QLatin1Char('.') + sourceBit->id;
-            if (const EntryState *s = bus.entryState(device, source->id); s && s->hasValue()) {
+            if (const EntryState *s = devices.entryState(device, source->id); s && s->hasValue()) {
                 reading.validity = s->validity;
                 if (s->validity != Validity::Unknown)
                     reading.state = (s->value.raw & sourceBit->mask()) ? AlarmBitsModel::BitState::On

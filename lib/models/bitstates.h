@@ -3,7 +3,7 @@
 // source ("stateFrom"). A bit whose word could not be read is unknown, neither on nor off.
 #pragma once
 
-#include "bus/bus.h"
+#include "bus/devicesource.h"
 #include "models/alarmbitsmodel.h"
 
 namespace jumo {
@@ -16,6 +16,6 @@ struct BitStateReading
     QString reportedIn;   // "binary_signal_1.digital_output", empty when nothing reports it
 };
 
-QList<BitStateReading> readBitStates(const Bus &bus, DeviceId device, const RegisterEntry &entry);
+QList<BitStateReading> readBitStates(const DeviceSource &devices, DeviceId device, const RegisterEntry &entry);
 
 } // namespace jumo

@@ -9,8 +9,8 @@
 
 namespace jumo {
 
-LiveValuesModel::LiveValuesModel(Bus *bus, DeviceId device, QObject *parent)
-    : QAbstractTableModel(parent), m_bus(bus), m_device(device), m_map(bus->deviceMap(device))
+LiveValuesModel::LiveValuesModel(const DeviceSource *devices, DeviceId device, QObject *parent)
+    : QAbstractTableModel(parent), m_devices(devices), m_device(device), m_map(devices->deviceMap(device))
 {
     if (m_map) {
         for (const RegisterEntry &e : m_map->entries()) {
@@ -20,7 +20,7 @@ LiveValuesModel::LiveValuesModel(Bus *bus, DeviceId device, QObject *parent)
             }
         }
     }
-    connect(m_bus, &Bus::entriesUpdated, this, &LiveValuesModel::onEntriesUpdated);
+    connect(m_devices, &DeviceSource::entriesUpdated, this, &LiveValuesModel::onEntriesUpdated);
     // Ages move on by themselves: one refresh a second. Validity changes come from the
     // bus, which turns values stale or unknown.
     m_ageTimer.setInterval(1000);
@@ -69,8 +69,8 @@ QVariant LiveValuesModel::data(const QModelIndex &index, int role) const
     if (!index.isValid() || index.row() >= m_rows.size())
         return {};
     const RegisterEntry &e = *m_rows.at(index.row());
-    const EntryState *state = m_bus->entryState(m_device, e.id);
-    const qint64 age = state && state->hasValue() ? m_bus->clockMs() - state->goodMs : -1;
+    const EntryState *state = m_devices->entryState(m_device, e.id);
+    const qint64 age = state && state->hasValue() ? m_devices->clockMs() - state->goodMs : -1;
     const Validity validity = ValueText::validity(state);
 
     switch (role) {
@@ -113,11 +113,11 @@ QVariant LiveValuesModel::data(const QModelIndex &index, int role) const
         if (const QString note = ValueText::unitNote(e, *m_map); !note.isEmpty())
             lines << note;
         if (index.column() == StatusColumn || validity != Validity::Current || (state && !state->value.isOk()))
-            lines << tr("Status: %1").arg(ValueText::status(state, *m_map, m_bus->clockMs()));
+            lines << tr("Status: %1").arg(ValueText::status(state, *m_map, m_devices->clockMs()));
         if (validity == Validity::Unknown && state && state->hasValue())
             lines << tr("Last known value: %1, %2 s ago")
                              .arg(ValueFormat::withUnit(state->value, e))
-                             .arg((m_bus->clockMs() - state->goodMs) / 1000);
+                             .arg((m_devices->clockMs() - state->goodMs) / 1000);
         if (!e.notes.isEmpty())
             lines << e.notes;
         return lines.join(QLatin1Char('\n'));
@@ -140,7 +140,7 @@ QVariant LiveValuesModel::data(const QModelIndex &index, int role) const
     case UnitColumn:
         return ValueText::unit(e);
     case StatusColumn:
-        return ValueText::status(state, *m_map, m_bus->clockMs());
+        return ValueText::status(state, *m_map, m_devices->clockMs());
     case AgeColumn:
         return age < 0 ? QString() : tr("%1 s").arg(QString::number(age / 1000.0, 'f', 1));
     default:

@@ -2,7 +2,7 @@
 // unit, status and age of every readable entry. One dataChanged per poll block.
 #pragma once
 
-#include "bus/bus.h"
+#include "bus/devicesource.h"
 
 #include <QAbstractTableModel>
 #include <QTimer>
@@ -22,7 +22,7 @@ public:
                 NumericRole,     // double, only for a current good number
                 ValueWithUnitRole };   // "91.9 V", as tiles and controls show it
 
-    LiveValuesModel(Bus *bus, DeviceId device, QObject *parent = nullptr);
+    LiveValuesModel(const DeviceSource *devices, DeviceId device, QObject *parent = nullptr);
 
     int rowCount(const QModelIndex &parent = {}) const override;
     int columnCount(const QModelIndex &parent = {}) const override;
@@ -35,7 +35,7 @@ public:
 private:
     void onEntriesUpdated(DeviceId device, const QStringList &ids);
 
-    Bus *m_bus;
+    const DeviceSource *m_devices;
     DeviceId m_device;
     std::shared_ptr<const RegisterMap> m_map;
     QList<const RegisterEntry *> m_rows;

@@ -1,5 +1,6 @@
 // The data logger checks every write: a full disk stops it with the reason instead of
 // rows that never reach the disk; it keeps only the newest files when asked to.
+#include "bus/bus.h"
 #include "logs/datalogger.h"
 #include "protocol/familyregistry.h"
 #include "smalldisk.h"
