@@ -3,6 +3,7 @@
 // values and alarm bits, lost replies, the adapter pulled, the device removed. The
 // tester checks every signal and index the models give; the test checks what they show.
 #include "bus/entrystate.h"
+#include "bus/mirroredline.h"
 #include "fakeline.h"
 #include "models/alarmbitsmodel.h"
 #include "models/livevaluesmodel.h"
@@ -22,6 +23,7 @@ private slots:
     void deviceModelsThroughALineLife_data();
     void deviceModelsThroughALineLife();
     void registerMapModelOfEveryFamily();
+    void modelsOverAMirroredLine();
 };
 
 namespace {
@@ -143,4 +145,78 @@ void tst_Models::registerMapModelOfEveryFamily()
 }
 
 QTEST_GUILESS_MAIN(tst_Models)
+// A remote viewer's line: the same models over values handed in as a station published
+// them, with their validity as published, and no Bus anywhere.
+void tst_Models::modelsOverAMirroredLine()
+{
+    const auto map = FamilyRegistry::load({}, true).family(QStringLiteral("tya200"));
+    QVERIFY(map);
+    MirroredLine line(QStringLiteral("cabinet-a"));
+    const DeviceId id = line.addDevice(map, 3);
+    QCOMPARE(line.addDevice(map, 3), id);   // reported again: the same device
+    Bus bus;
+    const DeviceId polled = bus.addDevice(map, 3);
+    QVERIFY(polled != id);                  // ids stay unique next to a Bus's
+    QCOMPARE(line.deviceName(id), QStringLiteral("tya200@3"));
+
+    LiveValuesModel values(&line, id);
+    AlarmBitsModel alarms(&line, id);
+    QAbstractItemModelTester valuesTester(&values, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QAbstractItemModelTester alarmsTester(&alarms, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QVERIFY(values.rowCount() > 0);
+    QCOMPARE(rowsWithValidity(values, LiveValuesModel::ValidityRole, Validity::Current), 0);
+    QVERIFY(!alarms.alarmsKnown());
+
+    auto published = [&](const QString &entryId, const QList<quint16> &words, Validity validity) {
+        const RegisterEntry *entry = map->entry(entryId);
+        EntryState s;
+        s.words = words;
+        s.value = ValueCodec::decode(*entry, *map, words);
+        s.validity = validity;
+        s.error = validity == Validity::Unknown ? ReadError::LineLost : ReadError::None;
+        s.goodMs = s.updatedMs = line.clockMs();
+        return s;
+    };
+    QSignalSpy updated(&line, &DeviceSource::entriesUpdated);
+    line.setEntries(id, {{QStringLiteral("voltage_input"), published(QStringLiteral("voltage_input"),
+                                                                      ValueCodec::encodeFloat(7.5f, map->protocol.floatWordOrder),
+                                                                      Validity::Current)},
+                         {QStringLiteral("malfunction_signals_1"),
+                          published(QStringLiteral("malfunction_signals_1"), {0x0002}, Validity::Current)},
+                         {QStringLiteral("no_such_entry"), EntryState{}}});
+    QCOMPARE(updated.count(), 1);   // one signal for the set, unknown ids left out
+    QCOMPARE(updated.first().at(1).toStringList().size(), 2);
+    const int row = values.rowOf(QStringLiteral("voltage_input"));
+    QVERIFY(row >= 0);
+    QCOMPARE(values.data(values.index(row, 0), LiveValuesModel::ValidityRole).toInt(), int(Validity::Current));
+    QCOMPARE(values.data(values.index(row, 0), LiveValuesModel::NumericRole).toDouble(), 7.5);
+    QCOMPARE(alarms.data(alarms.index(alarms.rowOf(QStringLiteral("malfunction_signals_1.max_alarm")), 0),
+                         AlarmBitsModel::BitStateRole)
+                     .toInt(),
+             int(AlarmBitsModel::BitState::On));
+
+    // The station falls silent: the same values, now stale; a number is no longer current.
+    line.setEntries(id, {{QStringLiteral("voltage_input"), published(QStringLiteral("voltage_input"),
+                                                                      ValueCodec::encodeFloat(7.5f, map->protocol.floatWordOrder),
+                                                                      Validity::Stale)}});
+    QCOMPARE(values.data(values.index(row, 0), LiveValuesModel::ValidityRole).toInt(), int(Validity::Stale));
+    QVERIFY(!values.data(values.index(row, 0), LiveValuesModel::NumericRole).isValid());
+
+    QSignalSpy conditions(&line, &DeviceSource::conditionChanged);
+    QSignalSpy states(&line, &DeviceSource::stateChanged);
+    DeviceCondition online;
+    online.state = DeviceCondition::State::Online;
+    line.setCondition(id, online);
+    line.setCondition(id, online);   // the same again: no signal
+    QCOMPARE(conditions.count(), 1);
+    QVERIFY(line.condition(id).isOnline());
+    line.setState(LineState::Lost, QStringLiteral("the station stopped publishing"));
+    QCOMPARE(states.count(), 1);
+    QCOMPARE(line.stateReason(), QStringLiteral("the station stopped publishing"));
+
+    line.removeDevice(id);
+    QVERIFY(!line.entryState(id, QStringLiteral("voltage_input")));
+    QVERIFY(line.devices().isEmpty());
+}
+
 #include "tst_models.moc"
