@@ -500,37 +500,46 @@ QString StationConfig::qualifiedName(const QString &lineName, const DeviceSpec &
     return QStringLiteral("%1/%2").arg(lineName, device.name());
 }
 
-std::optional<StationDevice> StationConfig::resolveDevice(const QString &text, const FamilyRegistry &registry,
-                                                          QString *error) const
+qsizetype StationConfig::lineOfDevice(const QString &text, QString *device, QString *error) const
 {
-    auto fail = [error](const QString &message) {
-        if (error)
-            *error = message;
-        return std::nullopt;
-    };
     QStringList names;
     for (const LineConfig &line : lines)
         names << line.name;
-    StationDevice found;
     const qsizetype slash = text.indexOf(QLatin1Char('/'));
+    if (device)
+        *device = text.mid(slash + 1);
+    QString problem;
+    qsizetype found = -1;
     if (slash >= 0) {
         const QString lineName = text.left(slash);
-        found.line = lineIndex(lineName);
-        if (found.line < 0)
-            return fail(tr("'%1': there is no line '%2' (lines: %3)")
-                                .arg(text, lineName.left(40), names.join(QStringLiteral(", "))));
+        found = lineIndex(lineName);
+        if (found < 0)
+            problem = tr("'%1': there is no line '%2' (lines: %3)")
+                              .arg(text, lineName.left(40), names.join(QStringLiteral(", ")));
     } else if (lines.size() == 1) {
-        found.line = 0;
+        found = 0;
     } else if (lines.isEmpty()) {
-        return fail(tr("'%1': no line is given").arg(text));
+        problem = tr("'%1': no line is given").arg(text);
     } else {
-        return fail(tr("'%1': which line? The station has the lines %2: name it as LINE/%1, e.g. %3/%1")
-                            .arg(text, names.join(QStringLiteral(", ")), names.constFirst()));
+        problem = tr("'%1': which line? The station has the lines %2: name it as LINE/%1, e.g. %3/%1")
+                          .arg(text, names.join(QStringLiteral(", ")), names.constFirst());
     }
-    QString problem;
-    const std::optional<DeviceSpec> device = DeviceSpec::parse(text.mid(slash + 1), registry, &problem);
+    if (found < 0 && error)
+        *error = problem;
+    return found;
+}
+
+std::optional<StationDevice> StationConfig::resolveDevice(const QString &text, const FamilyRegistry &registry,
+                                                          QString *error) const
+{
+    StationDevice found;
+    QString rest;
+    found.line = lineOfDevice(text, &rest, error);
+    if (found.line < 0)
+        return std::nullopt;
+    const std::optional<DeviceSpec> device = DeviceSpec::parse(rest, registry, error);
     if (!device)
-        return fail(problem);
+        return std::nullopt;
     found.device = *device;
     return found;
 }

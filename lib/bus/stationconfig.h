@@ -87,6 +87,9 @@ public:
     // ambiguous line, an unknown family, a bad address.
     std::optional<StationDevice> resolveDevice(const QString &text, const FamilyRegistry &registry,
                                                QString *error) const;
+    // The line a device text names: "LINE/REST", or "REST" on a station of one line; the
+    // rest goes to device (unchecked). -1 with the reason for an unknown or ambiguous line.
+    qsizetype lineOfDevice(const QString &text, QString *device, QString *error) const;
     // Every listed device, line by line.
     QList<StationDevice> devices() const;
 };
