@@ -213,6 +213,21 @@ void tst_JumoctlStation::stationFileWithTwoLines()
     const Run read = run({"read", "--station", file, "b/ipc300@1", "input_setpoint"});
     QCOMPARE(read.code, 0);
     QVERIFY2(read.out.contains("input_setpoint = 22 "), qPrintable(read.out + read.err));
+
+    // A relative port path in a station file is meant from the file's folder, wherever
+    // jumoctl is started.
+    const QString relative = QDir(m_dir.path()).relativeFilePath(m_lineA.masterEnd());
+    QVERIFY(relative.startsWith("../"));
+    const QString moved = writeFile("relative.json", QStringLiteral(R"({"format": "jumo-station", "version": 1,
+        "lines": [{"name": "a", "port": "%1", "baud": 19200}]})")
+                                                             .arg(relative)
+                                                             .toUtf8());
+    const QString cwd = QDir::currentPath();
+    QVERIFY(QDir::setCurrent(QDir::rootPath()));
+    const Run relativeRead = run({"read", "--station", moved, "ipc300@1", "input_setpoint"});
+    QVERIFY(QDir::setCurrent(cwd));
+    QCOMPARE(relativeRead.code, 0);
+    QVERIFY2(relativeRead.out.contains("input_setpoint = 11 "), qPrintable(relativeRead.out + relativeRead.err));
 }
 
 void tst_JumoctlStation::readOnlyLineOfAStationFile()
