@@ -339,10 +339,11 @@ Stations of several lines:
                            check a station file, list its lines and devices
 
 Commands on lines (all take --port PATH --baud N --format 8N1|8E1|8O1|8N2
---timeout MS --read-only --verbose for one line, or --line SPEC once per line, or
---station FILE); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1, or LINE/FAMILY@ADDRESS
-where there are several lines; its identity registers must confirm FAMILY (exit
-code 4 if not; --no-identify skips it). A command of one device opens only its line:
+--timeout MS --read-only --verbose for one line, or --line SPEC once per
+line, or --station FILE); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1, or
+LINE/FAMILY@ADDRESS where there are several lines; its identity registers must
+confirm FAMILY (exit code 4 if not; --no-identify skips it). A command of one
+device opens only its line:
   scan [--from A --to B]   find devices and name their family, on every line
   read DEVICE ID...        read entries once
   write DEVICE ID=VALUE... write entries, verified by reading them back; a bit field&apos;s
@@ -377,10 +378,11 @@ Stationen mit mehreren Leitungen:
                            Stationsdatei prüfen, ihre Leitungen und Geräte auflisten
 
 Befehle an Leitungen (alle mit --port PATH --baud N --format 8N1|8E1|8O1|8N2
---timeout MS --read-only --verbose für eine Leitung, oder --line SPEC je Leitung, oder
---station FILE); DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1, oder LINE/FAMILY@ADDRESS,
-wo es mehrere Leitungen gibt; seine Identitätsregister müssen FAMILY bestätigen (sonst
-Exit-Code 4; --no-identify überspringt das). Ein Befehl für ein Gerät öffnet nur dessen Leitung:
+--timeout MS --read-only --verbose für eine Leitung, oder --line SPEC je Leitung,
+oder --station FILE); DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1, oder
+LINE/FAMILY@ADDRESS, wo es mehrere Leitungen gibt; seine Identitätsregister müssen
+FAMILY bestätigen (sonst Exit-Code 4; --no-identify überspringt das). Ein Befehl
+für ein Gerät öffnet nur dessen Leitung:
   scan [--from A --to B]   Geräte suchen und ihre Familie nennen, an jeder Leitung
   read DEVICE ID...        Einträge einmal lesen
   write DEVICE ID=VALUE... Einträge schreiben, durch Rücklesen geprüft; bei einem Bitfeld
@@ -399,7 +401,7 @@ Exit-Code 4; --no-identify überspringt das). Ein Befehl für ein Gerät öffnet
 </translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+62"/>
         <source>jumoctl: the output could not be written: %1</source>
         <translation>jumoctl: die Ausgabe konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -1616,12 +1618,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Pfad</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>A line, given once per line: ADDRESS[,name=NAME][,baud=N][,format=8N1][,timeout=MS][,min-response=MS][,retries=N][,read-only]; unnamed lines are line1, line2, ... The options below are the defaults of every --line.</source>
-        <translation>Eine Leitung, je Leitung einmal angegeben: ADDRESS[,name=NAME][,baud=N][,format=8N1][,timeout=MS][,min-response=MS][,retries=N][,read-only]; Leitungen ohne Namen heißen line1, line2, ... Die folgenden Optionen sind die Vorgaben jeder --line.</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>spec</source>
         <translation>Angabe</translation>
     </message>
@@ -2002,7 +1999,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
     </message>
     <message>
-        <location line="+320"/>
+        <location line="-22"/>
+        <source>A line, given once per line: its ADDRESS, then as needed ,name=NAME ,baud=N ,format=8N1 ,timeout=MS ,min-response=MS ,retries=N ,read-only, e.g. /dev/ttyUSB0,name=a,baud=19200. Unnamed lines are line1, line2, ... The options below are the defaults of every --line.</source>
+        <translation>Eine Leitung, je Leitung einmal angegeben: ihre ADDRESS, dann nach Bedarf ,name=NAME ,baud=N ,format=8N1 ,timeout=MS ,min-response=MS ,retries=N ,read-only, z. B. /dev/ttyUSB0,name=a,baud=19200. Leitungen ohne Namen heißen line1, line2, ... Die folgenden Optionen sind die Vorgaben jeder --line.</translation>
+    </message>
+    <message>
+        <location line="+342"/>
         <source>Finds devices on the line and names their family; with several lines (--line, --station), on every line at once.</source>
         <translation>Sucht Geräte an der Leitung und benennt ihre Gerätefamilie; bei mehreren Leitungen (--line, --station) an allen Leitungen gleichzeitig.</translation>
     </message>

@@ -136,9 +136,10 @@ void LineCommands::addLineOptions(CommandParser &parser, bool namesDevices)
                          "/dev/ttyUSB0, say."),
                       tr("path")});
     parser.addOption({QStringLiteral("line"),
-                      tr("A line, given once per line: ADDRESS[,name=NAME][,baud=N][,format=8N1][,timeout=MS]"
-                         "[,min-response=MS][,retries=N][,read-only]; unnamed lines are line1, line2, ... The options "
-                         "below are the defaults of every --line."),
+                      tr("A line, given once per line: its ADDRESS, then as needed ,name=NAME ,baud=N "
+                         ",format=8N1 ,timeout=MS ,min-response=MS ,retries=N ,read-only, e.g. "
+                         "/dev/ttyUSB0,name=a,baud=19200. Unnamed lines are line1, line2, ... The options below are "
+                         "the defaults of every --line."),
                       tr("spec")});
     parser.addOption({QStringLiteral("station"),
                       tr("Station file (JSON) with the lines, their settings and devices."), tr("file")});
