@@ -1,6 +1,6 @@
 // jumoctl with several lines: two simulator lines on two pty pairs, given by --line or a
 // station file, read, scanned and monitored in one run; a line that is lost while the
-// other goes on; and the errors for a bad station file and a device of no clear line.
+// other goes on, and comes back; and the errors for a bad station file and a device of no clear line.
 #include "clirun.h"
 #include "testpeers.h"
 
@@ -368,17 +368,23 @@ void tst_JumoctlStation::lostLineShowsLineLostWhileTheOtherGoesOn()
         QCOMPARE(records[i]["values"].toObject()["input_setpoint"].toDouble(), 11.0);
     QVERIFY(monitor.state() == QProcess::Running);
 
+    // The adapter of line b is back: the bus reopens it by itself and its records resume.
+    m_simB.stop();
+    QVERIFY(m_lineB.restart());
+    QVERIFY(m_simB.reopen());
+    const qsizetype back = records.size();
+    QTRY_VERIFY_WITH_TIMEOUT(readRecords() && count("b/ipc300@1", "online", back) >= 2, 30000);
+    for (qsizetype i = back; i < records.size(); ++i) {
+        if (records[i]["device"].toString() == "b/ipc300@1" && records[i]["condition"].toString() == "online")
+            QCOMPARE(records[i]["values"].toObject()["input_setpoint"].toDouble(), 22.0);
+    }
+
     ::kill(pid_t(monitor.processId()), SIGTERM);
     QTRY_VERIFY_WITH_TIMEOUT(monitor.state() == QProcess::NotRunning, 30000);
     QCOMPARE(monitor.exitCode(), 143);
     const QString err = QString::fromUtf8(monitor.readAllStandardError());
     QVERIFY2(err.contains("line b: line lost: "), qPrintable(err));
     QVERIFY2(err.contains("terminated: "), qPrintable(err));
-
-    // Line b back for whatever runs after.
-    m_simB.stop();
-    QVERIFY(m_lineB.restart());
-    QVERIFY(m_simB.reopen());
 }
 
 QTEST_GUILESS_MAIN(tst_JumoctlStation)
