@@ -11,6 +11,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <atomic>
 #include <mutex>
 
 Q_DECLARE_LOGGING_CATEGORY(lcMqtt)
@@ -37,6 +38,8 @@ QString errorText(int rc)
 
 MqttClient::MqttClient(QObject *parent) : QObject(parent)
 {
+    static std::atomic<int> instances{0};
+    m_instance = ++instances;
     initLibrary();
     // The library sends keepalive pings and notices a silent broker only when called.
     m_misc.setInterval(500);
@@ -53,6 +56,22 @@ MqttClient::~MqttClient()
         m_writeNotifier->setEnabled(false);
     if (m_mosq)
         mosquitto_destroy(m_mosq);
+}
+
+QString MqttClient::clientId() const
+{
+    if (!m_settings.clientId.isEmpty())
+        return m_settings.clientId;
+    QString id = QStringLiteral("%1-%2-%3-%4")
+                         .arg(QCoreApplication::applicationName(), QHostInfo::localHostName())
+                         .arg(QCoreApplication::applicationPid())
+                         .arg(m_instance);
+    // One topic level (viewers publish their presence under it).
+    for (QChar &c : id) {
+        if (c == QLatin1Char('/') || c == QLatin1Char('+') || c == QLatin1Char('#') || c.isSpace())
+            c = QLatin1Char('_');
+    }
+    return id.right(64);
 }
 
 void MqttClient::setWill(const QString &topic, const QByteArray &payload)
@@ -77,12 +96,7 @@ bool MqttClient::connectToBroker()
         mosquitto_destroy(m_mosq);
         m_mosq = nullptr;
     }
-    QString id = m_settings.clientId;
-    if (id.isEmpty())
-        id = QStringLiteral("%1-%2-%3")
-                     .arg(QCoreApplication::applicationName(), QHostInfo::localHostName())
-                     .arg(QCoreApplication::applicationPid());
-    m_mosq = mosquitto_new(id.left(64).toUtf8().constData(), true, this);
+    m_mosq = mosquitto_new(clientId().toUtf8().constData(), true, this);
     if (!m_mosq) {
         m_lastError = tr("cannot make an MQTT client: %1").arg(QString::fromLocal8Bit(std::strerror(errno)));
         return false;
@@ -91,6 +105,7 @@ bool MqttClient::connectToBroker()
     mosquitto_connect_callback_set(m_mosq, &MqttClient::onConnect);
     mosquitto_disconnect_callback_set(m_mosq, &MqttClient::onDisconnect);
     mosquitto_message_callback_set(m_mosq, &MqttClient::onMessage);
+    mosquitto_publish_callback_set(m_mosq, &MqttClient::onPublish);
     // Reconnects are ours (attempt()), with our delays; the library's own loop is not used.
     if (!m_settings.username.isEmpty()) {
         const int rc = mosquitto_username_pw_set(m_mosq, m_settings.username.toUtf8().constData(),
@@ -143,6 +158,11 @@ bool MqttClient::connectToBroker()
 
 void MqttClient::disconnectFromBroker()
 {
+    if (m_inLibrary) {
+        // Called from one of the library's callbacks: done once it has returned.
+        QMetaObject::invokeMethod(this, &MqttClient::disconnectFromBroker, Qt::QueuedConnection);
+        return;
+    }
     m_wanted = false;
     m_reconnect.stop();
     if (!m_mosq)
@@ -158,11 +178,11 @@ void MqttClient::disconnectFromBroker()
     syncNotifiers();
 }
 
-bool MqttClient::publish(const QString &topic, const QByteArray &payload, bool retain, int qos)
+bool MqttClient::publish(const QString &topic, const QByteArray &payload, bool retain, int qos, int *messageId)
 {
     if (m_state != State::Connected)
         return false;
-    const int rc = mosquitto_publish(m_mosq, nullptr, topic.toUtf8().constData(), int(payload.size()),
+    const int rc = mosquitto_publish(m_mosq, messageId, topic.toUtf8().constData(), int(payload.size()),
                                      payload.isEmpty() ? nullptr : payload.constData(), qos, retain);
     syncNotifiers();
     if (rc != MOSQ_ERR_SUCCESS) {
@@ -206,7 +226,11 @@ void MqttClient::service()
         return;
     // A poll with no timeout: reads, writes, completes the TLS handshake and sends the
     // keepalive as far as the socket allows, and returns at once.
+    if (m_inLibrary)
+        return;
+    m_inLibrary = true;
     const int rc = mosquitto_loop(m_mosq, 0, 1);
+    m_inLibrary = false;
     syncNotifiers();
     // A closed socket the callbacks did not report (an error before the connect).
     if (m_socket < 0 && m_state != State::Disconnected && rc != MOSQ_ERR_SUCCESS)
@@ -303,6 +327,11 @@ void MqttClient::onMessage(mosquitto *, void *self, const mosquitto_message *mes
     emit static_cast<MqttClient *>(self)->messageReceived(
             QString::fromUtf8(message->topic),
             QByteArray(static_cast<const char *>(message->payload), message->payloadlen), message->retain);
+}
+
+void MqttClient::onPublish(mosquitto *, void *self, int messageId)
+{
+    emit static_cast<MqttClient *>(self)->delivered(messageId);
 }
 
 } // namespace jumo

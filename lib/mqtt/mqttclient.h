@@ -44,9 +44,14 @@ public:
 
     // Retained or not, QoS 1 unless told. Returns false (and drops the message) while not
     // connected: the callers publish their whole state again on connected().
-    bool publish(const QString &topic, const QByteArray &payload, bool retain, int qos = 1);
+    // messageId, when given, is what delivered() names once the broker has the message.
+    bool publish(const QString &topic, const QByteArray &payload, bool retain, int qos = 1, int *messageId = nullptr);
     // Kept and subscribed again on every connect.
     void subscribe(const QString &filter, int qos = 1);
+
+    // The settings' client id, or one made from the program's name, the host, the process
+    // and a count (unique within the process: a broker drops a client whose id comes again).
+    QString clientId() const;
 
     State state() const { return m_state; }
     bool isConnected() const { return m_state == State::Connected; }
@@ -65,11 +70,14 @@ signals:
     // The broker refused the connection (credentials, authorisation): said once per reason.
     void refused(const QString &reason);
     void messageReceived(const QString &topic, const QByteArray &payload, bool retained);
+    // The broker acknowledged a message of QoS 1 (or a QoS 0 message was sent).
+    void delivered(int messageId);
 
 private:
     static void onConnect(mosquitto *, void *self, int rc);
     static void onDisconnect(mosquitto *, void *self, int rc);
     static void onMessage(mosquitto *, void *self, const mosquitto_message *message);
+    static void onPublish(mosquitto *, void *self, int messageId);
 
     void handleConnect(int rc);
     void handleDisconnect(int rc);
@@ -90,6 +98,7 @@ private:
     QString m_refusal;        // the broker's reason for the current attempt's failure
     QString m_saidRefusal;    // the last refusal signalled, so a retry does not repeat it
     bool m_wanted = false;    // connectToBroker() until disconnectFromBroker()
+    bool m_inLibrary = false; // inside mosquitto_loop(): its callbacks must not call it again
     int m_socket = -1;
     std::unique_ptr<QSocketNotifier> m_readNotifier;
     std::unique_ptr<QSocketNotifier> m_writeNotifier;
@@ -99,6 +108,7 @@ private:
     int m_longestDelayMs = 10000;
     int m_delayMs = 250;
     quint64 m_published = 0;
+    int m_instance = 0;
 };
 
 } // namespace jumo

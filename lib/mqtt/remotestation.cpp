@@ -60,11 +60,7 @@ void RemoteStation::stop()
 
 QString RemoteStation::clientId() const
 {
-    QString id = m_client.settings().clientId;
-    if (id.isEmpty())
-        id = QStringLiteral("viewer-%1-%2").arg(QHostInfo::localHostName()).arg(QCoreApplication::applicationPid());
-    id.replace(QLatin1Char('/'), QLatin1Char('_')).replace(QLatin1Char('+'), QLatin1Char('_')).replace(QLatin1Char('#'), QLatin1Char('_'));
-    return id;
+    return m_client.clientId();
 }
 
 void RemoteStation::onConnected()

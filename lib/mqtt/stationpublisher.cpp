@@ -24,8 +24,11 @@ StationPublisher::StationPublisher(const MqttSettings &broker, const QString &pr
     connect(&m_client, &MqttClient::connected, this, &StationPublisher::onConnected);
     connect(&m_client, &MqttClient::disconnected, this, [this](const QString &reason) {
         if (m_stopping) {
-            m_stopDeadline.stop();
-            emit stopped();
+            if (!m_stopSignalled) {
+                m_stopDeadline.stop();
+                m_stopSignalled = true;
+                emit stopped();
+            }
         } else {
             qCWarning(lcMqtt).noquote() << "broker" << m_client.settings().url() << "lost or not reached:" << reason;
         }
@@ -36,6 +39,7 @@ StationPublisher::StationPublisher(const MqttSettings &broker, const QString &pr
     m_stopDeadline.setSingleShot(true);
     connect(&m_stopDeadline, &QTimer::timeout, this, [this] {
         qCWarning(lcMqtt).noquote() << "the broker did not take the stop in time";
+        m_stopSignalled = true;
         m_client.disconnectFromBroker();
         emit stopped();
     });
@@ -168,13 +172,25 @@ void StationPublisher::stop()
     m_heartbeat.stop();
     m_stopping = true;
     if (!m_client.isConnected()) {
+        m_stopSignalled = true;
         m_client.disconnectFromBroker();
         emit stopped();
         return;
     }
-    publish(m_scheme.status(m_station), TopicScheme::statusOffline(QStringLiteral("stopped")));
+    // Disconnected once the broker has the "stopped": closing a socket with its
+    // acknowledgement still unread makes the kernel reset the connection, and the broker
+    // loses the DISCONNECT with it and sends the will after all.
+    int messageId = -1;
+    if (!m_client.publish(m_scheme.status(m_station), TopicScheme::statusOffline(QStringLiteral("stopped")), true, 1,
+                          &messageId)) {
+        m_client.disconnectFromBroker();
+        return;
+    }
     m_stopDeadline.start(3000);
-    m_client.disconnectFromBroker();
+    connect(&m_client, &MqttClient::delivered, this, [this, messageId](int id) {
+        if (id == messageId)
+            m_client.disconnectFromBroker();
+    });
 }
 
 void StationPublisher::onConnected()

@@ -95,6 +95,7 @@ private:
     QTimer m_heartbeat;
     QTimer m_stopDeadline;
     bool m_stopping = false;
+    bool m_stopSignalled = false;
     int m_messages = 0;            // counting the messages of one full publication
 };
 
