@@ -156,6 +156,7 @@ bool StationPublisher::start(QString *error)
 {
     m_started = QDateTime::currentDateTimeUtc();
     m_stopping = false;
+    m_stopSignalled = false;
     m_client.setWill(m_scheme.status(m_station), TopicScheme::statusOffline(QStringLiteral("connection lost")));
     if (!m_client.connectToBroker()) {
         if (error)
