@@ -211,7 +211,7 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::Bus</name>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+87"/>
+        <location filename="../lib/bus/bus.cpp" line="+88"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
@@ -297,7 +297,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>nicht gehalten: %1 ist nicht als %2 bestätigt</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+277"/>
+        <location filename="../lib/bus/bus.cpp" line="+280"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
@@ -432,7 +432,7 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
 <context>
     <name>jumo::CommissioningReport</name>
     <message>
-        <location filename="../lib/commissioning/commissioningreport.cpp" line="+381"/>
+        <location filename="../lib/commissioning/commissioningreport.cpp" line="+375"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
@@ -1368,13 +1368,13 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+66"/>
         <source>the file is replaced again and again</source>
         <translation>die Datei wird immer wieder ersetzt</translation>
     </message>
     <message>
-        <location line="-72"/>
-        <location line="+72"/>
+        <location line="-76"/>
+        <location line="+76"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -3422,19 +3422,19 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ParameterEditModel</name>
     <message>
-        <location filename="../lib/models/parametereditmodel.cpp" line="+199"/>
-        <location line="+249"/>
+        <location filename="../lib/models/parametereditmodel.cpp" line="+185"/>
+        <location line="+260"/>
         <source>On</source>
         <translation>Ein</translation>
     </message>
     <message>
-        <location line="-249"/>
-        <location line="+251"/>
+        <location line="-260"/>
+        <location line="+262"/>
         <source>Off</source>
         <translation>Aus</translation>
     </message>
     <message>
-        <location line="-232"/>
+        <location line="-243"/>
         <source>write-only</source>
         <translation>nur schreibbar</translation>
     </message>
@@ -3568,30 +3568,27 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Letztes Schreiben</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <location line="+41"/>
+        <location line="+10"/>
         <source>&apos;%1&apos; is no parameter listed here</source>
         <translation>„%1“ ist kein hier aufgeführter Parameter</translation>
     </message>
     <message>
-        <location line="-39"/>
-        <location line="+41"/>
+        <location line="+2"/>
         <source>read-only mode: nothing is changed or written</source>
         <translation>Nur-Lese-Modus: es wird nichts geändert oder geschrieben</translation>
     </message>
     <message>
-        <location line="-39"/>
-        <location line="+41"/>
+        <location line="+2"/>
         <source>a write is under way: changes wait until it has ended</source>
         <translation>es wird gerade geschrieben: Änderungen warten, bis das beendet ist</translation>
     </message>
     <message>
-        <location line="-30"/>
+        <location line="+24"/>
         <source>&apos;%1&apos; is no number that can be read one way only: write it without thousands separators</source>
         <translation>„%1“ ist keine eindeutig lesbare Zahl: bitte ohne Tausenderpunkte schreiben</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+36"/>
         <source>%1 is not a whole number: %2 takes whole numbers only</source>
         <translation>%1 ist keine ganze Zahl: %2 nimmt nur ganze Zahlen an</translation>
     </message>
@@ -4508,7 +4505,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RegisterMap</name>
     <message>
-        <location filename="../lib/protocol/registermap.cpp" line="+182"/>
+        <location filename="../lib/protocol/registermap.cpp" line="+196"/>
         <source>exception %1 (not documented for this family)</source>
         <translation>Exception-Code %1 (für diese Gerätefamilie nicht dokumentiert)</translation>
     </message>
@@ -4763,6 +4760,145 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+3"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::StationConfig</name>
+    <message>
+        <location filename="../lib/bus/stationconfig.cpp" line="+48"/>
+        <source>the line address (serial port or URL) is empty</source>
+        <translation>die Adresse der Leitung (serielle Schnittstelle oder URL) ist leer</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <location line="+115"/>
+        <source>&apos;name&apos; must be 1..%1 of the letters A-Z, a-z, digits, &apos;_&apos;, &apos;.&apos; and &apos;-&apos;, not &apos;%2&apos;</source>
+        <translation>&apos;name&apos; muss aus 1..%1 der Zeichen A-Z, a-z, Ziffern, &apos;_&apos;, &apos;.&apos; und &apos;-&apos; bestehen, nicht &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <location line="-108"/>
+        <source>&apos;%1&apos; must be 4800, 9600, 19200 or 38400, not %2</source>
+        <translation>&apos;%1&apos; muss 4800, 9600, 19200 oder 38400 sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;%1&apos; must be 8N1, 8E1, 8O1 or 8N2, not %2</source>
+        <translation>&apos;%1&apos; muss 8N1, 8E1, 8O1 oder 8N2 sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;%1&apos; must be 0 (derived from the baud rate and the families) or 10..60000 ms, not %2</source>
+        <translation>&apos;%1&apos; muss 0 (aus Baudrate und Gerätefamilien abgeleitet) oder 10..60000 ms sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>address %1 is used twice on the line (%2)</source>
+        <translation>Adresse %1 ist auf der Leitung doppelt vergeben (%2)</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>the line name &apos;%1&apos; is used by lines[%2] too</source>
+        <translation>der Leitungsname &apos;%1&apos; wird auch von lines[%2] verwendet</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>malformed JSON at byte %1: %2</source>
+        <translation>fehlerhaftes JSON bei Byte %1: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>malformed JSON at byte %1: a control character</source>
+        <translation>fehlerhaftes JSON bei Byte %1: ein Steuerzeichen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>malformed JSON at byte %1: &apos;%2&apos; given twice in one object</source>
+        <translation>fehlerhaftes JSON bei Byte %1: &apos;%2&apos; steht zweimal in einem Objekt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>not a station file (no &quot;format&quot;: &quot;jumo-station&quot;)</source>
+        <translation>keine Stationsdatei (kein &quot;format&quot;: &quot;jumo-station&quot;)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>station file version %1 is not supported (expected %2)</source>
+        <translation>Stationsdatei-Version %1 wird nicht unterstützt (erwartet: %2)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>&apos;lines&apos; must be an array of lines</source>
+        <translation>&apos;lines&apos; muss ein Array von Leitungen sein</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>a line must be an object, not %1</source>
+        <translation>eine Leitung muss ein Objekt sein, nicht %1</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>&apos;devices&apos; must be an array of &quot;FAMILY@ADDRESS&quot; texts, e.g. &quot;ipc300@1&quot;</source>
+        <translation>&apos;devices&apos; muss ein Array von Texten &quot;FAMILY@ADDRESS&quot; sein, z. B. &quot;ipc300@1&quot;</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>&apos;%1&apos; is not a device: use FAMILY@ADDRESS, e.g. ipc300@1</source>
+        <translation>&apos;%1&apos; ist kein Gerät: FAMILY@ADDRESS verwenden, z. B. ipc300@1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;%1&apos;: unknown family &apos;%2&apos; (families: %3)</source>
+        <translation>&apos;%1&apos;: unbekannte Gerätefamilie &apos;%2&apos; (Gerätefamilien: %3)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&apos;%1&apos;: the address must be 1..%2, not %3</source>
+        <translation>&apos;%1&apos;: die Adresse muss 1..%2 sein, nicht %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1&apos;: a %2 cannot have address %3, its addresses are %4..%5</source>
+        <translation>&apos;%1&apos;: ein %2 kann nicht die Adresse %3 haben, seine Adressen sind %4..%5</translation>
+    </message>
+    <message>
+        <location line="+116"/>
+        <source>&apos;%1&apos; must be a whole number %2..%3, not &apos;%4&apos;</source>
+        <translation>&apos;%1&apos; muss eine ganze Zahl %2..%3 sein, nicht &apos;%4&apos;</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&apos;%1&apos; is given twice</source>
+        <translation>&apos;%1&apos; ist zweimal angegeben</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&apos;read-only&apos; takes no value</source>
+        <translation>&apos;read-only&apos; nimmt keinen Wert</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>unknown option &apos;%1&apos; (ADDRESS[,name=NAME][,baud=N][,format=8N1][,timeout=MS][,min-response=MS][,retries=N][,read-only])</source>
+        <translation>unbekannte Option &apos;%1&apos; (ADDRESS[,name=NAME][,baud=N][,format=8N1][,timeout=MS][,min-response=MS][,retries=N][,read-only])</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>--line &apos;%1&apos;: %2</source>
+        <translation>--line &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <location line="+59"/>
+        <source>&apos;%1&apos;: there is no line &apos;%2&apos; (lines: %3)</source>
+        <translation>&apos;%1&apos;: es gibt keine Leitung &apos;%2&apos; (Leitungen: %3)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;%1&apos;: no line is given</source>
+        <translation>&apos;%1&apos;: keine Leitung angegeben</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1&apos;: which line? The station has the lines %2: name it as LINE/%1, e.g. %3/%1</source>
+        <translation>&apos;%1&apos;: welche Leitung? Die Station hat die Leitungen %2: als LINE/%1 angeben, z. B. %3/%1</translation>
     </message>
 </context>
 <context>
