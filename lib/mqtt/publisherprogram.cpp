@@ -6,9 +6,7 @@
 
 #include <QCommandLineParser>
 #include <QFileInfo>
-#include <QHostInfo>
 #include <QLoggingCategory>
-#include <QRegularExpression>
 
 Q_DECLARE_LOGGING_CATEGORY(lcMqtt)
 
@@ -32,7 +30,7 @@ std::optional<int> PublisherProgram::run(const QStringList &arguments)
     QCommandLineParser parser;
     parser.setApplicationDescription(
             tr("Publishes the devices of a station's lines to an MQTT broker: identity, values with their validity "
-               "and status, alarm bits, line state. Owns the lines, only reads them. DEVICE is FAMILY@ADDRESS."));
+               "and status, alarm bits, line state. Owns the lines and only reads them."));
     parser.addHelpOption();
     parser.addVersionOption();
     parser.addOption({QStringLiteral("broker"),
@@ -53,14 +51,24 @@ std::optional<int> PublisherProgram::run(const QStringList &arguments)
                       tr("file")});
     parser.addOption({QStringLiteral("tls-cert"), tr("TLS: a client certificate (with --tls-key)."), tr("file")});
     parser.addOption({QStringLiteral("tls-key"), tr("TLS: the client certificate's key."), tr("file")});
-    parser.addOption({QStringLiteral("port"), tr("Serial port of the line."), tr("path")});
-    parser.addOption({QStringLiteral("baud"), tr("Baud rate: 4800, 9600, 19200 or 38400 (default 9600)."), tr("rate"),
+    parser.addOption({QStringLiteral("station"),
+                      tr("Station file (JSON: its name, lines and devices; see README, 'Station files')."), tr("file")});
+    parser.addOption({QStringLiteral("line"),
+                      tr("A line: ADDRESS[,name=NAME][,baud=N][,format=8N1][,timeout=MS][,min-response=MS][,retries=N] "
+                         "(repeat for more lines)."),
+                      tr("spec")});
+    parser.addOption({QStringLiteral("port"), tr("Serial port of a station of one line (instead of --line)."),
+                      tr("path")});
+    parser.addOption({QStringLiteral("baud"),
+                      tr("Baud rate of --port and of --line specs without one: 4800, 9600, 19200 or 38400 (default 9600)."),
+                      tr("rate"),
                       QStringLiteral("9600")});
     parser.addOption({QStringLiteral("format"), tr("Data format: 8N1, 8E1, 8O1 or 8N2 (default 8N1)."), tr("format"),
                       QStringLiteral("8N1")});
     parser.addOption({QStringLiteral("retries"), tr("Retries after a lost reply (default 2)."), tr("n"),
                       QStringLiteral("2")});
-    parser.addOption({QStringLiteral("device"), tr("A device on the line, FAMILY@ADDRESS (repeat for more)."),
+    parser.addOption({QStringLiteral("device"),
+                      tr("A device, FAMILY@ADDRESS, or LINE/FAMILY@ADDRESS with several lines (repeat for more)."),
                       tr("device")});
     parser.addOption({QStringLiteral("heartbeat"), tr("Heartbeat interval in ms (default 1000)."), tr("ms"),
                       QStringLiteral("1000")});
@@ -121,13 +129,6 @@ std::optional<int> PublisherProgram::run(const QStringList &arguments)
     broker->certFile = parser.value(QStringLiteral("tls-cert"));
     broker->keyFile = parser.value(QStringLiteral("tls-key"));
 
-    const QString station = parser.isSet(QStringLiteral("name")) ? parser.value(QStringLiteral("name"))
-                                                                 : QHostInfo::localHostName();
-    if (!TopicScheme::isTopicLevel(station)) {
-        m_err << tr("'%1' cannot be a station name: it is one topic level, without '/', '+' and '#'").arg(station)
-              << Qt::endl;
-        return 2;
-    }
     const QString prefix = parser.value(QStringLiteral("prefix"));
     if (!TopicScheme::isValidPrefix(prefix)) {
         m_err << tr("'%1' cannot be a topic prefix").arg(prefix) << Qt::endl;
@@ -140,17 +141,15 @@ std::optional<int> PublisherProgram::run(const QStringList &arguments)
         return 2;
     }
 
-    // The line.
-    if (!parser.isSet(QStringLiteral("port"))) {
-        m_err << tr("--port is required") << Qt::endl;
+    // The lines: a station file, --line specs, or one --port.
+    const bool byStation = parser.isSet(QStringLiteral("station"));
+    const bool byLines = parser.isSet(QStringLiteral("line"));
+    const bool byPort = parser.isSet(QStringLiteral("port"));
+    if (int(byStation) + int(byLines) + int(byPort) != 1) {
+        m_err << tr("give the lines by one of --station FILE, --line SPEC (once per line) or --port PATH") << Qt::endl;
         return 2;
     }
-    LineSpec line;
-    line.name = QStringLiteral("line1");
-    line.settings.portName = parser.value(QStringLiteral("port"));
-    if (line.settings.portName.contains(QLatin1Char('/')) && !line.settings.portName.startsWith(QLatin1Char('/'))
-        && !line.settings.portName.contains(QLatin1String("://")))
-        line.settings.portName = QFileInfo(line.settings.portName).absoluteFilePath();
+    BusSettings defaults;
     const int baud = parser.value(QStringLiteral("baud")).toInt(&ok);
     const std::optional<LineFormat> format = LineFormat::parse(ok ? baud : 0, parser.value(QStringLiteral("format")));
     if (!format) {
@@ -159,24 +158,80 @@ std::optional<int> PublisherProgram::run(const QStringList &arguments)
               << Qt::endl;
         return 2;
     }
-    line.settings.format = *format;
-    line.settings.retries = parser.value(QStringLiteral("retries")).toInt(&ok);
-    if (!ok || line.settings.retries < 0 || line.settings.retries > 10) {
+    defaults.format = *format;
+    defaults.retries = parser.value(QStringLiteral("retries")).toInt(&ok);
+    if (!ok || defaults.retries < 0 || defaults.retries > 10) {
         m_err << tr("--retries must be 0..10") << Qt::endl;
-        return 2;
-    }
-    line.devices = parser.values(QStringLiteral("device"));
-    if (line.devices.isEmpty()) {
-        m_err << tr("name at least one device with --device, e.g. --device ipc300@1") << Qt::endl;
         return 2;
     }
 
     m_registry = std::make_unique<FamilyRegistry>(FamilyRegistry::loadDefault());
     for (const QString &e : m_registry->errors())
         m_err << tr("refused map file: %1").arg(e) << Qt::endl;
+    std::optional<StationConfig> config;
+    if (byStation) {
+        if (parser.isSet(QStringLiteral("device"))) {
+            m_err << tr("a station file lists its devices: --device goes with --line or --port") << Qt::endl;
+            return 2;
+        }
+        config = StationConfig::load(parser.value(QStringLiteral("station")), *m_registry, &error);
+    } else {
+        QList<LineConfig> lines;
+        if (byPort) {
+            LineConfig line;
+            line.settings = defaults;
+            line.settings.portName = parser.value(QStringLiteral("port"));
+            // A path is a path: Qt would put /dev/ in front of a relative one.
+            if (line.settings.portName.contains(QLatin1Char('/')) && !line.settings.portName.startsWith(QLatin1Char('/'))
+                && !line.settings.portName.contains(QLatin1String("://")))
+                line.settings.portName = QFileInfo(line.settings.portName).absoluteFilePath();
+            lines << line;
+        }
+        for (const QString &spec : parser.values(QStringLiteral("line"))) {
+            const std::optional<LineConfig> line = StationConfig::parseLineSpec(spec, defaults, &error);
+            if (!line) {
+                m_err << error << Qt::endl;
+                return 2;
+            }
+            lines << *line;
+        }
+        config = StationConfig::fromLines(lines, &error);
+        for (const QString &text : parser.values(QStringLiteral("device"))) {
+            if (!config)
+                break;
+            const std::optional<StationDevice> device = config->resolveDevice(text, *m_registry, &error);
+            if (!device) {
+                config.reset();
+                break;
+            }
+            QList<DeviceSpec> &devices = config->lines[device->line].devices;
+            if (devices.contains(device->device)) {
+                error = tr("%1 is named twice").arg(text);
+                config.reset();
+                break;
+            }
+            devices << device->device;
+        }
+    }
+    if (!config) {
+        m_err << error << Qt::endl;
+        return 2;
+    }
+    if (config->devices().isEmpty()) {
+        m_err << tr("name at least one device: --device FAMILY@ADDRESS (LINE/FAMILY@ADDRESS with several lines)")
+              << Qt::endl;
+        return 2;
+    }
+    const QString station = parser.isSet(QStringLiteral("name")) ? parser.value(QStringLiteral("name")) : config->name;
+    if (!TopicScheme::isTopicLevel(station)) {
+        m_err << tr("'%1' cannot be a station name: it is one topic level, without '/', '+' and '#'").arg(station)
+              << Qt::endl;
+        return 2;
+    }
+
     m_publisher = std::make_unique<StationPublisher>(*broker, prefix, station);
     m_publisher->setHeartbeatInterval(heartbeat);
-    if (const std::optional<int> code = openLines({line}))
+    if (const std::optional<int> code = openLines(config->lines))
         return code;
     connect(m_publisher.get(), &StationPublisher::stopped, this, [this] { emit finished(0); });
     if (!m_publisher->start(&error)) {
@@ -186,28 +241,20 @@ std::optional<int> PublisherProgram::run(const QStringList &arguments)
     return std::nullopt;
 }
 
-std::optional<int> PublisherProgram::openLines(const QList<LineSpec> &lines)
+std::optional<int> PublisherProgram::openLines(const QList<LineConfig> &lines)
 {
-    static const QRegularExpression devicePattern(
-            QRegularExpression::anchoredPattern(QStringLiteral("([a-z][a-z0-9_]*)@([0-9]{1,3})")));
-    for (const LineSpec &spec : lines) {
+    for (const LineConfig &spec : lines) {
         auto bus = std::make_unique<Bus>();
         BusSettings settings = spec.settings;
         // The publisher never writes: its buses refuse every write before the line.
         settings.readOnly = true;
         bus->setSettings(settings);
         bus->setIdentityCheck(m_registry->families());
-        for (const QString &device : spec.devices) {
-            const QRegularExpressionMatch match = devicePattern.match(device);
-            const auto map = match.hasMatch() ? m_registry->family(match.captured(1)) : nullptr;
-            const int address = match.captured(2).toInt();
-            if (!map || address < 1 || address > 247) {
-                m_err << tr("'%1' is not a device: use FAMILY@ADDRESS with an address 1..247 (families: %2)")
-                                 .arg(device, m_registry->familyIds().join(QStringLiteral(", ")))
-                      << Qt::endl;
-                return 2;
-            }
-            bus->addDevice(map, quint8(address));
+        for (const DeviceSpec &device : spec.devices) {
+            const auto map = m_registry->family(device.family);
+            if (!map)
+                return 2;   // StationConfig checked the family
+            bus->addDevice(map, device.address);
         }
         if (!bus->open()) {
             // A service keeps trying: the adapter may be plugged in later.

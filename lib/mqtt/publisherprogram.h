@@ -3,6 +3,7 @@
 // through a StationPublisher until stop() (SIGTERM, SIGINT).
 #pragma once
 
+#include "bus/stationconfig.h"
 #include "mqtt/stationpublisher.h"
 
 #include <QCoreApplication>
@@ -39,14 +40,7 @@ signals:
     void finished(int exitCode);
 
 private:
-    struct LineSpec
-    {
-        QString name;
-        BusSettings settings;
-        QStringList devices;   // "family@address"
-    };
-
-    std::optional<int> openLines(const QList<LineSpec> &lines);
+    std::optional<int> openLines(const QList<LineConfig> &lines);
     void retryClosedLines();
 
     QTextStream &m_out;

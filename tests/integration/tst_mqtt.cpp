@@ -51,6 +51,7 @@ private slots:
     void silentStationGoesStale();
     void terminatedPublisherSaysStopped();
     void brokerRestartLosesNothing();
+    void twoLinesFromAStationFile();
     void passwordIsChecked();
     void tls();
 
@@ -61,7 +62,7 @@ private:
     std::unique_ptr<RemoteStation> startMirror() { return startMirror(*MqttSettings::fromUrl(brokerUrl(), nullptr)); }
     QString brokerUrl() const { return QStringLiteral("mqtt://127.0.0.1:%1").arg(m_broker->port()); }
     // Every device online and every published entry current in the mirror.
-    static bool everythingCurrent(const RemoteStation &mirror);
+    static bool everythingCurrent(const RemoteStation &mirror, int devices = 2);
     QString publisherErrors();
 
     std::unique_ptr<MosquittoBroker> m_broker;
@@ -105,15 +106,17 @@ void TstMqtt::cleanup()
 
 bool TstMqtt::startPublisher(const QString &broker, const QStringList &extra, const QProcessEnvironment &environment)
 {
+    const QStringList lines = extra.contains(QLatin1String("--station"))
+            ? QStringList()
+            : QStringList{QStringLiteral("--port"), m_line->masterEnd(), QStringLiteral("--baud"), QStringLiteral("19200"),
+                          QStringLiteral("--device"), QStringLiteral("ipc300@1"), QStringLiteral("--device"),
+                          QStringLiteral("tya200@2")};
     m_publisher = std::make_unique<QProcess>();
     m_publisher->setProcessEnvironment(environment);
     connect(m_publisher.get(), &QProcess::readyReadStandardError, this,
             [this] { m_publisherErr += m_publisher->readAllStandardError(); });
     m_publisher->start(QStringLiteral(JUMO_PUBLISHER_PATH),
-                       QStringList{QStringLiteral("--broker"), broker, QStringLiteral("--name"), station,
-                                   QStringLiteral("--port"), m_line->masterEnd(), QStringLiteral("--baud"),
-                                   QStringLiteral("19200"), QStringLiteral("--device"), QStringLiteral("ipc300@1"),
-                                   QStringLiteral("--device"), QStringLiteral("tya200@2")}
+                       QStringList{QStringLiteral("--broker"), broker, QStringLiteral("--name"), station} + lines
                                + extra);
     return m_publisher->waitForStarted(10000);
 }
@@ -137,9 +140,9 @@ std::unique_ptr<RemoteStation> TstMqtt::startMirror(const MqttSettings &settings
     return mirror;
 }
 
-bool TstMqtt::everythingCurrent(const RemoteStation &mirror)
+bool TstMqtt::everythingCurrent(const RemoteStation &mirror, int devices)
 {
-    if (mirror.devices().size() != 2 || !mirror.isLive(station))
+    if (mirror.devices().size() != devices || !mirror.isLive(station))
         return false;
     for (DeviceId id : mirror.devices()) {
         const RemoteDevice *d = mirror.device(id);
@@ -368,6 +371,44 @@ void TstMqtt::brokerRestartLosesNothing()
     QCOMPARE(mirror->published(id, QStringLiteral("load_voltage"))->text, QStringLiteral("231.3 V"));
     QTRY_COMPARE_WITH_TIMEOUT(retainedMessages(m_broker->port(), QStringLiteral("jumo/#")).size(), retainedBefore, 10000);
     QVERIFY(publisherErrors().contains(QLatin1String("connected to")));
+}
+
+void TstMqtt::twoLinesFromAStationFile()
+{
+    // A second line with the same address as the first one has: devices are told apart
+    // by their line.
+    TestLine second;
+    QVERIFY(second.start());
+    SimulatorPeer secondPeer(QStringLiteral("quantrol"));
+    QVERIFY(secondPeer.start(second.deviceEnd(), {1}));
+    QFile file(m_broker->file(QStringLiteral("station.json")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(QStringLiteral(R"({"format": "jumo-station", "version": 1, "name": "ignored-by---name",
+        "lines": [{"name": "cabinet-a", "port": "%1", "baud": 19200, "devices": ["ipc300@1", "tya200@2"]},
+                  {"name": "cabinet-b", "port": "%2", "baud": 19200, "devices": ["quantrol@1"]}]})")
+                       .arg(m_line->masterEnd(), second.masterEnd())
+                       .toUtf8());
+    file.close();
+    QVERIFY(m_broker->start());
+    QVERIFY(startPublisher(brokerUrl(), {QStringLiteral("--station"), file.fileName()}));
+    auto mirror = startMirror();
+    QVERIFY(mirror);
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror, 3), 30000);
+    QCOMPARE(mirror->lines(station), (QStringList{"cabinet-a", "cabinet-b"}));
+    QCOMPARE(mirror->station(station)->status.lines, (QStringList{"cabinet-a", "cabinet-b"}));
+    QVERIFY(mirror->findDevice(station, "cabinet-a", "ipc300@1"));
+    const auto quantrol = mirror->findDevice(station, "cabinet-b", "quantrol@1");
+    QVERIFY(quantrol);
+    QCOMPARE(mirror->device(*quantrol)->model, families().family("quantrol")->name);
+
+    // One line dies, the other goes on.
+    second.stop();
+    QTRY_COMPARE_WITH_TIMEOUT(mirror->line(station, "cabinet-b")->state, LineState::Lost, 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(mirror->condition(*quantrol).state, DeviceCondition::State::LineLost, 10000);
+    QCOMPARE(mirror->line(station, "cabinet-a")->state, LineState::Connected);
+    const auto ipc = mirror->findDevice(station, "cabinet-a", "ipc300@1");
+    QVERIFY(mirror->condition(*ipc).isOnline());
+    QCOMPARE(mirror->entryState(*ipc, "load_voltage")->validity, Validity::Current);
 }
 
 void TstMqtt::passwordIsChecked()
