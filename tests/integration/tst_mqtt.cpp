@@ -4,7 +4,9 @@
 // killed, stopped, frozen, the broker is killed and started again: what viewers see must
 // follow each time.
 #include "mosquittobroker.h"
+#include "bus/bus.h"
 #include "mqtt/remotestation.h"
+#include "mqtt/stationpublisher.h"
 #include "protocol/valuecodec.h"
 #include "testpeers.h"
 
@@ -52,6 +54,7 @@ private slots:
     void terminatedPublisherSaysStopped();
     void brokerRestartLosesNothing();
     void twoLinesFromAStationFile();
+    void removedLineIsCleared();
     void passwordIsChecked();
     void tls();
 
@@ -409,6 +412,51 @@ void TstMqtt::twoLinesFromAStationFile()
     const auto ipc = mirror->findDevice(station, "cabinet-a", "ipc300@1");
     QVERIFY(mirror->condition(*ipc).isOnline());
     QCOMPARE(mirror->entryState(*ipc, "load_voltage")->validity, Validity::Current);
+}
+
+void TstMqtt::removedLineIsCleared()
+{
+    // The publisher in-process, on a bus of ours, and a mirror of every station.
+    QVERIFY(m_broker->start());
+    Bus bus;
+    BusSettings settings;
+    settings.portName = m_line->masterEnd();
+    settings.format = testFormat();
+    settings.readOnly = true;
+    bus.setSettings(settings);
+    bus.addDevice(families().family(QStringLiteral("ipc300")), 1);
+    QVERIFY(bus.open());
+    bus.setPolling(true);
+    StationPublisher publisher(*MqttSettings::fromUrl(brokerUrl(), nullptr), QStringLiteral("jumo"),
+                               QStringLiteral("inproc"));
+    publisher.addLine(QStringLiteral("a"), &bus);
+    QString error;
+    QVERIFY2(publisher.start(&error), qPrintable(error));
+    RemoteStation mirror(families());
+    QVERIFY(mirror.start(*MqttSettings::fromUrl(brokerUrl(), nullptr), &error));
+    QTRY_VERIFY_WITH_TIMEOUT(mirror.findDevice(QStringLiteral("inproc"), QStringLiteral("a"), QStringLiteral("ipc300@1"))
+                                     && mirror.isLive(QStringLiteral("inproc")),
+                             20000);
+    const DeviceId id = *mirror.findDevice(QStringLiteral("inproc"), QStringLiteral("a"), QStringLiteral("ipc300@1"));
+    QTRY_COMPARE_WITH_TIMEOUT(mirror.entryState(id, QStringLiteral("load_voltage"))
+                                      ? mirror.entryState(id, QStringLiteral("load_voltage"))->validity
+                                      : Validity::Unknown,
+                              Validity::Current, 20000);
+    QVERIFY(!retainedMessages(m_broker->port(), QStringLiteral("jumo/inproc/devices/#"), {}, 3).isEmpty());
+
+    QSignalSpy removed(&mirror, &RemoteStation::deviceRemoved);
+    publisher.removeLine(QStringLiteral("a"));
+    QTRY_COMPARE_WITH_TIMEOUT(removed.size(), 1, 10000);
+    QCOMPARE(removed.constFirst().constFirst().value<DeviceId>(), id);
+    QVERIFY(!mirror.findDevice(QStringLiteral("inproc"), QStringLiteral("a"), QStringLiteral("ipc300@1")));
+    QTRY_VERIFY_WITH_TIMEOUT(mirror.lines(QStringLiteral("inproc")).isEmpty(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(mirror.station(QStringLiteral("inproc"))->status.lines.isEmpty(), 10000);
+    // Nothing of the line is retained any more: a new viewer does not see a ghost.
+    const QHash<QString, QByteArray> retained = retainedMessages(m_broker->port(), QStringLiteral("jumo/#"));
+    for (auto it = retained.begin(); it != retained.end(); ++it)
+        QVERIFY2(!it.key().contains(QLatin1String("/devices/")) && !it.key().contains(QLatin1String("/lines/")),
+                 qPrintable(it.key()));
+    QVERIFY(retained.contains(QStringLiteral("jumo/inproc/status")));
 }
 
 void TstMqtt::passwordIsChecked()
