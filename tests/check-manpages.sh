@@ -6,6 +6,7 @@ jumoctl=$1
 hmi=$2
 sim=$3
 mandir=$4
+publisher=${5:-}
 fail=0
 
 text() {   # the page's source without groff's escapes and fonts
@@ -30,6 +31,10 @@ check_options jumo-hmi "$(QT_QPA_PLATFORM=offscreen "$hmi" --help)"
 check_version jumo-hmi "$hmi"
 check_options jumo-sim "$("$sim" --help)"
 check_version jumo-sim "$sim"
+if [ -n "$publisher" ]; then
+    check_options jumo-publisher "$("$publisher" --help)"
+    check_version jumo-publisher "$publisher"
+fi
 check_options jumoctl "$("$jumoctl" --help)"
 check_version jumoctl "$jumoctl"
 # Each command of jumoctl is the tag of a paragraph (.TP), with all its options described.

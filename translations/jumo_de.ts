@@ -3499,6 +3499,92 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
 </context>
 <context>
+    <name>jumo::MqttClient</name>
+    <message>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="+101"/>
+        <source>cannot make an MQTT client: %1</source>
+        <translation>MQTT-Client lässt sich nicht anlegen: %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>cannot use the user name: %1</source>
+        <translation>Der Benutzername ist nicht verwendbar: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>cannot read the TLS file %1</source>
+        <translation>Die TLS-Datei %1 ist nicht lesbar</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>a client certificate needs its key, and a key its certificate</source>
+        <translation>Ein Client-Zertifikat braucht seinen Schlüssel, ein Schlüssel sein Zertifikat</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>cannot set up TLS: %1</source>
+        <translation>TLS lässt sich nicht einrichten: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>cannot set the last will: %1</source>
+        <translation>Der letzte Wille (Last Will) lässt sich nicht setzen: %1</translation>
+    </message>
+    <message>
+        <location line="+141"/>
+        <source>the broker refused the connection: %1</source>
+        <translation>Der Broker hat die Verbindung abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>the broker closed the connection</source>
+        <translation>Der Broker hat die Verbindung geschlossen</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::MqttSettings</name>
+    <message>
+        <location filename="../lib/mqtt/mqttsettings.cpp" line="+17"/>
+        <source>&apos;%1&apos; is no broker address: %2 (use mqtt://[USER@]HOST[:PORT] or mqtts://...)</source>
+        <translation>&apos;%1&apos; ist keine Broker-Adresse: %2 (mqtt://[BENUTZER@]HOST[:PORT] oder mqtts://... angeben)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>unknown scheme &apos;%1&apos;</source>
+        <translation>unbekanntes Schema &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no host</source>
+        <translation>kein Host</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a password in the address can be read by every user of this computer; use a password file or JUMO_MQTT_PASSWORD</source>
+        <translation>ein Passwort in der Adresse kann jeder Benutzer dieses Rechners lesen; eine Passwortdatei oder JUMO_MQTT_PASSWORD verwenden</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>an address has no path</source>
+        <translation>eine Adresse hat keinen Pfad</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>an address has no query</source>
+        <translation>eine Adresse hat keine Abfrage</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>port out of range</source>
+        <translation>Port außerhalb des Bereichs</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>cannot read the password file %1: %2</source>
+        <translation>Die Passwortdatei %1 ist nicht lesbar: %2</translation>
+    </message>
+</context>
+<context>
     <name>jumo::ParameterEditModel</name>
     <message>
         <location filename="../lib/models/parametereditmodel.cpp" line="+185"/>
@@ -4555,6 +4641,228 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+36"/>
         <source>socat did not create the pseudo-terminals</source>
         <translation>socat hat die Pseudo-Terminals nicht angelegt</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::PublisherProgram</name>
+    <message>
+        <location filename="../lib/mqtt/publisherprogram.cpp" line="+32"/>
+        <source>Publishes the devices of a station&apos;s lines to an MQTT broker: identity, values with their validity and status, alarm bits, line state. Owns the lines and only reads them.</source>
+        <translation>Veröffentlicht die Geräte der Linien einer Station an einem MQTT-Broker: Identität, Werte mit Gültigkeit und Status, Alarmbits, Linienzustand. Ist Master der Linien und liest sie nur.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Broker (required): mqtt://[USER@]HOST[:PORT], or mqtts://... for TLS (port 8883).</source>
+        <translation>Broker (erforderlich): mqtt://[BENUTZER@]HOST[:PORT], oder mqtts://... für TLS (Port 8883).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>url</source>
+        <translation>URL</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The station&apos;s name in the topics (default: the host name).</source>
+        <translation>Name der Station in den Topics (Standard: der Hostname).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>station</source>
+        <translation>Station</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>First topic level(s) (default jumo).</source>
+        <translation>Erste Topic-Ebene(n) (Standard jumo).</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>prefix</source>
+        <translation>Präfix</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>User name at the broker (instead of the one in --broker).</source>
+        <translation>Benutzername am Broker (statt dem in --broker).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>user</source>
+        <translation>Benutzer</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>File whose first line is the broker password (else JUMO_MQTT_PASSWORD; never on the command line, where every user could read it).</source>
+        <translation>Datei, deren erste Zeile das Broker-Passwort ist (sonst JUMO_MQTT_PASSWORD; nie auf der Befehlszeile, wo jeder Benutzer es lesen könnte).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+3"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+2"/>
+        <source>file</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <location line="-6"/>
+        <source>TLS: the CA certificate that signed the broker&apos;s (default: the system&apos;s).</source>
+        <translation>TLS: das CA-Zertifikat, das das des Brokers signiert hat (Standard: die des Systems).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>TLS: a client certificate (with --tls-key).</source>
+        <translation>TLS: ein Client-Zertifikat (mit --tls-key).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>TLS: the client certificate&apos;s key.</source>
+        <translation>TLS: der Schlüssel des Client-Zertifikats.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Station file (JSON: its name, lines and devices; see README, &apos;Station files&apos;).</source>
+        <translation>Stationsdatei (JSON: Name, Linien und Geräte; siehe README, &apos;Station files&apos;).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A line: ADDRESS[,name=NAME][,baud=N][,format=8N1][,timeout=MS][,min-response=MS][,retries=N] (repeat for more lines).</source>
+        <translation>Eine Linie: ADRESSE[,name=NAME][,baud=N][,format=8N1][,timeout=MS][,min-response=MS][,retries=N] (für weitere Linien wiederholen).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>spec</source>
+        <translation>Angabe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial port of a station of one line (instead of --line).</source>
+        <translation>Serielle Schnittstelle einer Station mit einer Linie (statt --line).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>path</source>
+        <translation>Pfad</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Baud rate of --port and of --line specs without one: 4800, 9600, 19200 or 38400 (default 9600).</source>
+        <translation>Baudrate von --port und von --line-Angaben ohne eigene: 4800, 9600, 19200 oder 38400 (Standard 9600).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rate</source>
+        <translation>Rate</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Data format: 8N1, 8E1, 8O1 or 8N2 (default 8N1).</source>
+        <translation>Datenformat: 8N1, 8E1, 8O1 oder 8N2 (Standard 8N1).</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>format</source>
+        <translation>Format</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Retries after a lost reply (default 2).</source>
+        <translation>Wiederholungen nach einer ausgebliebenen Antwort (Standard 2).</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>n</source>
+        <translation>n</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A device, FAMILY@ADDRESS, or LINE/FAMILY@ADDRESS with several lines (repeat for more).</source>
+        <translation>Ein Gerät, FAMILIE@ADRESSE, oder LINIE/FAMILIE@ADRESSE bei mehreren Linien (für weitere wiederholen).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Heartbeat interval in ms (default 1000).</source>
+        <translation>Heartbeat-Intervall in ms (Standard 1000).</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>unexpected argument &apos;%1&apos;</source>
+        <translation>unerwartetes Argument &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--broker is required, e.g. --broker mqtt://localhost</source>
+        <translation>--broker ist erforderlich, z. B. --broker mqtt://localhost</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>a password needs a user name: mqtt://USER@HOST or --username</source>
+        <translation>ein Passwort braucht einen Benutzernamen: mqtt://BENUTZER@HOST oder --username</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>TLS files need an mqtts:// broker</source>
+        <translation>TLS-Dateien brauchen einen mqtts://-Broker</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&apos;%1&apos; cannot be a topic prefix</source>
+        <translation>&apos;%1&apos; kann kein Topic-Präfix sein</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--heartbeat must be 100..60000 ms</source>
+        <translation>--heartbeat muss 100..60000 ms sein</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>give the lines by one of --station FILE, --line SPEC (once per line) or --port PATH</source>
+        <translation>die Linien mit genau einem von --station DATEI, --line ANGABE (einmal je Linie) oder --port PFAD angeben</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>unsupported baud rate or data format: %1 %2</source>
+        <translation>Baudrate oder Datenformat nicht unterstützt: %1 %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>--retries must be 0..10</source>
+        <translation>--retries muss 0..10 sein</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>refused map file: %1</source>
+        <translation>Map-Datei abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>a station file lists its devices: --device goes with --line or --port</source>
+        <translation>eine Stationsdatei nennt ihre Geräte selbst: --device gehört zu --line oder --port</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>%1 is named twice</source>
+        <translation>%1 ist doppelt genannt</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>name at least one device: --device FAMILY@ADDRESS (LINE/FAMILY@ADDRESS with several lines)</source>
+        <translation>mindestens ein Gerät nennen: --device FAMILIE@ADRESSE (LINIE/FAMILIE@ADRESSE bei mehreren Linien)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&apos;%1&apos; cannot be a station name: it is one topic level, without &apos;/&apos;, &apos;+&apos; and &apos;#&apos;</source>
+        <translation>&apos;%1&apos; kann kein Stationsname sein: er ist eine Topic-Ebene, ohne &apos;/&apos;, &apos;+&apos; und &apos;#&apos;</translation>
     </message>
 </context>
 <context>

@@ -1,0 +1,55 @@
+// jumo-publisher's work, as a library so tests can run it in-process: reads the command
+// line, opens each line read-only with identity checks, and publishes the station
+// through a StationPublisher until stop() (SIGTERM, SIGINT).
+#pragma once
+
+#include "bus/stationconfig.h"
+#include "mqtt/stationpublisher.h"
+
+#include <QCoreApplication>
+#include <QObject>
+#include <QTextStream>
+#include <QTimer>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace jumo {
+
+class Bus;
+class FamilyRegistry;
+
+class PublisherProgram : public QObject
+{
+    Q_OBJECT
+
+public:
+    PublisherProgram(QTextStream &out, QTextStream &err, QObject *parent = nullptr);
+    ~PublisherProgram() override;
+
+    // Returns an exit code when the arguments end the program (errors, --help), or
+    // nullopt when it runs on the event loop; finished() follows then.
+    std::optional<int> run(const QStringList &arguments);
+    // A clean stop: "stopped" is published, then finished(0).
+    void stop();
+
+    StationPublisher *publisher() const { return m_publisher.get(); }
+
+signals:
+    void finished(int exitCode);
+
+private:
+    std::optional<int> openLines(const QList<LineConfig> &lines);
+    void retryClosedLines();
+
+    QTextStream &m_out;
+    QTextStream &m_err;
+    std::unique_ptr<FamilyRegistry> m_registry;
+    std::vector<std::unique_ptr<Bus>> m_buses;
+    std::unique_ptr<StationPublisher> m_publisher;
+    QTimer m_retry;   // lines whose port did not open at the start
+    bool m_stopping = false;
+};
+
+} // namespace jumo

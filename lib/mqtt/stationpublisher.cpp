@@ -1,0 +1,330 @@
+#include "mqtt/stationpublisher.h"
+
+#include "bus/bus.h"
+#include "jumoversion.h"
+#include "protocol/valueformat.h"
+
+#include <QCoreApplication>
+#include <QLocale>
+#include <QLoggingCategory>
+
+Q_DECLARE_LOGGING_CATEGORY(lcMqtt)
+
+namespace jumo {
+
+StationPublisher::StationPublisher(const MqttSettings &broker, const QString &prefix, const QString &station,
+                                   QObject *parent)
+    : QObject(parent), m_scheme(prefix), m_station(station)
+{
+    m_client.setSettings(broker);
+    m_heartbeat.setInterval(1000);
+    connect(&m_heartbeat, &QTimer::timeout, this, [this] {
+        publish(m_scheme.heartbeat(m_station), TopicScheme::heartbeatPayload(QDateTime::currentDateTimeUtc()), false);
+    });
+    connect(&m_client, &MqttClient::connected, this, &StationPublisher::onConnected);
+    connect(&m_client, &MqttClient::disconnected, this, [this](const QString &reason) {
+        if (m_stopping) {
+            if (!m_stopSignalled) {
+                m_stopDeadline.stop();
+                m_stopSignalled = true;
+                emit stopped();
+            }
+        } else {
+            qCWarning(lcMqtt).noquote() << "broker" << m_client.settings().url() << "lost or not reached:" << reason;
+        }
+    });
+    connect(&m_client, &MqttClient::refused, this, [](const QString &reason) {
+        qCWarning(lcMqtt).noquote() << reason;
+    });
+    m_stopDeadline.setSingleShot(true);
+    connect(&m_stopDeadline, &QTimer::timeout, this, [this] {
+        qCWarning(lcMqtt).noquote() << "the broker did not take the stop in time";
+        m_stopSignalled = true;
+        m_client.disconnectFromBroker();
+        emit stopped();
+    });
+}
+
+StationPublisher::~StationPublisher()
+{
+    for (Line &line : m_lines) {
+        for (const auto &c : line.connections)
+            disconnect(c);
+    }
+}
+
+QStringList StationPublisher::lines() const
+{
+    QStringList names;
+    for (const Line &line : m_lines)
+        names << line.name;
+    return names;
+}
+
+void StationPublisher::addLine(const QString &name, Bus *bus)
+{
+    Line line;
+    line.name = name;
+    line.bus = bus;
+    line.since = QDateTime::currentDateTimeUtc();
+    line.error = bus->lastError();
+    line.connections << connect(bus, &Bus::stateChanged, this, [this, bus](LineState) {
+        if (Line *l = lineOf(bus)) {
+            l->since = QDateTime::currentDateTimeUtc();
+            if (bus->state() == LineState::Connected)
+                l->error.clear();
+            publishLine(*l, false);
+        }
+    });
+    line.connections << connect(bus, &Bus::lineError, this, [this, bus](const QString &message) {
+        if (Line *l = lineOf(bus)) {
+            l->error = message;
+            publishLine(*l, false);
+        }
+    });
+    line.connections << connect(bus, &Bus::entriesUpdated, this, [this, bus](DeviceId id, const QStringList &ids) {
+        if (!m_devices.contains(id)) {
+            if (Line *l = lineOf(bus))
+                syncDevices(l->name);
+        }
+        publishEntries(id, ids, false);
+    });
+    line.connections << connect(bus, &Bus::conditionChanged, this, [this, bus](DeviceId id, const DeviceCondition &c) {
+        if (!m_devices.contains(id)) {
+            if (Line *l = lineOf(bus))
+                syncDevices(l->name);
+            return;
+        }
+        const Device &d = m_devices[id];
+        publish(m_scheme.deviceCondition(m_station, d.line, d.name), TopicScheme::conditionPayload(c));
+    });
+    m_lines << line;
+    publishStatus();
+    publishLine(m_lines.last(), true);
+    syncDevices(name);
+}
+
+void StationPublisher::removeLine(const QString &name)
+{
+    for (qsizetype i = 0; i < m_lines.size(); ++i) {
+        if (m_lines[i].name != name)
+            continue;
+        for (const auto &c : m_lines[i].connections)
+            disconnect(c);
+        const QList<DeviceId> ids = m_devices.keys();
+        for (DeviceId id : ids) {
+            if (m_devices[id].line == name)
+                forgetDevice(id);
+        }
+        clear(m_scheme.line(m_station, name));
+        m_lines.removeAt(i);
+        publishStatus();
+        return;
+    }
+}
+
+void StationPublisher::syncDevices(const QString &lineName)
+{
+    Line *line = nullptr;
+    for (Line &l : m_lines) {
+        if (l.name == lineName)
+            line = &l;
+    }
+    if (!line || !line->bus)
+        return;
+    const QList<DeviceId> present = line->bus->devices();
+    const QList<DeviceId> known = m_devices.keys();
+    for (DeviceId id : known) {
+        if (m_devices[id].line == lineName && !present.contains(id))
+            forgetDevice(id);
+    }
+    for (DeviceId id : present) {
+        if (m_devices.contains(id))
+            continue;
+        Device d;
+        d.line = lineName;
+        d.name = line->bus->deviceName(id);
+        d.map = line->bus->deviceMap(id);
+        if (!d.map)
+            continue;
+        m_devices.insert(id, d);
+        publishDevice(id);
+    }
+}
+
+bool StationPublisher::start(QString *error)
+{
+    m_started = QDateTime::currentDateTimeUtc();
+    m_stopping = false;
+    m_stopSignalled = false;
+    m_client.setWill(m_scheme.status(m_station), TopicScheme::statusOffline(QStringLiteral("connection lost")));
+    if (!m_client.connectToBroker()) {
+        if (error)
+            *error = m_client.lastError();
+        return false;
+    }
+    qCInfo(lcMqtt).noquote() << "station" << m_station << "publishing to" << m_client.settings().url() << "under"
+                             << m_scheme.status(m_station).section(QLatin1Char('/'), 0, -2) + QStringLiteral("/");
+    return true;
+}
+
+void StationPublisher::stop()
+{
+    m_heartbeat.stop();
+    m_stopping = true;
+    if (!m_client.isConnected()) {
+        m_stopSignalled = true;
+        m_client.disconnectFromBroker();
+        emit stopped();
+        return;
+    }
+    // Disconnected once the broker has the "stopped": closing a socket with its
+    // acknowledgement still unread makes the kernel reset the connection, and the broker
+    // loses the DISCONNECT with it and sends the will after all.
+    int messageId = -1;
+    if (!m_client.publish(m_scheme.status(m_station), TopicScheme::statusOffline(QStringLiteral("stopped")), true, 1,
+                          &messageId)) {
+        m_client.disconnectFromBroker();
+        return;
+    }
+    m_stopDeadline.start(3000);
+    connect(&m_client, &MqttClient::delivered, this, [this, messageId](int id) {
+        if (id == messageId)
+            m_client.disconnectFromBroker();
+    });
+}
+
+void StationPublisher::onConnected()
+{
+    qCInfo(lcMqtt).noquote() << "connected to" << m_client.settings().url();
+    for (const QString &topic : std::as_const(m_pendingClears))
+        m_client.publish(topic, QByteArray(), true);
+    m_pendingClears.clear();
+    publishAll();
+    if (!m_stopping)
+        m_heartbeat.start();
+}
+
+void StationPublisher::publishAll()
+{
+    m_messages = 0;
+    publishStatus();
+    for (Line &line : m_lines)
+        publishLine(line, true);
+    for (auto it = m_devices.begin(); it != m_devices.end(); ++it)
+        publishDevice(it.key());
+    emit statePublished(m_messages);
+}
+
+void StationPublisher::publishStatus()
+{
+    if (m_stopping)
+        return;
+    const QString software = QStringLiteral("%1 %2").arg(QCoreApplication::applicationName(), QStringLiteral(JUMO_VERSION));
+    publish(m_scheme.status(m_station), TopicScheme::statusOnline(software, m_started, lines()));
+}
+
+void StationPublisher::publishLine(Line &line, bool force)
+{
+    if (!line.bus)
+        return;
+    // A port that did not open says why in lastError(), with no lineError signal.
+    const QString error = line.error.isEmpty() && line.bus->state() != LineState::Connected ? line.bus->lastError()
+                                                                                          : line.error;
+    const QByteArray payload =
+            TopicScheme::linePayload(line.bus->settings().portName, line.bus->state(), line.since, error);
+    // "since" changes only with the state: an equal payload is no news.
+    if (!force && payload == line.lastPayload)
+        return;
+    line.lastPayload = payload;
+    publish(m_scheme.line(m_station, line.name), payload);
+}
+
+void StationPublisher::publishDevice(DeviceId id)
+{
+    Device &d = m_devices[id];
+    Line *line = nullptr;
+    for (Line &l : m_lines) {
+        if (l.name == d.line)
+            line = &l;
+    }
+    if (!line || !line->bus)
+        return;
+    publish(m_scheme.deviceInfo(m_station, d.line, d.name),
+            TopicScheme::deviceInfoPayload(d.line, *d.map, line->bus->deviceAddress(id)));
+    publish(m_scheme.deviceCondition(m_station, d.line, d.name), TopicScheme::conditionPayload(line->bus->condition(id)));
+    QStringList ids;
+    for (const RegisterEntry &e : d.map->entries())
+        ids << e.id;
+    publishEntries(id, ids, true);
+}
+
+void StationPublisher::publishEntries(DeviceId id, const QStringList &entryIds, bool force)
+{
+    if (!m_client.isConnected())
+        return;   // all of it goes out again on the next connect
+    auto it = m_devices.find(id);
+    if (it == m_devices.end())
+        return;
+    Device &d = *it;
+    Line *line = nullptr;
+    for (Line &l : m_lines) {
+        if (l.name == d.line)
+            line = &l;
+    }
+    if (!line || !line->bus)
+        return;
+    const Bus &bus = *line->bus;
+    const QDateTime now = QDateTime::currentDateTimeUtc();
+    const qint64 clockNow = bus.clockMs();
+    for (const QString &entryId : entryIds) {
+        const EntryState *state = bus.entryState(id, entryId);
+        const RegisterEntry *entry = d.map->entry(entryId);
+        // Reserves are read with their neighbours but mean nothing to anyone.
+        if (!state || !entry || entry->reserved)
+            continue;
+        const QDateTime read = state->goodMs >= 0 ? now.addMSecs(state->goodMs - clockNow) : QDateTime();
+        const QByteArray payload = TopicScheme::valuePayload(*state, *entry, read);
+        // What a viewer shows: the text and the status. A new read of the same value is
+        // no news (the heartbeat says the station is alive).
+        const QString key = ValueFormat::withUnit(state->value, *entry, QLocale::c()) + QChar(0x1F) + state->statusName();
+        if (!force && d.published.value(entryId) == key)
+            continue;
+        d.published.insert(entryId, key);
+        publish(m_scheme.value(m_station, d.line, d.name, entryId), payload);
+    }
+}
+
+void StationPublisher::forgetDevice(DeviceId id)
+{
+    const Device d = m_devices.take(id);
+    clear(m_scheme.deviceInfo(m_station, d.line, d.name));
+    clear(m_scheme.deviceCondition(m_station, d.line, d.name));
+    for (auto it = d.published.keyBegin(); it != d.published.keyEnd(); ++it)
+        clear(m_scheme.value(m_station, d.line, d.name, *it));
+}
+
+void StationPublisher::clear(const QString &topic)
+{
+    // An empty retained message removes the retained one; a broker that cannot be
+    // reached now gets it on the next connect.
+    if (!m_client.publish(topic, QByteArray(), true) && !m_pendingClears.contains(topic))
+        m_pendingClears << topic;
+}
+
+StationPublisher::Line *StationPublisher::lineOf(const Bus *bus)
+{
+    for (Line &l : m_lines) {
+        if (l.bus == bus)
+            return &l;
+    }
+    return nullptr;
+}
+
+void StationPublisher::publish(const QString &topic, const QByteArray &payload, bool retain)
+{
+    if (m_client.publish(topic, payload, retain))
+        ++m_messages;
+}
+
+} // namespace jumo

@@ -1,0 +1,102 @@
+// Publishes what the buses of a station know to an MQTT broker (README, "MQTT"): the
+// station's status with a last will, a heartbeat, each line's state, each device's
+// identity and condition, and every value when its text or status changes, straight from
+// the buses' signals. Everything but the heartbeat is retained, and all of it is published
+// again on every connect, so a broker restarted without persistence loses nothing. It
+// only reads the buses.
+#pragma once
+
+#include "mqtt/mqttclient.h"
+#include "mqtt/topicscheme.h"
+
+#include <QDateTime>
+#include <QHash>
+#include <QList>
+#include <QObject>
+#include <QPointer>
+#include <QTimer>
+
+namespace jumo {
+
+class Bus;
+
+class StationPublisher : public QObject
+{
+    Q_OBJECT
+
+public:
+    StationPublisher(const MqttSettings &broker, const QString &prefix, const QString &station,
+                     QObject *parent = nullptr);
+    ~StationPublisher() override;
+
+    // A line and its devices, under a name that is one topic level. The bus stays the
+    // caller's; the publisher only reads it.
+    void addLine(const QString &name, Bus *bus);
+    // Clears the line's retained topics and those of its devices.
+    void removeLine(const QString &name);
+    // After devices were added to or removed from a line's bus: publishes the new ones
+    // and clears the retained topics of those gone.
+    void syncDevices(const QString &line);
+    QStringList lines() const;
+
+    // Connects (asynchronously, with retries); false with the reason for what no retry
+    // can mend (unreadable TLS files).
+    bool start(QString *error);
+    // Publishes the clean "stopped" status and disconnects; stopped() follows, also when
+    // the broker cannot be reached.
+    void stop();
+
+    QString station() const { return m_station; }
+    const TopicScheme &scheme() const { return m_scheme; }
+    MqttClient &client() { return m_client; }
+    void setHeartbeatInterval(int ms) { m_heartbeat.setInterval(ms); }
+
+signals:
+    void stopped();
+    // Every full publication of the state (after each connect), with its message count.
+    void statePublished(int messages);
+
+private:
+    struct Device
+    {
+        QString line;
+        QString name;   // "family@address"
+        std::shared_ptr<const RegisterMap> map;
+        QHash<QString, QString> published;   // entry id -> text and status last published
+    };
+    struct Line
+    {
+        QString name;
+        QPointer<Bus> bus;
+        QDateTime since;
+        QString error;
+        QList<QMetaObject::Connection> connections;
+        QByteArray lastPayload;
+    };
+
+    void onConnected();
+    void publishAll();
+    void publishStatus();
+    void publishLine(Line &line, bool force);
+    void publishDevice(DeviceId id);
+    void publishEntries(DeviceId id, const QStringList &entryIds, bool force);
+    void forgetDevice(DeviceId id);
+    void clear(const QString &topic);
+    Line *lineOf(const Bus *bus);
+    void publish(const QString &topic, const QByteArray &payload, bool retain = true);
+
+    MqttClient m_client;
+    TopicScheme m_scheme;
+    QString m_station;
+    QDateTime m_started;
+    QList<Line> m_lines;
+    QHash<DeviceId, Device> m_devices;
+    QStringList m_pendingClears;   // retained topics to clear once connected again
+    QTimer m_heartbeat;
+    QTimer m_stopDeadline;
+    bool m_stopping = false;
+    bool m_stopSignalled = false;
+    int m_messages = 0;            // counting the messages of one full publication
+};
+
+} // namespace jumo

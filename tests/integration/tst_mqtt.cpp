@@ -1,0 +1,554 @@
+// The station published over MQTT, end to end with real parts: Debian's Mosquitto, the
+// simulator on a pty line, the jumo-publisher program, mosquitto_sub as an independent
+// subscriber and RemoteStation as the viewers' mirror. The line dies, the publisher is
+// killed, stopped, frozen, the broker is killed and started again: what viewers see must
+// follow each time.
+#include "mosquittobroker.h"
+#include "bus/bus.h"
+#include "mqtt/remotestation.h"
+#include "mqtt/stationpublisher.h"
+#include "protocol/valuecodec.h"
+#include "testpeers.h"
+
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <csignal>
+
+using namespace jumo;
+using namespace jumo::test;
+
+namespace {
+
+const QString station = QStringLiteral("teststation");
+
+QJsonObject json(const QByteArray &payload)
+{
+    return QJsonDocument::fromJson(payload).object();
+}
+
+// Entries of a device that count as what a station publishes (read, no reserves).
+int publishedEntries(const QString &family)
+{
+    int n = 0;
+    for (const RegisterEntry &e : families().family(family)->entries())
+        n += e.isReadable() && !e.reserved ? 1 : 0;
+    return n;
+}
+
+} // namespace
+
+class TstMqtt : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void init();
+    void cleanup();
+
+    void freshSubscribersGetTheWholeStateAtOnce();
+    void changedValueArrives();
+    void lostLineMakesValuesUnknown();
+    void killedPublisherLeavesItsWill();
+    void silentStationGoesStale();
+    void terminatedPublisherSaysStopped();
+    void brokerRestartLosesNothing();
+    void twoLinesFromAStationFile();
+    void removedLineIsCleared();
+    void passwordIsChecked();
+    void tls();
+
+private:
+    bool startPublisher(const QString &broker, const QStringList &extra = {},
+                        const QProcessEnvironment &environment = QProcessEnvironment::systemEnvironment());
+    std::unique_ptr<RemoteStation> startMirror(const MqttSettings &settings);
+    std::unique_ptr<RemoteStation> startMirror() { return startMirror(*MqttSettings::fromUrl(brokerUrl(), nullptr)); }
+    QString brokerUrl() const { return QStringLiteral("mqtt://127.0.0.1:%1").arg(m_broker->port()); }
+    // Every device online and every published entry current in the mirror.
+    static bool everythingCurrent(const RemoteStation &mirror, int devices = 2);
+    QString publisherErrors();
+
+    std::unique_ptr<MosquittoBroker> m_broker;
+    std::unique_ptr<TestLine> m_line;
+    std::unique_ptr<SimulatorPeer> m_peer;
+    std::unique_ptr<QProcess> m_publisher;
+    QByteArray m_publisherErr;
+};
+
+void TstMqtt::init()
+{
+    m_broker = std::make_unique<MosquittoBroker>();
+    m_line = std::make_unique<TestLine>();
+    QVERIFY(m_line->start());
+    m_peer = std::make_unique<SimulatorPeer>(QStringLiteral("ipc300"));
+    m_peer->line().addDevice(families().family(QStringLiteral("tya200")), 2);
+    QVERIFY(m_peer->start(m_line->deviceEnd(), {1}));
+}
+
+void TstMqtt::cleanup()
+{
+    if (m_publisher && m_publisher->state() != QProcess::NotRunning) {
+        m_publisher->kill();
+        m_publisher->waitForFinished(10000);
+    }
+    if (QTest::currentTestFailed()) {
+        qWarning().noquote() << "publisher:" << publisherErrors();
+        QStringList events;   // connections, wills, subscriptions: not every message
+        for (const QString &line : m_broker->log().split('\n')) {
+            if (!line.contains(QLatin1String("PUBLISH")) && !line.contains(QLatin1String("PUBACK")))
+                events << line;
+        }
+        qWarning().noquote() << "broker:" << events.mid(std::max<qsizetype>(0, events.size() - 60)).join('\n');
+    }
+    m_publisher.reset();
+    m_publisherErr.clear();
+    m_peer.reset();
+    m_line.reset();
+    m_broker.reset();
+}
+
+bool TstMqtt::startPublisher(const QString &broker, const QStringList &extra, const QProcessEnvironment &environment)
+{
+    const QStringList lines = extra.contains(QLatin1String("--station"))
+            ? QStringList()
+            : QStringList{QStringLiteral("--port"), m_line->masterEnd(), QStringLiteral("--baud"), QStringLiteral("19200"),
+                          QStringLiteral("--device"), QStringLiteral("ipc300@1"), QStringLiteral("--device"),
+                          QStringLiteral("tya200@2")};
+    m_publisher = std::make_unique<QProcess>();
+    m_publisher->setProcessEnvironment(environment);
+    connect(m_publisher.get(), &QProcess::readyReadStandardError, this,
+            [this] { m_publisherErr += m_publisher->readAllStandardError(); });
+    m_publisher->start(QStringLiteral(JUMO_PUBLISHER_PATH),
+                       QStringList{QStringLiteral("--broker"), broker, QStringLiteral("--name"), station} + lines
+                               + extra);
+    return m_publisher->waitForStarted(10000);
+}
+
+QString TstMqtt::publisherErrors()
+{
+    if (m_publisher)
+        m_publisherErr += m_publisher->readAllStandardError();
+    return QString::fromUtf8(m_publisherErr);
+}
+
+std::unique_ptr<RemoteStation> TstMqtt::startMirror(const MqttSettings &settings)
+{
+    auto mirror = std::make_unique<RemoteStation>(families());
+    mirror->setStation(station);
+    QString error;
+    if (!mirror->start(settings, &error)) {
+        qWarning().noquote() << error;
+        return nullptr;
+    }
+    return mirror;
+}
+
+bool TstMqtt::everythingCurrent(const RemoteStation &mirror, int devices)
+{
+    if (mirror.devices().size() != devices || !mirror.isLive(station))
+        return false;
+    for (DeviceId id : mirror.devices()) {
+        const RemoteDevice *d = mirror.device(id);
+        if (!d->condition.isOnline() || mirror.entryIds(id).size() != publishedEntries(d->family))
+            return false;
+        for (const QString &entry : mirror.entryIds(id)) {
+            const EntryState *s = mirror.entryState(id, entry);
+            if (s->validity != Validity::Current && s->error != ReadError::NotAvailable && s->error != ReadError::Exception)
+                return false;
+        }
+    }
+    return true;
+}
+
+void TstMqtt::freshSubscribersGetTheWholeStateAtOnce()
+{
+    QVERIFY(m_broker->start());
+    QVERIFY(startPublisher(brokerUrl()));
+    auto mirror = startMirror();
+    QVERIFY(mirror);
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 30000);
+
+    // An independent subscriber gets all of it from the retained messages alone.
+    const QHash<QString, QByteArray> retained = retainedMessages(m_broker->port(), QStringLiteral("jumo/#"));
+    const QString base = QStringLiteral("jumo/%1/").arg(station);
+    QCOMPARE(json(retained.value(base + "status")).value("state").toString(), QStringLiteral("online"));
+    QCOMPARE(json(retained.value(base + "status")).value("lines").toVariant().toStringList(), QStringList{"line1"});
+    QCOMPARE(json(retained.value(base + "lines/line1")).value("state").toString(), QStringLiteral("connected"));
+    QCOMPARE(json(retained.value(base + "lines/line1")).value("kind").toString(), QStringLiteral("rtu"));
+    QVERIFY(!retained.contains(base + "heartbeat"));
+    int values = 0;
+    for (const QString &device : {QStringLiteral("ipc300@1"), QStringLiteral("tya200@2")}) {
+        const QString family = device.section('@', 0, 0);
+        QCOMPARE(json(retained.value(base + "devices/line1/" + device + "/info")).value("family").toString(), family);
+        QCOMPARE(json(retained.value(base + "devices/line1/" + device + "/condition")).value("state").toString(),
+                 QStringLiteral("online"));
+        const auto id = mirror->findDevice(station, QStringLiteral("line1"), device);
+        QVERIFY(id);
+        for (const QString &entry : mirror->entryIds(*id)) {
+            const QByteArray payload = retained.value(base + "devices/line1/" + device + "/values/" + entry);
+            QVERIFY2(!payload.isEmpty(), qPrintable(device + " " + entry + " not retained"));
+            // The same value as the mirror shows, decoded from the same words.
+            QCOMPARE(json(payload).value("text").toString(), mirror->published(*id, entry)->text);
+            ++values;
+        }
+    }
+    QCOMPARE(values, publishedEntries("ipc300") + publishedEntries("tya200"));
+    // Nothing else: info, condition and the values of two devices, the line, the status,
+    // and the mirror's presence.
+    QCOMPARE(retained.size(), values + 2 * 2 + 1 + 1 + 1);
+    QCOMPARE(json(retained.value(base + "viewers/" + mirror->client().clientId())).value("state").toString(),
+             QStringLiteral("watching"));
+
+    // A second mirror, started now, has everything at once too.
+    auto second = startMirror();
+    QVERIFY(second);
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*second), 10000);
+}
+
+void TstMqtt::changedValueArrives()
+{
+    QVERIFY(m_broker->start());
+    QVERIFY(startPublisher(brokerUrl()));
+    auto mirror = startMirror();
+    QVERIFY(mirror);
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 30000);
+    const auto map = families().family(QStringLiteral("ipc300"));
+    const RegisterEntry *voltage = map->entry(QStringLiteral("load_voltage"));
+    QVERIFY(m_peer->setWords(1, voltage->address, ValueCodec::encodeFloat(123.5f, map->protocol.floatWordOrder)));
+    const DeviceId id = *mirror->findDevice(station, QStringLiteral("line1"), QStringLiteral("ipc300@1"));
+    QTRY_COMPARE_WITH_TIMEOUT(mirror->entryState(id, voltage->id)->value.value.toDouble(), 123.5, 10000);
+    QCOMPARE(mirror->entryState(id, voltage->id)->validity, Validity::Current);
+    QCOMPARE(mirror->published(id, voltage->id)->text, QStringLiteral("123.5 V"));
+    const QByteArray retained = retainedMessages(m_broker->port(), QStringLiteral("jumo/%1/devices/line1/ipc300@1/values/load_voltage").arg(station),
+                                                 {QStringLiteral("-C"), QStringLiteral("1")})
+                                        .values()
+                                        .value(0);
+    QCOMPARE(json(retained).value("value").toDouble(), 123.5);
+}
+
+void TstMqtt::lostLineMakesValuesUnknown()
+{
+    QVERIFY(m_broker->start());
+    QVERIFY(startPublisher(brokerUrl()));
+    auto mirror = startMirror();
+    QVERIFY(mirror);
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 30000);
+
+    m_line->stop();   // socat, by its PID: both ends of the line vanish
+    QTRY_VERIFY_WITH_TIMEOUT(mirror->line(station, QStringLiteral("line1"))
+                                     && mirror->line(station, QStringLiteral("line1"))->state == LineState::Lost,
+                             10000);
+    QVERIFY(!mirror->line(station, QStringLiteral("line1"))->error.isEmpty());
+    for (DeviceId id : mirror->devices()) {
+        QTRY_COMPARE_WITH_TIMEOUT(mirror->condition(id).state, DeviceCondition::State::LineLost, 10000);
+        for (const QString &entry : mirror->entryIds(id)) {
+            QTRY_COMPARE_WITH_TIMEOUT(mirror->entryState(id, entry)->validity, Validity::Unknown, 10000);
+            QCOMPARE(mirror->published(id, entry)->status, QStringLiteral("line_lost"));
+        }
+    }
+    // The station itself is alive: the values are unknown because of the line, not stale.
+    QVERIFY(mirror->isLive(station));
+    const QHash<QString, QByteArray> retained = retainedMessages(m_broker->port(), QStringLiteral("jumo/#"));
+    QCOMPARE(json(retained.value("jumo/teststation/lines/line1")).value("state").toString(), QStringLiteral("lost"));
+    const QJsonObject voltage = json(retained.value("jumo/teststation/devices/line1/ipc300@1/values/load_voltage"));
+    QCOMPARE(voltage.value("validity").toString(), QStringLiteral("unknown"));
+    QVERIFY(voltage.value("value").isNull());
+
+    // Back: the line comes again, so do the values.
+    m_peer->stop();   // its end of the old pair, if it has not noticed yet
+    QVERIFY(m_line->restart());
+    QVERIFY(m_peer->reopen());
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 30000);
+}
+
+void TstMqtt::killedPublisherLeavesItsWill()
+{
+    QVERIFY(m_broker->start());
+    QVERIFY(startPublisher(brokerUrl()));
+    auto mirror = startMirror();
+    QVERIFY(mirror);
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 30000);
+
+    m_publisher->kill();   // SIGKILL to its PID: no goodbye
+    QVERIFY(m_publisher->waitForFinished(10000));
+    QTRY_VERIFY_WITH_TIMEOUT(!mirror->isLive(station), 2000);
+    QVERIFY(mirror->station(station)->statusKnown);
+    QVERIFY(!mirror->station(station)->status.online);
+    QCOMPARE(mirror->station(station)->status.reason, QStringLiteral("connection lost"));
+    for (DeviceId id : mirror->devices()) {
+        for (const QString &entry : mirror->entryIds(id)) {
+            const EntryState *s = mirror->entryState(id, entry);
+            // What was current is stale now; the station's own word stays underneath.
+            if (mirror->published(id, entry)->validity == Validity::Current)
+                QCOMPARE(s->validity, Validity::Stale);
+            QVERIFY(s->validity != Validity::Current);
+        }
+    }
+    const QHash<QString, QByteArray> retained =
+            retainedMessages(m_broker->port(), QStringLiteral("jumo/%1/status").arg(station), {"-C", "1"});
+    QCOMPARE(json(retained.value("jumo/teststation/status")),
+             QJsonObject({{"state", "offline"}, {"reason", "connection lost"}}));
+
+    // A new publisher: current again.
+    QVERIFY(startPublisher(brokerUrl()));
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 30000);
+}
+
+void TstMqtt::silentStationGoesStale()
+{
+    QVERIFY(m_broker->start());
+    QVERIFY(startPublisher(brokerUrl()));
+    auto mirror = startMirror();
+    QVERIFY(mirror);
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 30000);
+    const DeviceId id = *mirror->findDevice(station, QStringLiteral("line1"), QStringLiteral("ipc300@1"));
+
+    // Frozen: its connection stays open, so the broker sends no will for a while; the
+    // missing heartbeat tells.
+    QCOMPARE(::kill(pid_t(m_publisher->processId()), SIGSTOP), 0);
+    QTRY_VERIFY_WITH_TIMEOUT(!mirror->isLive(station), 5000);
+    QVERIFY(mirror->station(station)->status.online);
+    QVERIFY(mirror->station(station)->silent);
+    QCOMPARE(mirror->entryState(id, QStringLiteral("load_voltage"))->validity, Validity::Stale);
+    QCOMPARE(mirror->entryState(id, QStringLiteral("load_voltage"))->statusName(), QStringLiteral("stale"));
+
+    QCOMPARE(::kill(pid_t(m_publisher->processId()), SIGCONT), 0);
+    QTRY_VERIFY_WITH_TIMEOUT(mirror->isLive(station), 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(mirror->entryState(id, QStringLiteral("load_voltage"))->validity, Validity::Current, 10000);
+}
+
+void TstMqtt::terminatedPublisherSaysStopped()
+{
+    QVERIFY(m_broker->start());
+    QVERIFY(startPublisher(brokerUrl()));
+    auto mirror = startMirror();
+    QVERIFY(mirror);
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 30000);
+
+    m_publisher->terminate();   // SIGTERM, as systemd stops it
+    QVERIFY(m_publisher->waitForFinished(10000));
+    QCOMPARE(m_publisher->exitStatus(), QProcess::NormalExit);
+    QCOMPARE(m_publisher->exitCode(), 0);
+    QTRY_VERIFY_WITH_TIMEOUT(!mirror->isLive(station), 5000);
+    QCOMPARE(mirror->station(station)->status.reason, QStringLiteral("stopped"));
+    const QHash<QString, QByteArray> retained = retainedMessages(m_broker->port(), QStringLiteral("jumo/#"), {}, 3);
+    QCOMPARE(json(retained.value("jumo/teststation/status")), QJsonObject({{"state", "offline"}, {"reason", "stopped"}}));
+    // It clears nothing else: the last known values stay for whoever looks.
+    QVERIFY(retained.contains("jumo/teststation/devices/line1/ipc300@1/values/load_voltage"));
+    QVERIFY(retained.contains("jumo/teststation/lines/line1"));
+}
+
+void TstMqtt::brokerRestartLosesNothing()
+{
+    QVERIFY(m_broker->start());
+    QVERIFY(startPublisher(brokerUrl()));
+    auto mirror = startMirror();
+    QVERIFY(mirror);
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 30000);
+    const DeviceId id = *mirror->findDevice(station, QStringLiteral("line1"), QStringLiteral("ipc300@1"));
+    const auto map = families().family(QStringLiteral("ipc300"));
+    QVERIFY(m_peer->setWords(1, map->entry(QStringLiteral("load_voltage"))->address,
+                             ValueCodec::encodeFloat(231.25f, map->protocol.floatWordOrder)));
+    QTRY_COMPARE_WITH_TIMEOUT(mirror->published(id, QStringLiteral("load_voltage"))->text, QStringLiteral("231.3 V"),
+                              10000);
+    QHash<QString, QString> before;
+    for (DeviceId d : mirror->devices()) {
+        for (const QString &entry : mirror->entryIds(d))
+            before.insert(mirror->deviceName(d) + '/' + entry, mirror->published(d, entry)->text);
+    }
+    const int retainedBefore = retainedMessages(m_broker->port(), QStringLiteral("jumo/#")).size();
+
+    m_broker->kill();   // SIGKILL, no persistence: every retained message is gone
+    QTRY_VERIFY_WITH_TIMEOUT(!mirror->isConnected(), 10000);
+    QVERIFY(!mirror->isLive(station));
+    QCOMPARE(mirror->entryState(id, QStringLiteral("load_voltage"))->validity, Validity::Stale);
+
+    QVERIFY(m_broker->restart());
+    // Both come back by themselves, the publisher publishes everything again.
+    QTRY_VERIFY_WITH_TIMEOUT(mirror->isConnected(), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 30000);
+    for (DeviceId d : mirror->devices()) {
+        for (const QString &entry : mirror->entryIds(d))
+            QCOMPARE(mirror->published(d, entry)->text, before.value(mirror->deviceName(d) + '/' + entry));
+    }
+    QCOMPARE(mirror->published(id, QStringLiteral("load_voltage"))->text, QStringLiteral("231.3 V"));
+    QTRY_COMPARE_WITH_TIMEOUT(retainedMessages(m_broker->port(), QStringLiteral("jumo/#")).size(), retainedBefore, 10000);
+    QVERIFY(publisherErrors().contains(QLatin1String("connected to")));
+}
+
+void TstMqtt::twoLinesFromAStationFile()
+{
+    // A second line with the same address as the first one has: devices are told apart
+    // by their line.
+    TestLine second;
+    QVERIFY(second.start());
+    SimulatorPeer secondPeer(QStringLiteral("quantrol"));
+    QVERIFY(secondPeer.start(second.deviceEnd(), {1}));
+    QFile file(m_broker->file(QStringLiteral("station.json")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(QStringLiteral(R"({"format": "jumo-station", "version": 1, "name": "ignored-by---name",
+        "lines": [{"name": "cabinet-a", "port": "%1", "baud": 19200, "devices": ["ipc300@1", "tya200@2"]},
+                  {"name": "cabinet-b", "port": "%2", "baud": 19200, "devices": ["quantrol@1"]}]})")
+                       .arg(m_line->masterEnd(), second.masterEnd())
+                       .toUtf8());
+    file.close();
+    QVERIFY(m_broker->start());
+    QVERIFY(startPublisher(brokerUrl(), {QStringLiteral("--station"), file.fileName()}));
+    auto mirror = startMirror();
+    QVERIFY(mirror);
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror, 3), 30000);
+    QCOMPARE(mirror->lines(station), (QStringList{"cabinet-a", "cabinet-b"}));
+    QCOMPARE(mirror->station(station)->status.lines, (QStringList{"cabinet-a", "cabinet-b"}));
+    QVERIFY(mirror->findDevice(station, "cabinet-a", "ipc300@1"));
+    const auto quantrol = mirror->findDevice(station, "cabinet-b", "quantrol@1");
+    QVERIFY(quantrol);
+    QCOMPARE(mirror->device(*quantrol)->model, families().family("quantrol")->name);
+
+    // One line dies, the other goes on.
+    second.stop();
+    QTRY_COMPARE_WITH_TIMEOUT(mirror->line(station, "cabinet-b")->state, LineState::Lost, 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(mirror->condition(*quantrol).state, DeviceCondition::State::LineLost, 10000);
+    QCOMPARE(mirror->line(station, "cabinet-a")->state, LineState::Connected);
+    const auto ipc = mirror->findDevice(station, "cabinet-a", "ipc300@1");
+    QVERIFY(mirror->condition(*ipc).isOnline());
+    QCOMPARE(mirror->entryState(*ipc, "load_voltage")->validity, Validity::Current);
+}
+
+void TstMqtt::removedLineIsCleared()
+{
+    // The publisher in-process, on a bus of ours, and a mirror of every station.
+    QVERIFY(m_broker->start());
+    Bus bus;
+    BusSettings settings;
+    settings.portName = m_line->masterEnd();
+    settings.format = testFormat();
+    settings.readOnly = true;
+    bus.setSettings(settings);
+    bus.addDevice(families().family(QStringLiteral("ipc300")), 1);
+    QVERIFY(bus.open());
+    bus.setPolling(true);
+    StationPublisher publisher(*MqttSettings::fromUrl(brokerUrl(), nullptr), QStringLiteral("jumo"),
+                               QStringLiteral("inproc"));
+    publisher.addLine(QStringLiteral("a"), &bus);
+    QString error;
+    QVERIFY2(publisher.start(&error), qPrintable(error));
+    RemoteStation mirror(families());
+    QVERIFY(mirror.start(*MqttSettings::fromUrl(brokerUrl(), nullptr), &error));
+    QTRY_VERIFY_WITH_TIMEOUT(mirror.findDevice(QStringLiteral("inproc"), QStringLiteral("a"), QStringLiteral("ipc300@1"))
+                                     && mirror.isLive(QStringLiteral("inproc")),
+                             20000);
+    const DeviceId id = *mirror.findDevice(QStringLiteral("inproc"), QStringLiteral("a"), QStringLiteral("ipc300@1"));
+    QTRY_COMPARE_WITH_TIMEOUT(mirror.entryState(id, QStringLiteral("load_voltage"))
+                                      ? mirror.entryState(id, QStringLiteral("load_voltage"))->validity
+                                      : Validity::Unknown,
+                              Validity::Current, 20000);
+    QVERIFY(!retainedMessages(m_broker->port(), QStringLiteral("jumo/inproc/devices/#"), {}, 3).isEmpty());
+
+    QSignalSpy removed(&mirror, &RemoteStation::deviceRemoved);
+    publisher.removeLine(QStringLiteral("a"));
+    QTRY_COMPARE_WITH_TIMEOUT(removed.size(), 1, 10000);
+    QCOMPARE(removed.constFirst().constFirst().value<DeviceId>(), id);
+    QVERIFY(!mirror.findDevice(QStringLiteral("inproc"), QStringLiteral("a"), QStringLiteral("ipc300@1")));
+    QTRY_VERIFY_WITH_TIMEOUT(mirror.lines(QStringLiteral("inproc")).isEmpty(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(mirror.station(QStringLiteral("inproc"))->status.lines.isEmpty(), 10000);
+    // Nothing of the line is retained any more: a new viewer does not see a ghost.
+    const QHash<QString, QByteArray> retained = retainedMessages(m_broker->port(), QStringLiteral("jumo/#"));
+    for (auto it = retained.begin(); it != retained.end(); ++it)
+        QVERIFY2(!it.key().contains(QLatin1String("/devices/")) && !it.key().contains(QLatin1String("/lines/")),
+                 qPrintable(it.key()));
+    QVERIFY(retained.contains(QStringLiteral("jumo/inproc/status")));
+}
+
+void TstMqtt::passwordIsChecked()
+{
+    QProcess passwd;
+    const QString passwordFile = m_broker->file(QStringLiteral("passwords"));
+    passwd.start(findTool(QStringLiteral("mosquitto_passwd")),
+                 {QStringLiteral("-c"), QStringLiteral("-b"), passwordFile, QStringLiteral("station"),
+                  QStringLiteral("right-secret")});
+    QVERIFY(passwd.waitForFinished(10000));
+    QCOMPARE(passwd.exitCode(), 0);
+    QVERIFY(m_broker->start(QStringLiteral("allow_anonymous false\npassword_file %1\n").arg(passwordFile)));
+    const QString url = QStringLiteral("mqtt://station@127.0.0.1:%1").arg(m_broker->port());
+
+    // Wrong: refused, said clearly, and the password appears nowhere.
+    QProcessEnvironment wrong = QProcessEnvironment::systemEnvironment();
+    wrong.insert(QStringLiteral("JUMO_MQTT_PASSWORD"), QStringLiteral("wrong-secret"));
+    QVERIFY(startPublisher(url, {}, wrong));
+    QTRY_VERIFY_WITH_TIMEOUT(publisherErrors().contains(QLatin1String("refused the connection")), 10000);
+    QVERIFY2(publisherErrors().contains(QLatin1String("not authorised"), Qt::CaseInsensitive), qPrintable(publisherErrors()));
+    QVERIFY(!publisherErrors().contains(QLatin1String("wrong-secret")));
+    QVERIFY(retainedMessages(m_broker->port(), QStringLiteral("jumo/#"), {"-u", "station", "-P", "right-secret"}, 2)
+                    .isEmpty());
+    m_publisher->kill();
+    m_publisher->waitForFinished(10000);
+    m_publisherErr.clear();
+
+    // Right, from a file.
+    QFile file(m_broker->file(QStringLiteral("publisher-password")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("right-secret\n");
+    file.close();
+    QProcessEnvironment none = QProcessEnvironment::systemEnvironment();
+    none.remove(QStringLiteral("JUMO_MQTT_PASSWORD"));
+    QVERIFY(startPublisher(url, {QStringLiteral("--password-file"), file.fileName()}, none));
+    MqttSettings settings = *MqttSettings::fromUrl(url, nullptr);
+    settings.password = QStringLiteral("right-secret");
+    auto mirror = startMirror(settings);
+    QVERIFY(mirror);
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 30000);
+    QVERIFY(!publisherErrors().contains(QLatin1String("refused")));
+    // An anonymous viewer gets nothing.
+    QVERIFY(retainedMessages(m_broker->port(), QStringLiteral("jumo/#"), {}, 2).isEmpty());
+}
+
+void TstMqtt::tls()
+{
+    // A throwaway CA and a server certificate for 127.0.0.1 and localhost.
+    const QString dir = m_broker->dir();
+    auto openssl = [&](const QStringList &args) {
+        QProcess p;
+        p.setWorkingDirectory(dir);
+        p.start(findTool(QStringLiteral("openssl")), args);
+        return p.waitForFinished(60000) && p.exitCode() == 0;
+    };
+    QFile ext(m_broker->file(QStringLiteral("server.ext")));
+    QVERIFY(ext.open(QIODevice::WriteOnly));
+    ext.write("subjectAltName=IP:127.0.0.1,DNS:localhost\n");
+    ext.close();
+    QVERIFY(openssl({"req", "-x509", "-newkey", "rsa:2048", "-nodes", "-keyout", "ca.key", "-out", "ca.crt", "-days",
+                     "1", "-subj", "/CN=jumo test CA"}));
+    QVERIFY(openssl({"req", "-newkey", "rsa:2048", "-nodes", "-keyout", "server.key", "-out", "server.csr", "-subj",
+                     "/CN=127.0.0.1"}));
+    QVERIFY(openssl({"x509", "-req", "-in", "server.csr", "-CA", "ca.crt", "-CAkey", "ca.key", "-CAcreateserial",
+                     "-out", "server.crt", "-days", "1", "-extfile", "server.ext"}));
+    QVERIFY(m_broker->start(QStringLiteral("allow_anonymous true\ncafile %1\ncertfile %2\nkeyfile %3\n")
+                                    .arg(m_broker->file("ca.crt"), m_broker->file("server.crt"),
+                                         m_broker->file("server.key"))));
+    const QString url = QStringLiteral("mqtts://127.0.0.1:%1").arg(m_broker->port());
+
+    // Without our CA the broker's certificate is not trusted.
+    QVERIFY(startPublisher(url));
+    auto untrusting = startMirror(*MqttSettings::fromUrl(url, nullptr));
+    QVERIFY(untrusting);
+    QSignalSpy failed(&untrusting->client(), &MqttClient::disconnected);
+    QVERIFY(failed.wait(10000));
+    QVERIFY2(failed.constFirst().constFirst().toString().contains(QLatin1String("TLS")),
+             qPrintable(failed.constFirst().constFirst().toString()));
+    QVERIFY(!untrusting->isConnected());
+    QTRY_VERIFY_WITH_TIMEOUT(publisherErrors().contains(QLatin1String("TLS")), 10000);
+    m_publisher->kill();
+    m_publisher->waitForFinished(10000);
+    untrusting.reset();
+
+    QVERIFY(startPublisher(url, {QStringLiteral("--tls-ca"), m_broker->file("ca.crt")}));
+    MqttSettings settings = *MqttSettings::fromUrl(url, nullptr);
+    QCOMPARE(settings.port, m_broker->port());
+    settings.caFile = m_broker->file("ca.crt");
+    auto mirror = startMirror(settings);
+    QVERIFY(mirror);
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 30000);
+}
+
+QTEST_GUILESS_MAIN(TstMqtt)
+#include "tst_mqtt.moc"

@@ -1,0 +1,89 @@
+// jumo-publisher's command line, in-process: what it refuses, and that it says why.
+#include "mqtt/publisherprogram.h"
+
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace jumo;
+
+class TstJumoPublisher : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void refused_data();
+    void refused();
+    void passwordFileMissing();
+};
+
+void TstJumoPublisher::refused_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("message");
+    const QStringList line{"--port", "/dev/null", "--device", "ipc300@1"};
+    QTest::newRow("no broker") << line << "--broker is required";
+    QTest::newRow("password in the url") << QStringList{"--broker", "mqtt://u:hunter2@host"} + line
+                                         << "password file or JUMO_MQTT_PASSWORD";
+    QTest::newRow("password option does not exist") << QStringList{"--broker", "mqtt://host", "--password", "x"} + line
+                                                    << "Unknown option 'password'";
+    QTest::newRow("tls files without mqtts") << QStringList{"--broker", "mqtt://host", "--tls-ca", "/etc/hostname"} + line
+                                             << "TLS files need an mqtts:// broker";
+    QTest::newRow("station name with a slash") << QStringList{"--broker", "mqtt://host", "--name", "hall/3"} + line
+                                               << "cannot be a station name";
+    QTest::newRow("wildcard prefix") << QStringList{"--broker", "mqtt://host", "--prefix", "jumo/#"} + line
+                                     << "cannot be a topic prefix";
+    QTest::newRow("no lines") << QStringList{"--broker", "mqtt://host", "--device", "ipc300@1"}
+                              << "give the lines by one of --station";
+    QTest::newRow("port and line") << QStringList{"--broker", "mqtt://host", "--line", "/dev/null"} + line
+                                   << "give the lines by one of --station";
+    QTest::newRow("no device") << QStringList{"--broker", "mqtt://host", "--port", "/dev/null"}
+                               << "name at least one device";
+    QTest::newRow("unknown family") << QStringList{"--broker", "mqtt://host", "--port", "/dev/null", "--device", "s7@1"}
+                                    << "s7";
+    QTest::newRow("device twice") << QStringList{"--broker", "mqtt://host", "--port", "/dev/null", "--device",
+                                                 "ipc300@1", "--device", "ipc300@1"}
+                                  << "named twice";
+    QTest::newRow("ambiguous device on two lines")
+            << QStringList{"--broker", "mqtt://host", "--line", "/dev/null,name=a", "--line", "/dev/zero,name=b",
+                           "--device", "ipc300@1"}
+            << "ipc300@1";
+    QTest::newRow("station file and devices") << QStringList{"--broker", "mqtt://host", "--station", "/nonexistent.json",
+                                                             "--device", "ipc300@1"}
+                                              << "a station file lists its devices";
+    QTest::newRow("missing station file") << QStringList{"--broker", "mqtt://host", "--station", "/nonexistent.json"}
+                                          << "/nonexistent.json";
+    QTest::newRow("heartbeat too fast") << QStringList{"--broker", "mqtt://host", "--heartbeat", "5"} + line
+                                        << "--heartbeat must be";
+}
+
+void TstJumoPublisher::refused()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, message);
+    QString out;
+    QString err;
+    QTextStream outStream(&out);
+    QTextStream errStream(&err);
+    PublisherProgram program(outStream, errStream);
+    QCOMPARE(program.run(arguments), std::optional<int>(2));
+    QVERIFY2(err.contains(message), qPrintable(err));
+    QVERIFY(!err.contains(QLatin1String("hunter2")));
+    QVERIFY(!program.publisher());
+}
+
+void TstJumoPublisher::passwordFileMissing()
+{
+    QTemporaryDir dir;
+    QString out;
+    QString err;
+    QTextStream outStream(&out);
+    QTextStream errStream(&err);
+    PublisherProgram program(outStream, errStream);
+    QCOMPARE(program.run({"--broker", "mqtt://station@host", "--password-file", dir.filePath("none"), "--port",
+                          "/dev/null", "--device", "ipc300@1"}),
+             std::optional<int>(2));
+    QVERIFY2(err.contains(QLatin1String("cannot read the password file")), qPrintable(err));
+}
+
+QTEST_GUILESS_MAIN(TstJumoPublisher)
+#include "tst_jumopublisher.moc"
