@@ -1,6 +1,8 @@
 #include "protocol/csv.h"
 #include "linecommands.h"
 
+#include "bus/lineaddress.h"
+
 #include "commissioning/parametertransfer.h"
 
 #include "broadcastgate.h"
@@ -104,8 +106,16 @@ void LineCommands::addLineOptions(CommandParser &parser, bool namesDevices)
 {
     if (namesDevices)
         IdentityGate::addOption(parser);
-    parser.addOption({QStringLiteral("port"), tr("Serial port (required): its /dev/serial/by-id name, which 'jumoctl ports' lists, or /dev/ttyUSB0, say."), tr("path")});
-    parser.addOption({QStringLiteral("baud"), tr("Baud rate: 4800, 9600, 19200 or 38400 (default 9600)."), tr("rate"),
+    parser.addOption({QStringLiteral("port"),
+                      tr("The line (required): a serial port (its /dev/serial/by-id name, which 'jumoctl ports' lists, "
+                         "or /dev/ttyUSB0, say), tcp://HOST[:PORT] for a Modbus TCP gateway (port 502 by default; the "
+                         "device address is the unit id) or rtu+tcp://HOST:PORT for raw RTU through a serial device "
+                         "server."),
+                      tr("address")});
+    parser.addOption({QStringLiteral("baud"),
+                      tr("Baud rate: 4800, 9600, 19200 or 38400 (default 9600); behind a gateway, its serial side's "
+                         "(it sets the timing)."),
+                      tr("rate"),
                       QStringLiteral("9600")});
     parser.addOption({QStringLiteral("format"), tr("Data format: 8N1, 8E1, 8O1 or 8N2 (default 8N1)."), tr("format"),
                       QStringLiteral("8N1")});
@@ -131,8 +141,15 @@ std::optional<int> LineCommands::openLine(CommandParser &parser)
         m_err << tr("--port is required") << Qt::endl;
         return 2;
     }
+    QString addressError;
+    const std::optional<LineAddress> address = LineAddress::parse(settings.portName, &addressError);
+    if (!address) {
+        m_err << addressError << Qt::endl;
+        return 2;
+    }
     // A path is a path: Qt would put /dev/ in front of a relative one ("line/master").
-    if (settings.portName.contains(QLatin1Char('/')) && !settings.portName.startsWith(QLatin1Char('/')))
+    if (!address->isNetwork() && settings.portName.contains(QLatin1Char('/'))
+        && !settings.portName.startsWith(QLatin1Char('/')))
         settings.portName = QFileInfo(settings.portName).absoluteFilePath();
     bool ok = false;
     const int baud = parser.value(QStringLiteral("baud")).toInt(&ok);
