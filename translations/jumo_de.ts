@@ -4,17 +4,17 @@
 <context>
     <name>jumo::AddDeviceDialog</name>
     <message>
-        <location filename="../ui/adddevicedialog.cpp" line="+15" />
+        <location filename="../ui/adddevicedialog.cpp" line="+15"/>
         <source>Add device</source>
         <translation>Gerät hinzufügen</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+15"/>
         <source>&amp;Family:</source>
         <translation>&amp;Familie:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Address:</source>
         <translation>&amp;Adresse:</translation>
     </message>
@@ -22,84 +22,84 @@
 <context>
     <name>jumo::AlarmBitsModel</name>
     <message>
-        <location filename="../lib/models/alarmbitsmodel.cpp" line="+112" />
+        <location filename="../lib/models/alarmbitsmodel.cpp" line="+112"/>
         <source>%1 (register %2)</source>
         <translation>%1 (Register %2)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>alarm</source>
         <translation>Alarm</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>warning</source>
         <translation>Warnung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1
 Register %2 (%3), bit %4, %5
-Manual %6: "%7"</source>
+Manual %6: &quot;%7&quot;</source>
         <translation>%1
 Register %2 (%3), Bit %4, %5
-Handbuch %6: "%7"</translation>
+Handbuch %6: &quot;%7&quot;</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Unknown: the register could not be read (%1).</source>
         <translation>Unbekannt: Das Register konnte nicht gelesen werden (%1).</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>Stale: not read within the device's cycle.</source>
+        <location line="+4"/>
+        <source>Stale: not read within the device&apos;s cycle.</source>
         <translation>Veraltet: nicht innerhalb des Gerätezyklus gelesen.</translation>
     </message>
 </context>
 <context>
     <name>jumo::BitSwitches</name>
     <message>
-        <location filename="../ui/bitswitches.cpp" line="+43" />
+        <location filename="../ui/bitswitches.cpp" line="+43"/>
         <source>The device does not report these bits: a write sets every bit as ticked here.</source>
         <translation>Das Gerät meldet diese Bits nicht zurück: Ein Schreiben setzt jedes Bit so, wie es hier angekreuzt ist.</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+15"/>
         <source>On</source>
         <translation>Ein</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Off</source>
         <translation>Aus</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+32"/>
         <source>unknown: the device cannot be read</source>
         <translation>unbekannt: das Gerät kann nicht gelesen werden</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>stale</source>
         <translation>veraltet</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>on</source>
         <translation>ein</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>off</source>
         <translation>aus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Bit %1 of %2, %3; reported in %4</source>
         <translation>Bit %1 von %2, %3; gemeldet in %4</translation>
     </message>
@@ -107,50 +107,50 @@ Handbuch %6: "%7"</translation>
 <context>
     <name>jumo::BitWrite</name>
     <message>
-        <location filename="../lib/protocol/bitwrite.cpp" line="+66" />
-        <source>'%1' is not a writable bit field</source>
-        <translation>'%1' ist kein beschreibbares Bitfeld</translation>
+        <location filename="../lib/protocol/bitwrite.cpp" line="+66"/>
+        <source>&apos;%1&apos; is not a writable bit field</source>
+        <translation>&apos;%1&apos; ist kein beschreibbares Bitfeld</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>'%1' is a command word: its bits are actions, sent one at a time, not states to keep</source>
-        <translation>'%1' ist ein Befehlswort: Seine Bits sind Aktionen, die einzeln gesendet werden, keine Zustände, die erhalten bleiben</translation>
+        <location line="+2"/>
+        <source>&apos;%1&apos; is a command word: its bits are actions, sent one at a time, not states to keep</source>
+        <translation>&apos;%1&apos; ist ein Befehlswort: Seine Bits sind Aktionen, die einzeln gesendet werden, keine Zustände, die erhalten bleiben</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>no bit of '%1' given</source>
-        <translation>kein Bit von '%1' angegeben</translation>
+        <location line="+3"/>
+        <source>no bit of &apos;%1&apos; given</source>
+        <translation>kein Bit von &apos;%1&apos; angegeben</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>'%1' is not a bit of '%2'</source>
-        <translation>'%1' ist kein Bit von '%2'</translation>
+        <location line="+5"/>
+        <source>&apos;%1&apos; is not a bit of &apos;%2&apos;</source>
+        <translation>&apos;%1&apos; ist kein Bit von &apos;%2&apos;</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>'%1.%2' is %3 bits wide; write the whole word</source>
-        <translation>'%1.%2' ist %3 Bit breit; schreiben Sie das ganze Wort</translation>
+        <location line="+2"/>
+        <source>&apos;%1.%2&apos; is %3 bits wide; write the whole word</source>
+        <translation>&apos;%1.%2&apos; ist %3 Bit breit; schreiben Sie das ganze Wort</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>'%1.%2' is the activation bit, which every write sets</source>
-        <translation>'%1.%2' ist das Aktivierungsbit, das jeder Schreibvorgang setzt</translation>
+        <location line="+2"/>
+        <source>&apos;%1.%2&apos; is the activation bit, which every write sets</source>
+        <translation>&apos;%1.%2&apos; ist das Aktivierungsbit, das jeder Schreibvorgang setzt</translation>
     </message>
     <message>
-        <location line="+10" />
-        <source>the device does not report the state of %1 of '%2', which a write of the word sets too: give every bit, or write the whole word</source>
-        <translation>das Gerät meldet den Zustand von %1 von '%2' nicht, den ein Schreiben des Wortes ebenfalls setzt: Geben Sie jedes Bit an oder schreiben Sie das ganze Wort</translation>
+        <location line="+10"/>
+        <source>the device does not report the state of %1 of &apos;%2&apos;, which a write of the word sets too: give every bit, or write the whole word</source>
+        <translation>das Gerät meldet den Zustand von %1 von &apos;%2&apos; nicht, den ein Schreiben des Wortes ebenfalls setzt: Geben Sie jedes Bit an oder schreiben Sie das ganze Wort</translation>
     </message>
 </context>
 <context>
     <name>jumo::BroadcastClearance</name>
     <message>
-        <location filename="../lib/bus/broadcastclearance.cpp" line="+17" />
+        <location filename="../lib/bus/broadcastclearance.cpp" line="+17"/>
         <source>not broadcast: address %1 answers as %2, and the words of %3 mean something else to it</source>
         <translation>nicht rundgesendet: an Adresse %1 antwortet ein %2, und die Wörter von %3 bedeuten für ihn etwas anderes</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>not broadcast: a device of no known family answers at address %1</source>
         <translation>nicht rundgesendet: an Adresse %1 antwortet ein Gerät keiner bekannten Familie</translation>
     </message>
@@ -158,52 +158,57 @@ Handbuch %6: "%7"</translation>
 <context>
     <name>jumo::BroadcastGate</name>
     <message>
-        <location filename="../app/cli/broadcastgate.cpp" line="+24" />
+        <location filename="../app/cli/broadcastgate.cpp" line="+25"/>
         <source>For a broadcast: scan addresses %1..%2 first and send only if every device found is of the family; it is read back from them unless --verify names some.</source>
         <translation>Für einen Broadcast: zuerst die Adressen %1..%2 absuchen und nur senden, wenn jedes gefundene Gerät zur Familie gehört; zurückgelesen wird von ihnen, sofern --verify keine nennt.</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>For a broadcast: state that every device on the line is of this family (recorded in the audit log).</source>
         <translation>Für einen Broadcast: erklären, dass jedes Gerät an der Leitung zu dieser Familie gehört (im Audit-Protokoll vermerkt).</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>family</source>
         <translation>Familie</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>--line-has-only names %1, the broadcast is for %2</source>
         <translation>--line-has-only nennt %1, der Broadcast gilt %2</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>a broadcast reaches every device on the line, and the words of %1 mean something else to other families: give --scan-first to scan the line for other devices first, or --line-has-only %1 if you know there are none</source>
         <translation>ein Broadcast erreicht jedes Gerät an der Leitung, und die Wörter von %1 bedeuten für andere Familien etwas anderes: --scan-first sucht die Leitung zuerst nach anderen Geräten ab, --line-has-only %1 erklärt, dass es keine gibt</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>a broadcast is not answered: name the devices to read it back from with --verify</source>
         <translation>ein Broadcast wird nicht beantwortet: nennen Sie mit --verify die Geräte, von denen er zurückgelesen wird</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+13"/>
+        <source>no broadcast through a Modbus TCP gateway: what a gateway makes of address 0 differs from gateway to gateway; write to each device instead</source>
+        <translation>kein Broadcast über ein Modbus-TCP-Gateway: was ein Gateway mit Adresse 0 macht, ist von Gateway zu Gateway verschieden; schreiben Sie stattdessen jedes Gerät einzeln</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>the user stated that every device on the line is a %1 (--line-has-only %1)</source>
         <translation>der Benutzer hat erklärt, dass jedes Gerät an der Leitung ein %1 ist (--line-has-only %1)</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+16"/>
         <source>scanning address %1 of %2 before the broadcast</source>
         <translation>durchsuche Adresse %1 von %2 vor dem Broadcast</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+15"/>
         <source>not broadcast: the scan found no %1 at address %2 to read it back from</source>
         <translation>nicht rundgesendet: die Suche fand an Adresse %2 kein %1 zum Zurücklesen</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>not broadcast: the scan found no %1 on the line</source>
         <translation>nicht rundgesendet: die Suche fand kein %1 an der Leitung</translation>
     </message>
@@ -211,113 +216,113 @@ Handbuch %6: "%7"</translation>
 <context>
     <name>jumo::Bus</name>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+90" />
+        <location filename="../lib/bus/bus.cpp" line="+90"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
     <message>
-        <location filename="../lib/bus/requestdesk.cpp" line="+13" />
-        <location line="+109" />
+        <location filename="../lib/bus/requestdesk.cpp" line="+13"/>
+        <location line="+109"/>
         <source>read-only mode: %1 was not written</source>
         <translation>Nur-Lese-Modus: %1 wurde nicht geschrieben</translation>
     </message>
     <message>
-        <location line="-105" />
-        <location line="+167" />
+        <location line="-105"/>
+        <location line="+167"/>
         <source>unknown device</source>
         <translation>unbekanntes Gerät</translation>
     </message>
     <message>
-        <location line="-163" />
-        <location line="+170" />
-        <source>'%1' is not an entry of %2</source>
-        <translation>'%1' ist kein Eintrag von %2</translation>
+        <location line="-163"/>
+        <location line="+170"/>
+        <source>&apos;%1&apos; is not an entry of %2</source>
+        <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
     <message>
-        <location line="-156" />
+        <location line="-156"/>
         <source>not written: %1</source>
         <translation>nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>not written: %1 is not yet confirmed to be a %2 (its identity is checked when it answers)</source>
         <translation>nicht geschrieben: %1 ist noch nicht als %2 bestätigt (die Identität wird geprüft, sobald das Gerät antwortet)</translation>
     </message>
     <message>
-        <location line="+23" />
-        <source>'%1' needs more words than one write may carry</source>
-        <translation>'%1' benötigt mehr Wörter, als eine Schreibanfrage umfassen darf</translation>
+        <location line="+23"/>
+        <source>&apos;%1&apos; needs more words than one write may carry</source>
+        <translation>&apos;%1&apos; benötigt mehr Wörter, als eine Schreibanfrage umfassen darf</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="-9" />
-        <location line="+18" />
+        <location filename="../lib/bus/bus.cpp" line="-9"/>
+        <location line="+18"/>
         <source>the line was reopened</source>
         <translation>die Leitung wurde neu geöffnet</translation>
     </message>
     <message>
-        <location filename="../lib/bus/requestdesk.cpp" line="+4" />
-        <location line="+31" />
-        <location line="+70" />
+        <location filename="../lib/bus/requestdesk.cpp" line="+4"/>
+        <location line="+31"/>
+        <location line="+70"/>
         <source>not written: the line is not connected</source>
         <translation>nicht geschrieben: Die Leitung ist nicht verbunden</translation>
     </message>
     <message>
-        <location line="-39" />
-        <source>not broadcast: a Modbus TCP gateway's handling of address 0 differs from gateway to gateway; write to each device instead</source>
+        <location line="-39"/>
+        <source>not broadcast: a Modbus TCP gateway&apos;s handling of address 0 differs from gateway to gateway; write to each device instead</source>
         <translation>kein Broadcast: was ein Modbus-TCP-Gateway mit Adresse 0 macht, ist von Gateway zu Gateway verschieden; schreiben Sie stattdessen jedes Gerät einzeln</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>not broadcast: the line also has a %1 device at address %2, which would take the same words as something else</source>
         <translation>kein Broadcast: an der Leitung hängt auch ein Gerät der Familie %1 an Adresse %2, das dieselben Wörter als etwas anderes übernehmen würde</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>not broadcast: %1 is not confirmed to be a %2</source>
         <translation>nicht als Broadcast gesendet: %1 ist nicht als %2 bestätigt</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>no %1 device on this line to read a broadcast back from</source>
         <translation>kein Gerät der Familie %1 an dieser Leitung, von dem ein Broadcast zurückgelesen werden kann</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+24"/>
         <source>read-only mode: nothing is written</source>
         <translation>Nur-Lese-Modus: Es wird nichts geschrieben</translation>
     </message>
     <message>
-        <location line="+12" />
-        <source>'%1' is stored in EEPROM, which wears out after about 10,000 writes: it is never rewritten cyclically</source>
-        <translation>'%1' ist im EEPROM gespeichert, das nach etwa 10.000 Schreibvorgängen verschleißt: Es wird nie zyklisch neu geschrieben</translation>
+        <location line="+12"/>
+        <source>&apos;%1&apos; is stored in EEPROM, which wears out after about 10,000 writes: it is never rewritten cyclically</source>
+        <translation>&apos;%1&apos; ist im EEPROM gespeichert, das nach etwa 10.000 Schreibvorgängen verschleißt: Es wird nie zyklisch neu geschrieben</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>only RAM values can be held, '%1' is not one</source>
-        <translation>nur RAM-Werte können gehalten werden, '%1' gehört nicht dazu</translation>
+        <location line="+3"/>
+        <source>only RAM values can be held, &apos;%1&apos; is not one</source>
+        <translation>nur RAM-Werte können gehalten werden, &apos;%1&apos; gehört nicht dazu</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>not held: %1 is not confirmed to be a %2</source>
         <translation>nicht gehalten: %1 ist nicht als %2 bestätigt</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+283" />
+        <location filename="../lib/bus/bus.cpp" line="+283"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+32"/>
         <source>read-only mode</source>
         <translation>Nur-Lese-Modus</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>the device's identity is not confirmed</source>
+        <location line="+1"/>
+        <source>the device&apos;s identity is not confirmed</source>
         <translation>die Identität des Geräts ist nicht bestätigt</translation>
     </message>
     <message>
-        <location line="+76" />
+        <location line="+76"/>
         <source>exception %1</source>
         <translation>Exception %1</translation>
     </message>
@@ -325,14 +330,14 @@ Handbuch %6: "%7"</translation>
 <context>
     <name>jumo::CommandLineTool</name>
     <message>
-        <location filename="../app/cli/commandlinetool.cpp" line="+23" />
+        <location filename="../app/cli/commandlinetool.cpp" line="+23"/>
         <source>Usage: jumoctl COMMAND [options] [arguments]
 
 Commissioning and monitoring of JUMO power and process controllers over Modbus RTU.
 
 Commands on the register maps:
   families                 list the device families and their map files
-  map FAMILY --csv|--json  print a family's register map
+  map FAMILY --csv|--json  print a family&apos;s register map
   plan FAMILY [ID...]      show the read requests for entries of a family
   decode FAMILY ID WORD... decode raw register words as an entry
 
@@ -344,7 +349,7 @@ Commands on a serial line (all take --port PATH --baud N --format 8N1|8E1|8O1|8N
 its identity registers must confirm FAMILY (exit code 4 if not; --no-identify skips it):
   scan [--from A --to B]   find devices and name their family
   read DEVICE ID...        read entries once
-  write DEVICE ID=VALUE... write entries, verified by reading them back; a bit field's
+  write DEVICE ID=VALUE... write entries, verified by reading them back; a bit field&apos;s
                            ID=VALUE replaces every bit, ID.BIT=0|1 changes one bit only
   dump DEVICE [--json]     read every readable entry once
   monitor DEVICE... --jsonl|--csv [--interval MS] [--cycles N]
@@ -355,7 +360,7 @@ its identity registers must confirm FAMILY (exit code 4 if not; --no-identify sk
                            write what differs, each verified by read-back
   report DEVICE FILE       commissioning report as PDF (.pdf) or HTML
 
-'jumoctl COMMAND --help' describes a command.
+&apos;jumoctl COMMAND --help&apos; describes a command.
 </source>
         <translation>Aufruf: jumoctl COMMAND [Optionen] [Argumente]
 
@@ -386,50 +391,50 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
                            Abweichendes schreiben, jeweils durch Rücklesen geprüft
   report DEVICE FILE       Inbetriebnahmebericht als PDF (.pdf) oder HTML
 
-'jumoctl COMMAND --help' beschreibt einen Befehl.
+&apos;jumoctl COMMAND --help&apos; beschreibt einen Befehl.
 </translation>
     </message>
     <message>
-        <location line="+54" />
+        <location line="+54"/>
         <source>jumoctl: the output could not be written: %1</source>
         <translation>jumoctl: die Ausgabe konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>write failed</source>
         <translation>Schreiben fehlgeschlagen</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+32"/>
         <source>warning: refused map file: %1</source>
         <translation>Warnung: Map-Datei abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+13" />
-        <source>jumoctl: unknown command '%1'</source>
-        <translation>jumoctl: unbekannter Befehl '%1'</translation>
+        <location line="+13"/>
+        <source>jumoctl: unknown command &apos;%1&apos;</source>
+        <translation>jumoctl: unbekannter Befehl &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+0" />
-        <source>Try 'jumoctl --help'.</source>
-        <translation>Siehe 'jumoctl --help'.</translation>
+        <location line="+0"/>
+        <source>Try &apos;jumoctl --help&apos;.</source>
+        <translation>Siehe &apos;jumoctl --help&apos;.</translation>
     </message>
 </context>
 <context>
     <name>jumo::CommandParser</name>
     <message>
-        <location filename="../app/cli/commandparser.cpp" line="+19" />
+        <location filename="../app/cli/commandparser.cpp" line="+19"/>
         <source>jumoctl %1: %2</source>
         <translation>jumoctl %1: %2</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+18" />
-        <source>Try 'jumoctl %1 --help'.</source>
-        <translation>Siehe 'jumoctl %1 --help'.</translation>
+        <location line="+1"/>
+        <location line="+18"/>
+        <source>Try &apos;jumoctl %1 --help&apos;.</source>
+        <translation>Siehe &apos;jumoctl %1 --help&apos;.</translation>
     </message>
     <message>
-        <location line="-1" />
+        <location line="-1"/>
         <source>jumoctl %1: wrong number of arguments</source>
         <translation>jumoctl %1: falsche Anzahl von Argumenten</translation>
     </message>
@@ -437,365 +442,365 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
 <context>
     <name>jumo::CommissioningReport</name>
     <message>
-        <location filename="../lib/commissioning/commissioningreport.cpp" line="+375" />
+        <location filename="../lib/commissioning/commissioningreport.cpp" line="+375"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="-157" />
-        <location line="+255" />
+        <location line="-157"/>
+        <location line="+255"/>
         <source>Commissioning report</source>
         <translation>Inbetriebnahmebericht</translation>
     </message>
     <message>
-        <location line="-338" />
+        <location line="-338"/>
         <source>%1 (none set)</source>
         <translation>%1 (keines gesetzt)</translation>
     </message>
     <message>
-        <location line="+43" />
+        <location line="+43"/>
         <source>(empty)</source>
         <translation>(leer)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1 (stale)</source>
         <translation>%1 (veraltet)</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>current</source>
         <translation>aktuell</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>stale: not read in the last cycle</source>
         <translation>veraltet: im letzten Zyklus nicht gelesen</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>%1; last known: %2</source>
         <translation>%1; zuletzt bekannt: %2</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+15"/>
         <source>Values without a unit are in a unit set on the device: %1.</source>
         <translation>Werte ohne Einheit sind in einer am Gerät eingestellten Einheit: %1.</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+15"/>
         <source>%1, address %2, %3</source>
         <translation>%1, Adresse %2, %3</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>%1 baud, %2</source>
         <translation>%1 Baud, %2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>, port %1</source>
         <translation>, Schnittstelle %1</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Site</source>
         <translation>Standort</translation>
     </message>
     <message>
-        <location line="+0" />
-        <location line="+218" />
+        <location line="+0"/>
+        <location line="+218"/>
         <source>Date</source>
         <translation>Datum</translation>
     </message>
     <message>
-        <location line="-217" />
+        <location line="-217"/>
         <source>Cabinet</source>
         <translation>Schaltschrank</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Engineer</source>
         <translation>Inbetriebnehmer</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Device tag</source>
         <translation>Kennzeichen</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Address</source>
         <translation>Adresse</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Line</source>
         <translation>Leitung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Software</source>
         <translation>Software</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+16"/>
         <source>Identity</source>
         <translation>Identität</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>The family has no identity registers.</source>
         <translation>Die Gerätefamilie hat keine Identitätsregister.</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+22"/>
         <source>The family has no parameters.</source>
         <translation>Die Gerätefamilie hat keine Parameter.</translation>
     </message>
     <message>
-        <location line="+8" />
-        <location line="+2" />
-        <location line="+134" />
+        <location line="+8"/>
+        <location line="+2"/>
+        <location line="+134"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location line="-136" />
+        <location line="-136"/>
         <source>Default</source>
         <translation>Standardwert</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+24"/>
         <source>Default: the factory setting, or the value after power on, where the manual gives one; %1 marks a value that differs from it. Differing: %2 of %3 compared.</source>
         <translation>Standardwert: die Werkseinstellung oder der Wert nach dem Einschalten, wo das Handbuch einen nennt; %1 kennzeichnet einen davon abweichenden Wert. Abweichend: %2 von %3 verglichenen.</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>The manual gives no default values for these parameters: none are compared.</source>
         <translation>Das Handbuch nennt für diese Parameter keine Standardwerte: Es wird keiner verglichen.</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+16"/>
         <source>The family has no live values.</source>
         <translation>Die Gerätefamilie hat keine Live-Werte.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>As read at %1. A value that could not be read shows %2 and why.</source>
         <translation>Gelesen am %1. Ein Wert, der nicht gelesen werden konnte, zeigt %2 und den Grund.</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>State</source>
         <translation>Zustand</translation>
     </message>
     <message>
-        <location line="+29" />
+        <location line="+29"/>
         <source>%1, bit %2</source>
         <translation>%1, Bit %2</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>alarm</source>
         <translation>Alarm</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>warning</source>
         <translation>Warnung</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Active alarms and warnings</source>
         <translation>Aktive Alarme und Warnungen</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Unknown: %1 could not be read; their alarms are not known.</source>
         <translation>Unbekannt: %1 konnte nicht gelesen werden; deren Alarme sind nicht bekannt.</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>None active.</source>
         <translation>Keiner aktiv.</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>None of the others active.</source>
         <translation>Von den übrigen keiner aktiv.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Alarm</source>
         <translation>Alarm</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Where</source>
         <translation>Wo</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+25"/>
         <source>Writes since %1</source>
         <translation>Schreibvorgänge seit %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Writes</source>
         <translation>Schreibvorgänge</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>None.</source>
         <translation>Keine.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>confirmed by read-back</source>
         <translation>durch Rücklesen bestätigt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>accepted (cannot be read back)</source>
         <translation>angenommen (nicht rücklesbar)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>read back another value</source>
         <translation>anderer Wert zurückgelesen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>refused by the device</source>
         <translation>vom Gerät abgelehnt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>unknown: the answer was lost</source>
         <translation>unbekannt: die Antwort ging verloren</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>not verified</source>
         <translation>nicht überprüft</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>not sent</source>
         <translation>nicht gesendet</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>not sent: read-only mode</source>
         <translation>nicht gesendet: Nur-Lese-Modus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>not sent: invalid value</source>
         <translation>nicht gesendet: ungültiger Wert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>identity not checked</source>
         <translation>Identität nicht geprüft</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>broadcast acknowledged</source>
         <translation>Broadcast bestätigt</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Outcome</source>
         <translation>Ergebnis</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+20"/>
         <source>Signatures</source>
         <translation>Unterschriften</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The device was commissioned with the parameters above.</source>
         <translation>Das Gerät wurde mit den obigen Parametern in Betrieb genommen.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Commissioning engineer</source>
         <translation>Inbetriebnehmer</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Customer</source>
         <translation>Kunde</translation>
     </message>
     <message>
-        <location line="+4" />
-        <location line="+4" />
+        <location line="+4"/>
+        <location line="+4"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location line="-2" />
+        <location line="-2"/>
         <source>Signature</source>
         <translation>Unterschrift</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>Commissioning report %1</source>
         <translation>Inbetriebnahmebericht %1</translation>
     </message>
     <message>
-        <location line="-130" />
+        <location line="-130"/>
         <source>Signal</source>
         <translation>Signal</translation>
     </message>
     <message>
-        <location line="-50" />
-        <location line="+2" />
-        <location line="+48" />
+        <location line="-50"/>
+        <location line="+2"/>
+        <location line="+48"/>
         <source>Value</source>
         <translation>Wert</translation>
     </message>
     <message>
-        <location line="-58" />
-        <location line="+30" />
+        <location line="-58"/>
+        <location line="+30"/>
         <source>Parameters</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+20"/>
         <source>Live values</source>
         <translation>Live-Werte</translation>
     </message>
     <message>
-        <location line="+94" />
+        <location line="+94"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Old value</source>
         <translation>Alter Wert</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>New value</source>
         <translation>Neuer Wert</translation>
     </message>
@@ -803,18 +808,18 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
 <context>
     <name>jumo::ConnectionBar</name>
     <message>
-        <location filename="../ui/connectionbar.cpp" line="+21" />
-        <location line="+117" />
+        <location filename="../ui/connectionbar.cpp" line="+21"/>
+        <location line="+117"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-106" />
+        <location line="-106"/>
         <source>/dev/ttyUSB0 or tcp://HOST</source>
         <translation>/dev/ttyUSB0 oder tcp://HOST</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The line: a serial port (listed, or a typed path);
 tcp://HOST[:PORT] for a Modbus TCP gateway (port 502 by default,
 the device address is the unit id);
@@ -827,57 +832,57 @@ rtu+tcp://HOST:PORT für RTU-Telegramme über einen seriellen Geräteserver.
 Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>Refresh</source>
         <translation>Aktualisieren</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>List the serial ports again</source>
         <translation>Serielle Schnittstellen erneut auflisten</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+15"/>
         <source>&amp;Port:</source>
         <translation>&amp;Port:</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>&amp;Baud:</source>
         <translation>&amp;Baud:</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Fo&amp;rmat:</source>
         <translation>Fo&amp;rmat:</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Disconnected</source>
         <translation>Getrennt</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>Port: %1</source>
         <translation>Schnittstelle: %1</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Device now: %1</source>
         <translation>Gerätedatei jetzt: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Manufacturer: %1</source>
         <translation>Hersteller: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Serial number: %1</source>
         <translation>Seriennummer: %1</translation>
     </message>
     <message>
-        <location line="+53" />
+        <location line="+53"/>
         <source>Disconnect</source>
         <translation>Trennen</translation>
     </message>
@@ -885,144 +890,144 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
 <context>
     <name>jumo::ControlRow</name>
     <message>
-        <location filename="../ui/controlrow.cpp" line="+59" />
+        <location filename="../ui/controlrow.cpp" line="+59"/>
         <source>Precondition: %1</source>
         <translation>Voraussetzung: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Stored in EEPROM: about 10,000 write cycles, write only when needed.</source>
         <translation>Im EEPROM gespeichert: etwa 10.000 Schreibzyklen, nur bei Bedarf schreiben.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Stored in RAM: lost when the device is switched off.</source>
         <translation>Im RAM gespeichert: geht beim Ausschalten des Geräts verloren.</translation>
     </message>
     <message>
-        <location line="+18" />
-        <source>send the command "%1"</source>
-        <translation>den Befehl "%1" senden</translation>
+        <location line="+18"/>
+        <source>send the command &quot;%1&quot;</source>
+        <translation>den Befehl &quot;%1&quot; senden</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>Off</source>
         <translation>Aus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>On</source>
         <translation>Ein</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>%1 to %2</source>
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>Write</source>
         <translation>Schreiben</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Write all bits</source>
         <translation>Alle Bits schreiben</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>Back to the device's own value</source>
+        <location line="+6"/>
+        <source>Back to the device&apos;s own value</source>
         <translation>Zurück zum geräteeigenen Wert</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>hand %1 back to the device</source>
         <translation>die Vorgabe für %1 aufheben</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+32"/>
         <source>Pending: %1</source>
         <translation>Ausstehend: %1</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Confirmed: %1</source>
         <translation>Bestätigt: %1</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Refused: %1</source>
         <translation>Abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Unknown, check the device: %1</source>
         <translation>Unbekannt, bitte am Gerät prüfen: %1</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+22"/>
         <source>Write-only: the lamps show the states the device reports elsewhere.</source>
         <translation>Nur schreibbar: Die Lampen zeigen die Zustände, die das Gerät an anderer Stelle meldet.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Write-only: the device cannot report it.</source>
         <translation>Nur schreibbar: Das Gerät kann den Wert nicht melden.</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>Device: %1</source>
         <translation>Gerät: %1</translation>
     </message>
     <message>
-        <location line="+59" />
-        <source>'%1' is no number that can be read one way only; write it without thousands separators</source>
+        <location line="+59"/>
+        <source>&apos;%1&apos; is no number that can be read one way only; write it without thousands separators</source>
         <translation>„%1“ ist keine eindeutig lesbare Zahl; bitte ohne Tausenderpunkte schreiben</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>write %1 = %2</source>
         <translation>%1 = %2 schreiben</translation>
     </message>
     <message>
-        <location line="+42" />
-        <source>switch "%1" on</source>
+        <location line="+42"/>
+        <source>switch &quot;%1&quot; on</source>
         <translation>„%1“ einschalten</translation>
     </message>
     <message>
-        <location line="+0" />
-        <source>switch "%1" off</source>
+        <location line="+0"/>
+        <source>switch &quot;%1&quot; off</source>
         <translation>„%1“ ausschalten</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1 on</source>
         <translation>%1 ein</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>%1 off</source>
         <translation>%1 aus</translation>
     </message>
     <message>
-        <location line="-94" />
+        <location line="-94"/>
         <source>Read-only mode: nothing is written to the devices.</source>
         <translation>Nur-Lese-Modus: Es wird nichts auf die Geräte geschrieben.</translation>
     </message>
     <message>
-        <location line="+65" />
+        <location line="+65"/>
         <source>Confirm write</source>
         <translation>Schreiben bestätigen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Do you want to %1 on the device?
 This changes what the device drives.</source>
         <translation>Möchten Sie am Gerät %1?
 Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
-        <location line="-10" />
+        <location line="-10"/>
         <source>Not written: %1</source>
         <translation>Nicht geschrieben: %1</translation>
     </message>
@@ -1030,19 +1035,19 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DataLogger</name>
     <message>
-        <location filename="../lib/logs/datalogger.cpp" line="+26" />
+        <location filename="../lib/logs/datalogger.cpp" line="+26"/>
         <source>choose at least one value, an interval of at least 100 ms and files of at least 1 KiB</source>
         <translation>mindestens einen Wert, ein Intervall von mindestens 100 ms und Dateien von mindestens 1 KiB wählen</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>cannot create the folder %1</source>
         <translation>der Ordner %1 kann nicht angelegt werden</translation>
     </message>
     <message>
-        <location line="+36" />
-        <location line="+15" />
-        <location line="+21" />
+        <location line="+36"/>
+        <location line="+15"/>
+        <location line="+21"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -1050,62 +1055,62 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DataLoggingDialog</name>
     <message>
-        <location filename="../ui/dataloggingdialog.cpp" line="+23" />
+        <location filename="../ui/dataloggingdialog.cpp" line="+23"/>
         <source>Data logging</source>
         <translation>Datenaufzeichnung</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+15"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source> MiB</source>
         <translation> MiB</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>all</source>
         <translation>alle</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source> newest files</source>
         <translation> neueste Dateien</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Stopped: %1</source>
         <translation>Angehalten: %1</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Interval:</source>
         <translation>Intervall:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>New file after:</source>
         <translation>Neue Datei nach:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Keep:</source>
         <translation>Behalten:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Folder:</source>
         <translation>Ordner:</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Values to log (a new file also starts each day):</source>
         <translation>Aufzuzeichnende Werte (jeden Tag beginnt auch eine neue Datei):</translation>
     </message>
     <message numerus="yes">
-        <location line="+13" />
+        <location line="+13"/>
         <source>Stopped; %n row(s) written.</source>
         <translation>
             <numerusform>Angehalten; %n Zeile geschrieben.</numerusform>
@@ -1113,22 +1118,22 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+15"/>
         <source>Not started: %1</source>
         <translation>Nicht gestartet: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Logging to %1</source>
         <translation>Aufzeichnung nach %1</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Stop logging</source>
         <translation>Aufzeichnung beenden</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Start logging</source>
         <translation>Aufzeichnung starten</translation>
     </message>
@@ -1136,17 +1141,17 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DemoLine</name>
     <message>
-        <location filename="../lib/sim/demoline.cpp" line="+20" />
+        <location filename="../lib/sim/demoline.cpp" line="+20"/>
         <source>the simulated line ended (socat stopped)</source>
         <translation>die simulierte Leitung ist beendet (socat wurde gestoppt)</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>the simulator cannot open %1: %2</source>
         <translation>der Simulator kann %1 nicht öffnen: %2</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>no temporary folder for the demo line</source>
         <translation>kein temporärer Ordner für die Demo-Leitung</translation>
     </message>
@@ -1154,58 +1159,58 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DevicePage</name>
     <message>
-        <location filename="../ui/devicepage.cpp" line="+29" />
+        <location filename="../ui/devicepage.cpp" line="+29"/>
         <source>Read-only mode: values are shown, nothing is written to the device.</source>
         <translation>Nur-Lese-Modus: Werte werden angezeigt, es wird nichts auf das Gerät geschrieben.</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+14"/>
         <source>Live values</source>
         <translation>Live-Werte</translation>
     </message>
     <message>
-        <location line="+3" />
-        <location line="+2" />
+        <location line="+3"/>
+        <location line="+2"/>
         <source>Alarms and status</source>
         <translation>Alarme und Status</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Alarms and status (%1)</source>
         <translation>Alarme und Status (%1)</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>Controls</source>
         <translation>Bedienung</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Parameters</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+14"/>
         <source>Program</source>
         <translation>Programm</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Trend</source>
         <translation>Trend</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+28"/>
         <source>Wrong device: %1. Its values are not shown and nothing is written to it until the device at this address is of the family it was added as.</source>
         <translation>Falsches Gerät: %1. Seine Werte werden nicht angezeigt und nichts wird geschrieben, bis das Gerät an dieser Adresse zu der Familie gehört, als die es hinzugefügt wurde.</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>Checking that the device at this address is of this family.</source>
         <translation>Es wird geprüft, ob das Gerät an dieser Adresse zu dieser Familie gehört.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Identity not confirmed: %1</source>
         <translation>Identität nicht bestätigt: %1</translation>
     </message>
@@ -1213,158 +1218,158 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DeviceTile</name>
     <message>
-        <location filename="../ui/devicetile.cpp" line="+48" />
+        <location filename="../ui/devicetile.cpp" line="+48"/>
         <source>%1 @ %2</source>
         <translation>%1 @ %2</translation>
     </message>
     <message>
-        <location line="+106" />
-        <location line="+130" />
-        <location line="+126" />
-        <location line="+205" />
+        <location line="+106"/>
+        <location line="+130"/>
+        <location line="+126"/>
+        <location line="+205"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="-438" />
+        <location line="-438"/>
         <source>Bar: %1 to %2 %3</source>
         <translation>Balken: %1 bis %2 %3</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+24"/>
         <source>Bar: 0 to %1 (nominal)</source>
         <translation>Balken: 0 bis %1 (Nennwert)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Bar: 0 to %1 (limit set on the device)</source>
         <translation>Balken: 0 bis %1 (am Gerät eingestellter Grenzwert)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>No bar: its scale, %1, is not above zero.</source>
         <translation>Kein Balken: Die Skala, %1, ist nicht größer als null.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>No bar: %1, a part of its scale, is not above zero.</source>
         <translation>Kein Balken: %1, ein Teil der Skala, ist nicht größer als null.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>No bar: the device reports %1, which the map gives no number.</source>
         <translation>Kein Balken: Das Gerät meldet %1, wofür die Registertabelle keine Zahl nennt.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>No bar: its scale is not known yet.</source>
         <translation>Kein Balken: Die Skala ist noch nicht bekannt.</translation>
     </message>
     <message>
-        <location line="+79" />
-        <location line="+11" />
+        <location line="+79"/>
+        <location line="+11"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>segment %1 of %2</source>
         <translation>Segment %1 von %2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1 left</source>
         <translation>noch %1</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>(beyond the scale)</source>
         <translation>(außerhalb der Skala)</translation>
     </message>
     <message>
-        <location line="+3" />
-        <location line="+389" />
+        <location line="+3"/>
+        <location line="+389"/>
         <source>Mode: %1</source>
         <translation>Betriebsart: %1</translation>
     </message>
     <message>
-        <location line="-387" />
-        <location line="+392" />
+        <location line="-387"/>
+        <location line="+392"/>
         <source>Program: %1</source>
         <translation>Programm: %1</translation>
     </message>
     <message>
-        <location line="-376" />
+        <location line="-376"/>
         <source>Wrong device</source>
         <translation>Falsches Gerät</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Line lost</source>
         <translation>Leitung verloren</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Not answering</source>
         <translation>Antwortet nicht</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Alarm</source>
         <translation>Alarm</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Warning</source>
         <translation>Warnung</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Normal</source>
         <translation>Normal</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Checking</source>
         <translation>Prüfung</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Disconnected</source>
         <translation>Getrennt</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+34"/>
         <source>Online</source>
         <translation>Online</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Not answering since %1</source>
         <translation>Antwortet nicht seit %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Line lost since %1</source>
         <translation>Leitung verloren seit %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Line disconnected</source>
         <translation>Leitung getrennt</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Checking identity</source>
         <translation>Identität wird geprüft</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Wrong device since %1</source>
         <translation>Falsches Gerät seit %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+9" />
+        <location line="+9"/>
         <source>%n active alarm(s)</source>
         <translation>
             <numerusform>%n aktiver Alarm</numerusform>
@@ -1372,8 +1377,8 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message>
-        <location line="-59" />
-        <location line="+59" />
+        <location line="-59"/>
+        <location line="+59"/>
         <source>Alarms unknown</source>
         <translation>Alarme unbekannt</translation>
     </message>
@@ -1381,18 +1386,18 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::EventLog</name>
     <message>
-        <location filename="../lib/logs/eventlog.cpp" line="+158" />
+        <location filename="../lib/logs/eventlog.cpp" line="+158"/>
         <source>cannot write %1</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location line="+66" />
+        <location line="+66"/>
         <source>the file is replaced again and again</source>
         <translation>die Datei wird immer wieder ersetzt</translation>
     </message>
     <message>
-        <location line="-76" />
-        <location line="+76" />
+        <location line="-76"/>
+        <location line="+76"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -1400,7 +1405,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::EventLogModel</name>
     <message>
-        <location filename="../lib/models/eventlogmodel.cpp" line="+73" />
+        <location filename="../lib/models/eventlogmodel.cpp" line="+73"/>
         <source>unreadable record at byte %1 of %2</source>
         <translation>unlesbarer Eintrag bei Byte %1 von %2</translation>
     </message>
@@ -1408,7 +1413,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::EventLogReader</name>
     <message>
-        <location filename="../lib/logs/eventlogreader.cpp" line="+17" />
+        <location filename="../lib/logs/eventlogreader.cpp" line="+17"/>
         <source>cannot read %1</source>
         <translation>%1 kann nicht gelesen werden</translation>
     </message>
@@ -1416,12 +1421,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::EventLogScanner</name>
     <message>
-        <location filename="../lib/logs/eventlogscanner.cpp" line="+36" />
+        <location filename="../lib/logs/eventlogscanner.cpp" line="+36"/>
         <source>cannot read %1</source>
         <translation>%1 kann nicht gelesen werden</translation>
     </message>
     <message numerus="yes">
-        <location line="+136" />
+        <location line="+136"/>
         <source>%n record(s) exported to %1</source>
         <translation>
             <numerusform>%n Eintrag nach %1 exportiert</numerusform>
@@ -1432,38 +1437,38 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::EventLogView</name>
     <message>
-        <location filename="../ui/eventlogview.cpp" line="+39" />
+        <location filename="../ui/eventlogview.cpp" line="+39"/>
         <source>Filter: device, entry, kind, text...</source>
         <translation>Filter: Gerät, Eintrag, Art, Text...</translation>
     </message>
     <message>
-        <location line="-9" />
+        <location line="-9"/>
         <source>Export CSV...</source>
         <translation>CSV exportieren...</translation>
     </message>
     <message>
-        <location line="+19" />
-        <location line="+13" />
+        <location line="+19"/>
+        <location line="+13"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location line="-13" />
+        <location line="-13"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Exporting to %1...</source>
         <translation>Export nach %1...</translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+38"/>
         <source>Kept in %1</source>
         <translation>Gespeichert in %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+25" />
+        <location line="+25"/>
         <source>%n record(s)</source>
         <translation>
             <numerusform>%n Eintrag</numerusform>
@@ -1471,7 +1476,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+1" />
+        <location line="+1"/>
         <source>%n record(s) shown, reading older ones...</source>
         <translation>
             <numerusform>%n Eintrag angezeigt, ältere werden gelesen...</numerusform>
@@ -1479,7 +1484,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+1" />
+        <location line="+1"/>
         <source>the newest %n record(s); scroll down for older ones</source>
         <translation>
             <numerusform>der neueste Eintrag; nach unten blättern für ältere</numerusform>
@@ -1487,7 +1492,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+2" />
+        <location line="+2"/>
         <source>%n matching record(s)</source>
         <translation>
             <numerusform>%n passender Eintrag</numerusform>
@@ -1495,7 +1500,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+1" />
+        <location line="+1"/>
         <source>%n matching record(s) so far, searching...</source>
         <translation>
             <numerusform>bisher %n passender Eintrag, Suche läuft...</numerusform>
@@ -1503,7 +1508,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+1" />
+        <location line="+1"/>
         <source>the newest %n matching record(s); scroll down for older ones</source>
         <translation>
             <numerusform>der neueste passende Eintrag; nach unten blättern für ältere</numerusform>
@@ -1514,20 +1519,20 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::FamilyRegistry</name>
     <message>
-        <location filename="../lib/protocol/familyregistry.cpp" line="+48" />
-        <source>%1: family '%2' is defined by each of these files, so none of them is used</source>
-        <translation>%1: die Familie '%2' ist in jeder dieser Dateien definiert, daher wird keine davon verwendet</translation>
+        <location filename="../lib/protocol/familyregistry.cpp" line="+48"/>
+        <source>%1: family &apos;%2&apos; is defined by each of these files, so none of them is used</source>
+        <translation>%1: die Familie &apos;%2&apos; ist in jeder dieser Dateien definiert, daher wird keine davon verwendet</translation>
     </message>
 </context>
 <context>
     <name>jumo::FileSaver</name>
     <message>
-        <location filename="../lib/protocol/filesaver.cpp" line="+53" />
+        <location filename="../lib/protocol/filesaver.cpp" line="+53"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location line="-39" />
+        <location line="-39"/>
         <source>not a regular file</source>
         <translation>keine reguläre Datei</translation>
     </message>
@@ -1535,22 +1540,22 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::IdentityCheck</name>
     <message>
-        <location filename="../lib/bus/identitycheck.cpp" line="+68" />
+        <location filename="../lib/bus/identitycheck.cpp" line="+68"/>
         <source>%1: confirmed</source>
         <translation>%1: bestätigt</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1 refused: the device at address %2 is a %3 (%4), not a %5</source>
         <translation>%1 abgelehnt: das Gerät an Adresse %2 ist ein %3 (%4), kein %5</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>%1 refused: the device at address %2 answers, but its identity registers match no known family, so it is no %3</source>
         <translation>%1 abgelehnt: das Gerät an Adresse %2 antwortet, aber seine Identitätsregister passen zu keiner bekannten Familie, es ist also kein %3</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>%1: no answer at address %2, so its family cannot be confirmed</source>
         <translation>%1: keine Antwort an Adresse %2, die Familie kann nicht bestätigt werden</translation>
     </message>
@@ -1558,17 +1563,17 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::IdentityGate</name>
     <message>
-        <location filename="../app/cli/identitygate.cpp" line="+22" />
-        <source>Trust the named family without checking the device's identity registers (for devices whose identity cannot be read; the audit log records it).</source>
+        <location filename="../app/cli/identitygate.cpp" line="+22"/>
+        <source>Trust the named family without checking the device&apos;s identity registers (for devices whose identity cannot be read; the audit log records it).</source>
         <translation>Der genannten Familie vertrauen, ohne die Identitätsregister des Geräts zu prüfen (für Geräte, deren Identität nicht lesbar ist; das Audit-Protokoll vermerkt es).</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+19"/>
         <source>the family was not checked against the device (--no-identify)</source>
         <translation>die Familie wurde nicht am Gerät geprüft (--no-identify)</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+20"/>
         <source>nothing was read or written; --no-identify skips the check for a device whose identity registers cannot be read</source>
         <translation>nichts wurde gelesen oder geschrieben; --no-identify überspringt die Prüfung bei einem Gerät, dessen Identitätsregister nicht lesbar sind</translation>
     </message>
@@ -1576,7 +1581,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::IdentityPanel</name>
     <message>
-        <location filename="../ui/identitypanel.cpp" line="+44" />
+        <location filename="../ui/identitypanel.cpp" line="+44"/>
         <source>address %1</source>
         <translation>Adresse %1</translation>
     </message>
@@ -1584,7 +1589,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LedGrid</name>
     <message numerus="yes">
-        <location filename="../ui/ledgrid.cpp" line="+87" />
+        <location filename="../ui/ledgrid.cpp" line="+87"/>
         <source>%n active alarm(s)</source>
         <translation>
             <numerusform>%n aktiver Alarm</numerusform>
@@ -1592,171 +1597,171 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Alarms unknown: the device cannot be read</source>
         <translation>Alarme unbekannt: Das Gerät kann nicht gelesen werden</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>(stale: not read in the device's last cycle)</source>
+        <location line="+2"/>
+        <source>(stale: not read in the device&apos;s last cycle)</source>
         <translation>(veraltet: im letzten Zyklus des Geräts nicht gelesen)</translation>
     </message>
 </context>
 <context>
     <name>jumo::LineAddress</name>
     <message>
-        <location filename="../lib/bus/lineaddress.cpp" line="+19" />
+        <location filename="../lib/bus/lineaddress.cpp" line="+19"/>
         <source>no line address: give a serial port, tcp://HOST[:PORT] or rtu+tcp://HOST:PORT</source>
         <translation>keine Leitungsadresse: geben Sie eine serielle Schnittstelle, tcp://HOST[:PORT] oder rtu+tcp://HOST:PORT an</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>unknown line address scheme '%1://' in '%2': use tcp://HOST[:PORT] (Modbus TCP) or rtu+tcp://HOST:PORT (RTU over TCP)</source>
-        <translation>unbekanntes Schema '%1://' der Leitungsadresse '%2': verwenden Sie tcp://HOST[:PORT] (Modbus TCP) oder rtu+tcp://HOST:PORT (RTU über TCP)</translation>
+        <location line="+9"/>
+        <source>unknown line address scheme &apos;%1://&apos; in &apos;%2&apos;: use tcp://HOST[:PORT] (Modbus TCP) or rtu+tcp://HOST:PORT (RTU over TCP)</source>
+        <translation>unbekanntes Schema &apos;%1://&apos; der Leitungsadresse &apos;%2&apos;: verwenden Sie tcp://HOST[:PORT] (Modbus TCP) oder rtu+tcp://HOST:PORT (RTU über TCP)</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>'%1' has '%2' after the port: a line address is only HOST and PORT</source>
-        <translation>'%1' hat '%2' nach dem Port: eine Leitungsadresse besteht nur aus HOST und PORT</translation>
+        <location line="+7"/>
+        <source>&apos;%1&apos; has &apos;%2&apos; after the port: a line address is only HOST and PORT</source>
+        <translation>&apos;%1&apos; hat &apos;%2&apos; nach dem Port: eine Leitungsadresse besteht nur aus HOST und PORT</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>'%1': user names are not part of a line address</source>
-        <translation>'%1': Benutzernamen gehören nicht in eine Leitungsadresse</translation>
+        <location line="+2"/>
+        <source>&apos;%1&apos;: user names are not part of a line address</source>
+        <translation>&apos;%1&apos;: Benutzernamen gehören nicht in eine Leitungsadresse</translation>
     </message>
     <message>
-        <location line="+8" />
-        <source>'%1': an IPv6 address in brackets lacks its ']'</source>
-        <translation>'%1': einer IPv6-Adresse in Klammern fehlt ihre ']'</translation>
+        <location line="+8"/>
+        <source>&apos;%1&apos;: an IPv6 address in brackets lacks its &apos;]&apos;</source>
+        <translation>&apos;%1&apos;: einer IPv6-Adresse in Klammern fehlt ihre &apos;]&apos;</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>'%1': after ']' only ':PORT' may follow</source>
-        <translation>'%1': nach ']' darf nur ':PORT' folgen</translation>
+        <location line="+5"/>
+        <source>&apos;%1&apos;: after &apos;]&apos; only &apos;:PORT&apos; may follow</source>
+        <translation>&apos;%1&apos;: nach &apos;]&apos; darf nur &apos;:PORT&apos; folgen</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>'%1': write an IPv6 address in brackets, e.g. tcp://[::1]:502</source>
-        <translation>'%1': schreiben Sie eine IPv6-Adresse in Klammern, z. B. tcp://[::1]:502</translation>
+        <location line="+7"/>
+        <source>&apos;%1&apos;: write an IPv6 address in brackets, e.g. tcp://[::1]:502</source>
+        <translation>&apos;%1&apos;: schreiben Sie eine IPv6-Adresse in Klammern, z. B. tcp://[::1]:502</translation>
     </message>
     <message>
-        <location line="+10" />
-        <source>'%1' names no host</source>
-        <translation>'%1' nennt keinen Host</translation>
+        <location line="+10"/>
+        <source>&apos;%1&apos; names no host</source>
+        <translation>&apos;%1&apos; nennt keinen Host</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>'%1': '%2' is not a host name or address</source>
-        <translation>'%1': '%2' ist kein Hostname und keine Adresse</translation>
+        <location line="+2"/>
+        <source>&apos;%1&apos;: &apos;%2&apos; is not a host name or address</source>
+        <translation>&apos;%1&apos;: &apos;%2&apos; ist kein Hostname und keine Adresse</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>'%1' names no port: a serial device server has no standard port, give rtu+tcp://HOST:PORT</source>
-        <translation>'%1' nennt keinen Port: ein serieller Geräteserver hat keinen Standardport, geben Sie rtu+tcp://HOST:PORT an</translation>
+        <location line="+2"/>
+        <source>&apos;%1&apos; names no port: a serial device server has no standard port, give rtu+tcp://HOST:PORT</source>
+        <translation>&apos;%1&apos; nennt keinen Port: ein serieller Geräteserver hat keinen Standardport, geben Sie rtu+tcp://HOST:PORT an</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>'%1' has ':' but no port after it</source>
-        <translation>'%1' hat ':', aber keinen Port danach</translation>
+        <location line="+7"/>
+        <source>&apos;%1&apos; has &apos;:&apos; but no port after it</source>
+        <translation>&apos;%1&apos; hat &apos;:&apos;, aber keinen Port danach</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>'%1': the port must be a number 1..65535, not '%2'</source>
-        <translation>'%1': der Port muss eine Zahl von 1 bis 65535 sein, nicht '%2'</translation>
+        <location line="+2"/>
+        <source>&apos;%1&apos;: the port must be a number 1..65535, not &apos;%2&apos;</source>
+        <translation>&apos;%1&apos;: der Port muss eine Zahl von 1 bis 65535 sein, nicht &apos;%2&apos;</translation>
     </message>
 </context>
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+71" />
+        <location filename="../app/cli/linecommands.cpp" line="+71"/>
         <source>the audit log did not take a record: %1</source>
         <translation>das Audit-Protokoll hat einen Eintrag nicht aufgenommen: %1</translation>
     </message>
     <message>
-        <location line="+47" />
+        <location line="+47"/>
         <source>rate</source>
         <translation>Rate</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Data format: 8N1, 8E1, 8O1 or 8N2 (default 8N1).</source>
         <translation>Datenformat: 8N1, 8E1, 8O1 oder 8N2 (Standard 8N1).</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>format</source>
         <translation>Format</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Reply timeout in ms (default: derived from the baud rate and the device family).</source>
         <translation>Zeitüberschreitung für Antworten in ms (Standard: aus Baudrate und Gerätefamilie abgeleitet).</translation>
     </message>
     <message>
-        <location line="+0" />
-        <location line="+2" />
-        <location line="+503" />
+        <location line="+0"/>
+        <location line="+2"/>
+        <location line="+503"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-503" />
+        <location line="-503"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Retries after a lost reply (default 2).</source>
         <translation>Wiederholungen nach einer ausgebliebenen Antwort (Standard 2).</translation>
     </message>
     <message>
-        <location line="+0" />
-        <location line="+503" />
+        <location line="+0"/>
+        <location line="+503"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-489" />
+        <location line="-489"/>
         <source>--port is required</source>
         <translation>--port ist erforderlich</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+17"/>
         <source>unsupported baud rate or data format: %1 %2</source>
         <translation>Baudrate oder Datenformat nicht unterstützt: %1 %2</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>--timeout must be 10..60000 ms</source>
         <translation>--timeout muss 10..60000 ms sein</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>--min-response must be 0..500 ms</source>
         <translation>--min-response muss 0..500 ms sein</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>--retries must be 0..10</source>
         <translation>--retries muss 0..10 sein</translation>
     </message>
     <message>
-        <location line="+33" />
-        <source>'%1' is not a device: use FAMILY@ADDRESS, e.g. ipc300@1 (families: %2)</source>
-        <translation>'%1' ist kein Gerät: FAMILY@ADDRESS verwenden, z. B. ipc300@1 (Gerätefamilien: %2)</translation>
+        <location line="+33"/>
+        <source>&apos;%1&apos; is not a device: use FAMILY@ADDRESS, e.g. ipc300@1 (families: %2)</source>
+        <translation>&apos;%1&apos; ist kein Gerät: FAMILY@ADDRESS verwenden, z. B. ipc300@1 (Gerätefamilien: %2)</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>device address %1 is outside 1..255</source>
         <translation>Geräteadresse %1 liegt außerhalb von 1..255</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>a %1 cannot have address %2: its addresses are %3..%4</source>
         <translation>ein %1 kann nicht Adresse %2 haben: seine Adressen sind %3..%4</translation>
     </message>
     <message numerus="yes">
-        <location line="+32" />
+        <location line="+32"/>
         <source>%n device(s) found before the scan stopped</source>
         <translation>
             <numerusform>%n Gerät gefunden, bevor die Suche endete</numerusform>
@@ -1764,7 +1769,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+5" />
+        <location line="+5"/>
         <source>%n poll cycle(s) printed</source>
         <translation>
             <numerusform>%n Abfragezyklus ausgegeben</numerusform>
@@ -1772,13 +1777,13 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message>
-        <location line="+4" />
-        <location line="+18" />
+        <location line="+4"/>
+        <location line="+18"/>
         <source>nothing was written</source>
         <translation>nichts wurde geschrieben</translation>
     </message>
     <message numerus="yes">
-        <location line="-15" />
+        <location line="-15"/>
         <source>%1 of %n write(s) done</source>
         <translation>
             <numerusform>%1 von %n Schreibvorgang erledigt</numerusform>
@@ -1786,7 +1791,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+2" />
+        <location line="+2"/>
         <source> (%n restored and verified)</source>
         <translation>
             <numerusform> (%n wiederhergestellt und geprüft)</numerusform>
@@ -1794,12 +1799,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>; %1 was being written: its outcome is unknown, check the device</source>
         <translation>; %1 wurde gerade geschrieben: das Ergebnis ist unbekannt, bitte am Gerät prüfen</translation>
     </message>
     <message numerus="yes">
-        <location line="+3" />
+        <location line="+3"/>
         <source>; %n not written</source>
         <translation>
             <numerusform>; %n nicht geschrieben</numerusform>
@@ -1807,79 +1812,79 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>no backup saved</source>
         <translation>keine Sicherung gespeichert</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>no report written</source>
         <translation>kein Bericht geschrieben</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>terminated: %1</source>
         <translation>beendet: %1</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>interrupted: %1</source>
         <translation>abgebrochen: %1</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>Finds devices on the line and names their family.</source>
         <translation>Sucht Geräte an der Leitung und benennt ihre Gerätefamilie.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>First address (default 1).</source>
         <translation>Erste Adresse (Standard 1).</translation>
     </message>
     <message>
-        <location line="-193" />
-        <location line="+193" />
-        <location line="+1" />
+        <location line="-193"/>
+        <location line="+193"/>
+        <location line="+1"/>
         <source>address</source>
         <translation>Adresse</translation>
     </message>
     <message>
-        <location line="-198" />
-        <source>The line (required): a serial port (its /dev/serial/by-id name, which 'jumoctl ports' lists, or /dev/ttyUSB0, say), tcp://HOST[:PORT] for a Modbus TCP gateway (port 502 by default; the device address is the unit id) or rtu+tcp://HOST:PORT for raw RTU through a serial device server.</source>
-        <translation>Die Leitung (erforderlich): eine serielle Schnittstelle (ihr Name unter /dev/serial/by-id, den 'jumoctl ports' auflistet, oder etwa /dev/ttyUSB0), tcp://HOST[:PORT] für ein Modbus-TCP-Gateway (Port 502, wenn keiner angegeben ist; die Geräteadresse ist die Unit-ID) oder rtu+tcp://HOST:PORT für reines RTU über einen seriellen Geräteserver.</translation>
+        <location line="-198"/>
+        <source>The line (required): a serial port (its /dev/serial/by-id name, which &apos;jumoctl ports&apos; lists, or /dev/ttyUSB0, say), tcp://HOST[:PORT] for a Modbus TCP gateway (port 502 by default; the device address is the unit id) or rtu+tcp://HOST:PORT for raw RTU through a serial device server.</source>
+        <translation>Die Leitung (erforderlich): eine serielle Schnittstelle (ihr Name unter /dev/serial/by-id, den &apos;jumoctl ports&apos; auflistet, oder etwa /dev/ttyUSB0), tcp://HOST[:PORT] für ein Modbus-TCP-Gateway (Port 502, wenn keiner angegeben ist; die Geräteadresse ist die Unit-ID) oder rtu+tcp://HOST:PORT für reines RTU über einen seriellen Geräteserver.</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>Baud rate: 4800, 9600, 19200 or 38400 (default 9600); behind a gateway, its serial side's (it sets the timing).</source>
+        <location line="+6"/>
+        <source>Baud rate: 4800, 9600, 19200 or 38400 (default 9600); behind a gateway, its serial side&apos;s (it sets the timing).</source>
         <translation>Baudrate: 4800, 9600, 19200 oder 38400 (Standard 9600); hinter einem Gateway die seiner seriellen Seite (sie bestimmt das Zeitverhalten).</translation>
     </message>
     <message>
-        <location line="+192" />
+        <location line="+192"/>
         <source>Last address (default 247).</source>
         <translation>Letzte Adresse (Standard 247).</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>--from and --to must be addresses 1..255, from &lt;= to</source>
         <translation>--from und --to müssen Adressen 1..255 sein, from &lt;= to</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>scanning address %1 (%2 of %3)</source>
         <translation>Adresse %1 wird abgefragt (%2 von %3)</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>address %1 answers as %2, which every %2 does whatever its own address: not listed</source>
         <translation>Adresse %1 antwortet als %2, wie es jeder %2 unabhängig von seiner eigenen Adresse tut: nicht aufgeführt</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>address %1 answers, but matches no known family</source>
         <translation>Adresse %1 antwortet, passt aber zu keiner bekannten Gerätefamilie</translation>
     </message>
     <message numerus="yes">
-        <location line="+3" />
+        <location line="+3"/>
         <source>%n device(s) found</source>
         <translation>
             <numerusform>%n Gerät gefunden</numerusform>
@@ -1887,142 +1892,142 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+36"/>
         <source>exception %1: %2</source>
         <translation>Exception %1: %2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>not available on this device (exception 2)</source>
         <translation>auf diesem Gerät nicht vorhanden (Exception 2)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>no answer</source>
         <translation>keine Antwort</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+14"/>
         <source>Reads every readable entry of a device once.</source>
         <translation>Liest jeden lesbaren Eintrag eines Geräts einmal.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Reads entries of a device once.</source>
         <translation>Liest Einträge eines Geräts einmal.</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>JSON array of {family, address, id, label, register, value, unit, status}.</source>
         <translation>JSON-Array aus {family, address, id, label, register, value, unit, status}.</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+393" />
-        <location line="+159" />
+        <location line="+1"/>
+        <location line="+393"/>
+        <location line="+159"/>
         <source>FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="-550" />
+        <location line="-550"/>
         <source>Entry ids.</source>
         <translation>Kennungen der Einträge.</translation>
     </message>
     <message>
-        <location line="+17" />
-        <source>'%1' is not an entry of %2</source>
-        <translation>'%1' ist kein Eintrag von %2</translation>
+        <location line="+17"/>
+        <source>&apos;%1&apos; is not an entry of %2</source>
+        <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>'%1' is write-only</source>
-        <translation>'%1' ist nur schreibbar</translation>
+        <location line="+4"/>
+        <source>&apos;%1&apos; is write-only</source>
+        <translation>&apos;%1&apos; ist nur schreibbar</translation>
     </message>
     <message>
-        <location line="+15" />
-        <location line="+17" />
+        <location line="+15"/>
+        <location line="+17"/>
         <source>some entries could not be read</source>
         <translation>einige Einträge konnten nicht gelesen werden</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+23"/>
         <source>For a broadcast (FAMILY@0): the addresses to read it back from, e.g. 1,2,5.</source>
         <translation>Bei einem Broadcast (FAMILY@0): die Adressen, von denen zurückgelesen wird, z. B. 1,2,5.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>addresses</source>
         <translation>Adressen</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>FAMILY@ADDRESS, or FAMILY@0 for a broadcast.</source>
         <translation>FAMILY@ADDRESS oder FAMILY@0 für einen Broadcast.</translation>
     </message>
     <message>
-        <location line="+14" />
-        <source>'%1' is not a device: use FAMILY@ADDRESS</source>
-        <translation>'%1' ist kein Gerät: FAMILY@ADDRESS verwenden</translation>
+        <location line="+14"/>
+        <source>&apos;%1&apos; is not a device: use FAMILY@ADDRESS</source>
+        <translation>&apos;%1&apos; ist kein Gerät: FAMILY@ADDRESS verwenden</translation>
     </message>
     <message>
-        <location line="+12" />
-        <source>--verify takes addresses 1..255, not '%1'</source>
-        <translation>--verify erwartet Adressen 1..255, nicht '%1'</translation>
+        <location line="+12"/>
+        <source>--verify takes addresses 1..255, not &apos;%1&apos;</source>
+        <translation>--verify erwartet Adressen 1..255, nicht &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+297" />
+        <location line="+297"/>
         <source>cannot read %1</source>
         <translation>%1 kann nicht gelesen werden</translation>
     </message>
     <message>
-        <location line="+139" />
-        <source>Writes the commissioning report of a device, a document to sign: a title block (site, cabinet, tag, engineer, date, device, line), identity, parameters with the manual's defaults, live values, active alarms, today's writes and signature lines. FILE ending in .pdf gives PDF (A4, numbered pages), else HTML.</source>
+        <location line="+139"/>
+        <source>Writes the commissioning report of a device, a document to sign: a title block (site, cabinet, tag, engineer, date, device, line), identity, parameters with the manual&apos;s defaults, live values, active alarms, today&apos;s writes and signature lines. FILE ending in .pdf gives PDF (A4, numbered pages), else HTML.</source>
         <translation>Schreibt den Inbetriebnahmebericht eines Geräts, ein Dokument zum Unterschreiben: Kopfdaten (Standort, Schaltschrank, Kennzeichen, Inbetriebnehmer, Datum, Gerät, Leitung), Identität, Parameter mit den Standardwerten des Handbuchs, Live-Werte, aktive Alarme, die heutigen Schreibvorgänge und Unterschriftszeilen. Endet DATEI auf .pdf, entsteht PDF (A4, nummerierte Seiten), sonst HTML.</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>Site for the report's title block (the plant, the hall).</source>
+        <location line="+5"/>
+        <source>Site for the report&apos;s title block (the plant, the hall).</source>
         <translation>Standort für die Kopfdaten des Berichts (die Anlage, die Halle).</translation>
     </message>
     <message>
-        <location line="+0" />
-        <location line="+1" />
-        <location line="+1" />
+        <location line="+0"/>
+        <location line="+1"/>
+        <location line="+1"/>
         <source>text</source>
         <translation>Text</translation>
     </message>
     <message>
-        <location line="-1" />
+        <location line="-1"/>
         <source>Cabinet or panel the device is in.</source>
         <translation>Schaltschrank oder Tafel, in dem das Gerät sitzt.</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>The device's tag in the plant, e.g. TIC-101.</source>
+        <location line="+1"/>
+        <source>The device&apos;s tag in the plant, e.g. TIC-101.</source>
         <translation>Kennzeichen des Geräts in der Anlage, z. B. TIC-101.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Name of the commissioning engineer.</source>
         <translation>Name des Inbetriebnehmers.</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location line="-820" />
+        <location line="-820"/>
         <source>Never write to the line (control-room mode; the system configuration can set it for everyone).</source>
         <translation>Nie auf die Leitung schreiben (Leitwarten-Modus; die Systemkonfiguration kann ihn für alle festlegen).</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>Show Qt's Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
+        <location line="+3"/>
+        <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
         <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
     </message>
     <message>
-        <location line="+330" />
+        <location line="+330"/>
         <source>Writes entries of a device; each write is verified by reading it back.
 
 ID=VALUE writes the whole entry: for a bit field it replaces EVERY bit of
@@ -2050,102 +2055,102 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 2 falsche Argumente, nichts gesendet.</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+19"/>
         <source>ID=VALUE, e.g. input_setpoint=42.5, or ID.BIT=0|1, e.g. binary_signal_write.digital_output=1.</source>
         <translation>ID=VALUE, z. B. input_setpoint=42.5, oder ID.BIT=0|1, z. B. binary_signal_write.digital_output=1.</translation>
     </message>
     <message>
-        <location line="+99" />
+        <location line="+99"/>
         <source>unknown, check the device: </source>
         <translation>unbekannt, Gerät prüfen: </translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>unverified: </source>
         <translation>ungeprüft: </translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>(was %1)</source>
         <translation>(vorher %1)</translation>
     </message>
     <message>
-        <location line="+29" />
+        <location line="+29"/>
         <source>read-only mode is set by the system configuration (%1): nothing is written to the devices</source>
         <translation>Der Nur-Lese-Modus ist durch die Systemkonfiguration festgelegt (%1): Es wird nichts auf die Geräte geschrieben</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>read-only mode (--read-only): nothing is written to the devices</source>
         <translation>Nur-Lese-Modus (--read-only): Es wird nichts auf die Geräte geschrieben</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>Polls devices continuously and prints every poll cycle.</source>
         <translation>Fragt Geräte fortlaufend ab und gibt jeden Abfragezyklus aus.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Poll interval per device in ms (default 0: as fast as the line allows).</source>
         <translation>Abfrageintervall je Gerät in ms (Standard 0: so schnell, wie die Leitung es erlaubt).</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Stop after this many cycles of every device (default: run until stopped).</source>
         <translation>Nach so vielen Zyklen jedes Geräts anhalten (Standard: bis zum Abbruch laufen).</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Comma-separated entry ids to poll (default: all readable entries).</source>
         <translation>Kommagetrennte Kennungen der abzufragenden Einträge (Standard: alle lesbaren Einträge).</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>ids</source>
         <translation>Kennungen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>One JSON object per completed poll cycle of a device.</source>
         <translation>Ein JSON-Objekt je abgeschlossenem Abfragezyklus eines Geräts.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>CSV rows: time,device,id,value,unit,status.</source>
         <translation>CSV-Zeilen: time,device,id,value,unit,status.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>FAMILY@ADDRESS.</source>
         <translation>FAMILY@ADDRESS.</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>jumoctl monitor: give exactly one of --jsonl and --csv</source>
         <translation>jumoctl monitor: genau eine der Optionen --jsonl und --csv angeben</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>--interval must be a number of ms &gt;= 0</source>
         <translation>--interval muss eine Anzahl ms &gt;= 0 sein</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>--cycles must be a number &gt;= 0</source>
         <translation>--cycles muss eine Zahl &gt;= 0 sein</translation>
     </message>
     <message>
-        <location line="+11" />
-        <source>'%1' is not a readable entry of %2</source>
-        <translation>'%1' ist kein lesbarer Eintrag von %2</translation>
+        <location line="+11"/>
+        <source>&apos;%1&apos; is not a readable entry of %2</source>
+        <translation>&apos;%1&apos; ist kein lesbarer Eintrag von %2</translation>
     </message>
     <message>
-        <location line="+103" />
+        <location line="+103"/>
         <source>no differences</source>
         <translation>keine Unterschiede</translation>
     </message>
     <message numerus="yes">
-        <location line="+3" />
+        <location line="+3"/>
         <source>%n parameter(s) differ (%1 -&gt; %2):</source>
         <translation>
             <numerusform>%n Parameter weicht ab (%1 -&gt; %2):</numerusform>
@@ -2153,64 +2158,64 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         </translation>
     </message>
     <message>
-        <location line="+2" />
-        <location line="+1" />
+        <location line="+2"/>
+        <location line="+1"/>
         <source>(missing)</source>
         <translation>(fehlt)</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>Saves every parameter of a device to a file.</source>
         <translation>Sichert alle Parameter eines Geräts in einer Datei.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Writes the parameters of a file that differ from the device, each verified by read-back.</source>
         <translation>Schreibt die Parameter einer Datei, die vom Gerät abweichen, jeweils durch Rücklesen geprüft.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Compares a device with a parameter file, or two files.</source>
         <translation>Vergleicht ein Gerät mit einer Parameterdatei oder zwei Dateien miteinander.</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Write without asking.</source>
         <translation>Ohne Rückfrage schreiben.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>FAMILY@ADDRESS, or a first parameter file.</source>
         <translation>FAMILY@ADDRESS oder eine erste Parameterdatei.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Parameter file (JSON).</source>
         <translation>Parameterdatei (JSON).</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+26"/>
         <source>the files are for different or unknown families: %1, %2</source>
         <translation>die Dateien gehören zu verschiedenen oder unbekannten Gerätefamilien: %1, %2</translation>
     </message>
     <message>
-        <location line="+25" />
-        <location line="+36" />
+        <location line="+25"/>
+        <location line="+36"/>
         <source>refused: %1</source>
         <translation>abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="-31" />
+        <location line="-31"/>
         <source>read-only mode: nothing would be restored</source>
         <translation>Nur-Lese-Modus: es würde nichts wiederhergestellt</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>these parameters could not be read, nothing was done: %1</source>
         <translation>diese Parameter konnten nicht gelesen werden, es wurde nichts getan: %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+13" />
+        <location line="+13"/>
         <source>%n parameter(s) of %1 saved to %2</source>
         <translation>
             <numerusform>%n Parameter von %1 in %2 gesichert</numerusform>
@@ -2218,7 +2223,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+19" />
+        <location line="+19"/>
         <source>%n parameter(s) missing from the file are left as they are.</source>
         <translation>
             <numerusform>%n Parameter, der in der Datei fehlt, bleibt unverändert.</numerusform>
@@ -2226,7 +2231,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+12" />
+        <location line="+12"/>
         <source>Write %n parameter(s) to the device? [y/N] </source>
         <translation>
             <numerusform>%n Parameter auf das Gerät schreiben? [j/N] </numerusform>
@@ -2234,42 +2239,42 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         </translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>y</source>
         <translation>j</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>nothing written</source>
         <translation>nichts geschrieben</translation>
     </message>
     <message>
-        <location line="+44" />
+        <location line="+44"/>
         <source>Report file (.pdf or .html).</source>
         <translation>Berichtsdatei (.pdf oder .html).</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+27"/>
         <source>%1 did not answer: no report written</source>
         <translation>%1 hat nicht geantwortet: kein Bericht geschrieben</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+20"/>
         <source>no report written: its writes of today are unknown: %1</source>
         <translation>kein Bericht geschrieben: die Schreibvorgänge von heute sind unbekannt: %1</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>Commissioning report of %1</source>
         <translation>Inbetriebnahmebericht von %1</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>report of %1 written to %2</source>
         <translation>Bericht von %1 in %2 geschrieben</translation>
     </message>
     <message numerus="yes">
-        <location line="+19" />
+        <location line="+19"/>
         <source>%n parameter(s) restored and verified</source>
         <translation>
             <numerusform>%n Parameter wiederhergestellt und geprüft</numerusform>
@@ -2280,13 +2285,13 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 <context>
     <name>jumo::LineConnection</name>
     <message>
-        <location filename="../lib/bus/lineconnection.cpp" line="+93" />
+        <location filename="../lib/bus/lineconnection.cpp" line="+93"/>
         <source>cannot open %1: %2</source>
         <translation>%1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location line="+44" />
-        <location line="+6" />
+        <location line="+44"/>
+        <location line="+6"/>
         <source>line lost: %1</source>
         <translation>Leitung verloren: %1</translation>
     </message>
@@ -2294,57 +2299,57 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 <context>
     <name>jumo::LiveValuesModel</name>
     <message>
-        <location filename="../lib/models/livevaluesmodel.cpp" line="+111" />
+        <location filename="../lib/models/livevaluesmodel.cpp" line="+111"/>
         <source>Value: %1</source>
         <translation>Wert: %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1, register %2, %3</source>
         <translation>%1, Register %2, %3</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Status: %1</source>
         <translation>Status: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Last known value: %1, %2 s ago</source>
         <translation>Letzter bekannter Wert: %1, vor %2 s</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+27"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>Section</source>
         <translation>Abschnitt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Signal</source>
         <translation>Signal</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Value</source>
         <translation>Wert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Unit</source>
         <translation>Einheit</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Age</source>
         <translation>Alter</translation>
     </message>
@@ -2352,304 +2357,304 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 <context>
     <name>jumo::MainWindow</name>
     <message>
-        <location filename="../ui/mainwindow.cpp" line="+74" />
-        <location line="+4" />
+        <location filename="../ui/mainwindow.cpp" line="+74"/>
+        <location line="+4"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location line="-4" />
-        <location line="+4" />
+        <location line="-4"/>
+        <location line="+4"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location line="-4" />
+        <location line="-4"/>
         <source>Register</source>
         <translation>Register</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Bit</source>
         <translation>Bit</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Id</source>
         <translation>Kennung</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Signal</source>
         <translation>Signal</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>State</source>
         <translation>Zustand</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Entry</source>
         <translation>Eintrag</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Old value</source>
         <translation>Alter Wert</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>New value</source>
         <translation>Neuer Wert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Result</source>
         <translation>Ergebnis</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Message</source>
         <translation>Meldung</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+20"/>
         <source>JUMO HMI [read-only]</source>
         <translation>JUMO HMI [Nur-Lese-Modus]</translation>
     </message>
     <message>
-        <location line="+0" />
-        <location line="+644" />
+        <location line="+0"/>
+        <location line="+644"/>
         <source>JUMO HMI</source>
         <translation>JUMO HMI</translation>
     </message>
     <message>
-        <location line="-642" />
+        <location line="-642"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location line="+148" />
+        <location line="+148"/>
         <source>&amp;Line</source>
         <translation>&amp;Leitung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Connect</source>
         <translation>&amp;Verbinden</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Disconnect</source>
         <translation>&amp;Trennen</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>&amp;Add a device...</source>
         <translation>Gerät &amp;hinzufügen...</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+27"/>
         <source>&amp;Commissioning report of the shown device...</source>
         <translation>Inbetriebnahme&amp;bericht des angezeigten Geräts...</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+20"/>
         <source>commissioning-report-%1-%2.pdf</source>
         <translation>inbetriebnahmebericht-%1-%2.pdf</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>La&amp;nguage</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+22"/>
         <source>&amp;Overview</source>
         <translation>&amp;Übersicht</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;Traffic and statistics</source>
         <translation>Daten&amp;verkehr und Statistik</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Alarm &amp;journal</source>
         <translation>Alarm&amp;journal</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;Write audit log</source>
         <translation>&amp;Schreibprotokoll</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>&amp;Device pages</source>
         <translation>&amp;Geräteseiten</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Device %1 in the list</source>
         <translation>Gerät %1 der Liste</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>&amp;Next page</source>
         <translation>&amp;Nächste Seite</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>&amp;Previous page</source>
         <translation>V&amp;orige Seite</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>Previous t&amp;ab of the device page</source>
         <translation>Vorig&amp;er Reiter der Geräteseite</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>Go to the page &amp;list</source>
         <translation>Zur Seiten&amp;liste</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>T&amp;heme</source>
         <translation>&amp;Farbschema</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>&amp;Compact overview</source>
         <translation>&amp;Kompakte Übersicht</translation>
     </message>
     <message>
-        <location line="+60" />
-        <location line="+45" />
+        <location line="+60"/>
+        <location line="+45"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-375" />
+        <location line="-375"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Traffic and statistics</source>
         <translation>Datenverkehr und Statistik</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Alarm journal</source>
         <translation>Alarmjournal</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Write audit log</source>
         <translation>Schreibprotokoll</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>Add...</source>
         <translation>Hinzufügen...</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Scan...</source>
         <translation>Suchen...</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Remove</source>
         <translation>Entfernen</translation>
     </message>
     <message>
-        <location line="+40" />
+        <location line="+40"/>
         <source>READ-ONLY</source>
         <translation>NUR LESEN</translation>
     </message>
     <message>
-        <location line="+598" />
+        <location line="+598"/>
         <source>Data logging of %1 stopped: %2</source>
         <translation>Datenaufzeichnung von %1 angehalten: %2</translation>
     </message>
     <message>
-        <location line="-562" />
+        <location line="-562"/>
         <source>address %1: %2</source>
         <translation>Adresse %1: %2</translation>
     </message>
     <message>
-        <location line="+42" />
+        <location line="+42"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>&amp;Devices</source>
         <translation>&amp;Geräte</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;Scan the line...</source>
         <translation>Leitung durch&amp;suchen...</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;Remove the shown device</source>
         <translation>Angezeigtes Gerät &amp;entfernen</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>&amp;Parameters: back up, compare, restore...</source>
         <translation>&amp;Parameter: sichern, vergleichen, wiederherstellen...</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Parameters</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>&amp;Data logging of the shown device...</source>
         <translation>&amp;Datenaufzeichnung des angezeigten Geräts...</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Data logging</source>
         <translation>Datenaufzeichnung</translation>
     </message>
     <message>
-        <location line="+11" />
-        <location line="+21" />
+        <location line="+11"/>
+        <location line="+21"/>
         <source>Report</source>
         <translation>Bericht</translation>
     </message>
     <message>
-        <location line="-42" />
-        <location line="+10" />
-        <location line="+11" />
+        <location line="-42"/>
+        <location line="+10"/>
+        <location line="+11"/>
         <source>Open the page of a device first.</source>
         <translation>Zuerst die Seite eines Geräts öffnen.</translation>
     </message>
     <message numerus="yes">
-        <location line="-101" />
+        <location line="-101"/>
         <source>Not logged (%n record(s) so far): %1</source>
         <translation>
             <numerusform>Nicht protokolliert (bisher %n Eintrag): %1</numerusform>
@@ -2657,99 +2662,99 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         </translation>
     </message>
     <message>
-        <location line="+118" />
+        <location line="+118"/>
         <source>Commissioning report</source>
         <translation>Inbetriebnahmebericht</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>PDF (*.pdf);;HTML (*.html)</source>
         <translation>PDF (*.pdf);;HTML (*.html)</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>System language</source>
         <translation>Systemsprache</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>The language changes when the HMI is started again.</source>
         <translation>Die Sprache wird beim nächsten Start der HMI umgestellt.</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;About</source>
         <translation>Ü&amp;ber</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>About JUMO HMI</source>
         <translation>Über JUMO HMI</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>JUMO HMI %1
 Commissioning and monitoring of JUMO power and process controllers over Modbus RTU.</source>
         <translation>JUMO HMI %1
 Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Modbus RTU.</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+32"/>
         <source>Ne&amp;xt tab of the device page</source>
         <translation>Nächster &amp;Reiter der Geräteseite</translation>
     </message>
     <message>
-        <location line="+107" />
+        <location line="+107"/>
         <source>Demo line failed: %1</source>
         <translation>Demo-Leitung fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>Starting the simulated demo line...</source>
         <translation>Simulierte Demo-Leitung wird gestartet...</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>Choose or type a serial port first.</source>
         <translation>Zuerst eine serielle Schnittstelle wählen oder eingeben.</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+18"/>
         <source>Connected to %1</source>
         <translation>Verbunden mit %1</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Line lost, waiting for the port to come back...</source>
         <translation>Leitung verloren, warte, bis die Schnittstelle wieder verfügbar ist...</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Disconnected</source>
         <translation>Getrennt</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+24"/>
         <source>Line: %1</source>
         <translation>Leitung: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1 requests/s</source>
         <translation>%1 Anfragen/s</translation>
     </message>
     <message numerus="yes">
-        <location line="+4" />
+        <location line="+4"/>
         <source>%n error(s); last: %1</source>
         <translation>
             <numerusform>%n Fehler; zuletzt: %1</numerusform>
@@ -2757,32 +2762,32 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>no errors</source>
         <translation>keine Fehler</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>the family is not checked against the device (--no-identify)</source>
         <translation>die Familie wird nicht am Gerät geprüft (--no-identify)</translation>
     </message>
     <message>
-        <location line="+137" />
+        <location line="+137"/>
         <source>Scan</source>
         <translation>Suchen</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Connect to a line first.</source>
         <translation>Zuerst mit einer Leitung verbinden.</translation>
     </message>
     <message>
-        <location line="+48" />
+        <location line="+48"/>
         <source>Commissioning report of %1</source>
         <translation>Inbetriebnahmebericht von %1</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>no device %1@%2</source>
         <translation>kein Gerät %1@%2</translation>
     </message>
@@ -2790,17 +2795,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::MapCommands</name>
     <message>
-        <location filename="../app/cli/mapcommands.cpp" line="+133" />
-        <source>unknown family '%1' (known: %2)</source>
-        <translation>unbekannte Gerätefamilie '%1' (bekannt: %2)</translation>
+        <location filename="../app/cli/mapcommands.cpp" line="+133"/>
+        <source>unknown family &apos;%1&apos; (known: %2)</source>
+        <translation>unbekannte Gerätefamilie &apos;%1&apos; (bekannt: %2)</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>Lists the device families and the map files they come from.</source>
         <translation>Listet die Gerätefamilien und die Map-Dateien auf, aus denen sie stammen.</translation>
     </message>
     <message numerus="yes">
-        <location line="+5" />
+        <location line="+5"/>
         <source>%n registers</source>
         <translation>
             <numerusform>%n Register</numerusform>
@@ -2808,53 +2813,53 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>refused map file: %1</source>
         <translation>Map-Datei abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+32"/>
         <source>Prints the register map of a device family.</source>
         <translation>Gibt die Registertabelle einer Gerätefamilie aus.</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Family id, see 'jumoctl families'.</source>
-        <translation>Kennung der Gerätefamilie, siehe 'jumoctl families'.</translation>
+        <location line="+1"/>
+        <source>Family id, see &apos;jumoctl families&apos;.</source>
+        <translation>Kennung der Gerätefamilie, siehe &apos;jumoctl families&apos;.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>CSV: one row per register and one per bit of a bit field.</source>
         <translation>CSV: eine Zeile je Register und je Bit eines Bitfelds.</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>JSON: the family's facts and every register.</source>
+        <location line="+1"/>
+        <source>JSON: the family&apos;s facts and every register.</source>
         <translation>JSON: die Angaben zur Gerätefamilie und alle Register.</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>jumoctl map: give exactly one of --csv and --json</source>
         <translation>jumoctl map: genau eine der Optionen --csv und --json angeben</translation>
     </message>
     <message>
-        <location line="+52" />
+        <location line="+52"/>
         <source>Shows the read requests that poll the given entries (all readable entries if none).</source>
         <translation>Zeigt die Leseanfragen, mit denen die angegebenen Einträge abgefragt werden (ohne Angabe alle lesbaren Einträge).</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+28" />
+        <location line="+1"/>
+        <location line="+28"/>
         <source>Family id.</source>
         <translation>Kennung der Gerätefamilie.</translation>
     </message>
     <message>
-        <location line="-27" />
+        <location line="-27"/>
         <source>Entry ids to read.</source>
         <translation>Kennungen der zu lesenden Einträge.</translation>
     </message>
     <message numerus="yes">
-        <location line="+14" />
+        <location line="+14"/>
         <source>read %1..%2 (%n words): </source>
         <translation>
             <numerusform>lesen %1..%2 (%n Wort): </numerusform>
@@ -2862,7 +2867,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+4" />
+        <location line="+4"/>
         <source>%n requests, </source>
         <translation>
             <numerusform>%n Anfrage, </numerusform>
@@ -2870,7 +2875,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+0" />
+        <location line="+0"/>
         <source>%n words</source>
         <translation>
             <numerusform>%n Wort</numerusform>
@@ -2878,610 +2883,610 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>Decodes raw register words (hex, as read from the device) as an entry.</source>
         <translation>Dekodiert rohe Registerwörter (hexadezimal, wie vom Gerät gelesen) als Eintrag.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Entry id.</source>
         <translation>Kennung des Eintrags.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Register words in hex, e.g. 70A3 4145.</source>
         <translation>Registerwörter hexadezimal, z. B. 70A3 4145.</translation>
     </message>
     <message>
-        <location line="+11" />
-        <source>'%1' is not an entry of %2</source>
-        <translation>'%1' ist kein Eintrag von %2</translation>
+        <location line="+11"/>
+        <source>&apos;%1&apos; is not an entry of %2</source>
+        <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
     <message>
-        <location line="+8" />
-        <source>'%1' is not a 16-bit hex word</source>
-        <translation>'%1' ist kein 16-Bit-Hexwort</translation>
+        <location line="+8"/>
+        <source>&apos;%1&apos; is not a 16-bit hex word</source>
+        <translation>&apos;%1&apos; ist kein 16-Bit-Hexwort</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>'%1' takes %2 words, %3 given</source>
-        <translation>'%1' benötigt %2 Wörter, %3 angegeben</translation>
+        <location line="+7"/>
+        <source>&apos;%1&apos; takes %2 words, %3 given</source>
+        <translation>&apos;%1&apos; benötigt %2 Wörter, %3 angegeben</translation>
     </message>
 </context>
 <context>
     <name>jumo::MapLoader</name>
     <message>
-        <location filename="../lib/protocol/maploader.cpp" line="+38" />
+        <location filename="../lib/protocol/maploader.cpp" line="+38"/>
         <source>malformed JSON at byte %1: %2</source>
         <translation>fehlerhaftes JSON bei Byte %1: %2</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>malformed JSON at byte %1: a control character</source>
         <translation>fehlerhaftes JSON bei Byte %1: ein Steuerzeichen</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>the top level must be a JSON object</source>
         <translation>die oberste Ebene muss ein JSON-Objekt sein</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/jsonfieldreader.cpp" line="+52" />
-        <source>unknown key '%1'</source>
-        <translation>unbekannter Schlüssel '%1'</translation>
+        <location filename="../lib/protocol/jsonfieldreader.cpp" line="+52"/>
+        <source>unknown key &apos;%1&apos;</source>
+        <translation>unbekannter Schlüssel &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+8" />
-        <source>'%1' is missing or not a non-empty string</source>
-        <translation>'%1' fehlt oder ist keine nicht leere Zeichenkette</translation>
+        <location line="+8"/>
+        <source>&apos;%1&apos; is missing or not a non-empty string</source>
+        <translation>&apos;%1&apos; fehlt oder ist keine nicht leere Zeichenkette</translation>
     </message>
     <message>
-        <location line="+12" />
-        <source>'%1' must be a string, not %2</source>
-        <translation>'%1' muss ein Text sein, nicht %2</translation>
+        <location line="+12"/>
+        <source>&apos;%1&apos; must be a string, not %2</source>
+        <translation>&apos;%1&apos; muss ein Text sein, nicht %2</translation>
     </message>
     <message>
-        <location line="+13" />
-        <source>'%1' must be an array of strings</source>
-        <translation>'%1' muss ein Array von Texten sein</translation>
+        <location line="+13"/>
+        <source>&apos;%1&apos; must be an array of strings</source>
+        <translation>&apos;%1&apos; muss ein Array von Texten sein</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>'%1' must contain only strings, not %2</source>
-        <translation>'%1' darf nur Texte enthalten, nicht %2</translation>
+        <location line="+7"/>
+        <source>&apos;%1&apos; must contain only strings, not %2</source>
+        <translation>&apos;%1&apos; darf nur Texte enthalten, nicht %2</translation>
     </message>
     <message>
-        <location line="+12" />
-        <source>'%1' must be true or false, not %2</source>
-        <translation>'%1' muss true oder false sein, nicht %2</translation>
+        <location line="+12"/>
+        <source>&apos;%1&apos; must be true or false, not %2</source>
+        <translation>&apos;%1&apos; muss true oder false sein, nicht %2</translation>
     </message>
     <message>
-        <location line="+14" />
-        <source>'%1' must be a whole number %2..%3, not %4</source>
-        <translation>'%1' muss eine ganze Zahl %2..%3 sein, nicht %4</translation>
+        <location line="+14"/>
+        <source>&apos;%1&apos; must be a whole number %2..%3, not %4</source>
+        <translation>&apos;%1&apos; muss eine ganze Zahl %2..%3 sein, nicht %4</translation>
     </message>
     <message>
-        <location line="+24" />
-        <source>'%1' must be a number, not %2</source>
-        <translation>'%1' muss eine Zahl sein, nicht %2</translation>
+        <location line="+24"/>
+        <source>&apos;%1&apos; must be a number, not %2</source>
+        <translation>&apos;%1&apos; muss eine Zahl sein, nicht %2</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>'%1' must be a number %2..%3, not %4</source>
-        <translation>'%1' muss eine Zahl %2..%3 sein, nicht %4</translation>
+        <location line="+2"/>
+        <source>&apos;%1&apos; must be a number %2..%3, not %4</source>
+        <translation>&apos;%1&apos; muss eine Zahl %2..%3 sein, nicht %4</translation>
     </message>
     <message>
-        <location line="+21" />
-        <source>'%1' may contain only %2, not %3</source>
-        <translation>'%1' darf nur %2 enthalten, nicht %3</translation>
+        <location line="+21"/>
+        <source>&apos;%1&apos; may contain only %2, not %3</source>
+        <translation>&apos;%1&apos; darf nur %2 enthalten, nicht %3</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>'%1' lists %2 twice</source>
-        <translation>'%1' nennt %2 zweimal</translation>
+        <location line="+2"/>
+        <source>&apos;%1&apos; lists %2 twice</source>
+        <translation>&apos;%1&apos; nennt %2 zweimal</translation>
     </message>
     <message>
-        <location line="-39" />
-        <source>'%1' is missing</source>
-        <translation>'%1' fehlt</translation>
+        <location line="-39"/>
+        <source>&apos;%1&apos; is missing</source>
+        <translation>&apos;%1&apos; fehlt</translation>
     </message>
     <message>
-        <location line="+50" />
-        <source>'%1' must be 0x followed by 4 hex digits, not '%2'</source>
-        <translation>'%1' muss 0x gefolgt von 4 Hexziffern sein, nicht '%2'</translation>
+        <location line="+50"/>
+        <source>&apos;%1&apos; must be 0x followed by 4 hex digits, not &apos;%2&apos;</source>
+        <translation>&apos;%1&apos; muss 0x gefolgt von 4 Hexziffern sein, nicht &apos;%2&apos;</translation>
     </message>
     <message>
-        <location line="-22" />
-        <source>'%1' must be a non-empty array of numbers</source>
-        <translation>'%1' muss ein nicht leeres Array von Zahlen sein</translation>
+        <location line="-22"/>
+        <source>&apos;%1&apos; must be a non-empty array of numbers</source>
+        <translation>&apos;%1&apos; muss ein nicht leeres Array von Zahlen sein</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/maploader.cpp" line="+29" />
-        <source>family id '%1' must be lower case letters, digits and '_'</source>
-        <translation>Familienkennung '%1' darf nur aus Kleinbuchstaben, Ziffern und '_' bestehen</translation>
+        <location filename="../lib/protocol/maploader.cpp" line="+29"/>
+        <source>family id &apos;%1&apos; must be lower case letters, digits and &apos;_&apos;</source>
+        <translation>Familienkennung &apos;%1&apos; darf nur aus Kleinbuchstaben, Ziffern und &apos;_&apos; bestehen</translation>
     </message>
     <message>
-        <location line="+20" />
-        <source>'entries' must be a non-empty array</source>
-        <translation>'entries' muss ein nicht leeres Array sein</translation>
+        <location line="+20"/>
+        <source>&apos;entries&apos; must be a non-empty array</source>
+        <translation>&apos;entries&apos; muss ein nicht leeres Array sein</translation>
     </message>
     <message>
-        <location line="+25" />
-        <location line="+94" />
-        <source>'%1' is not a readable entry</source>
-        <translation>'%1' ist kein lesbarer Eintrag</translation>
+        <location line="+25"/>
+        <location line="+94"/>
+        <source>&apos;%1&apos; is not a readable entry</source>
+        <translation>&apos;%1&apos; ist kein lesbarer Eintrag</translation>
     </message>
     <message>
-        <location line="+110" />
-        <source>'protocol' must be an object</source>
-        <translation>'protocol' muss ein Objekt sein</translation>
+        <location line="+110"/>
+        <source>&apos;protocol&apos; must be an object</source>
+        <translation>&apos;protocol&apos; muss ein Objekt sein</translation>
     </message>
     <message>
-        <location line="+17" />
-        <source>'%1' must be ABCD, CDAB, BADC or DCBA, not '%2'</source>
-        <translation>'%1' muss ABCD, CDAB, BADC oder DCBA sein, nicht '%2'</translation>
+        <location line="+17"/>
+        <source>&apos;%1&apos; must be ABCD, CDAB, BADC or DCBA, not &apos;%2&apos;</source>
+        <translation>&apos;%1&apos; muss ABCD, CDAB, BADC oder DCBA sein, nicht &apos;%2&apos;</translation>
     </message>
     <message>
-        <location line="+11" />
-        <source>unknown data format '%1'</source>
-        <translation>unbekanntes Datenformat '%1'</translation>
+        <location line="+11"/>
+        <source>unknown data format &apos;%1&apos;</source>
+        <translation>unbekanntes Datenformat &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>'dataFormats' must list at least one format</source>
-        <translation>'dataFormats' muss mindestens ein Format enthalten</translation>
+        <location line="+4"/>
+        <source>&apos;dataFormats&apos; must list at least one format</source>
+        <translation>&apos;dataFormats&apos; muss mindestens ein Format enthalten</translation>
     </message>
     <message>
-        <location line="+23" />
-        <source>'identify' must be a non-empty array of probes</source>
-        <translation>'identify' muss ein nicht leeres Array von Prüfabfragen sein</translation>
+        <location line="+23"/>
+        <source>&apos;identify&apos; must be a non-empty array of probes</source>
+        <translation>&apos;identify&apos; muss ein nicht leeres Array von Prüfabfragen sein</translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+38"/>
         <source>a probe needs exactly one of textContains, maskNonZero, answers, exception</source>
         <translation>eine Prüfabfrage benötigt genau eines von textContains, maskNonZero, answers, exception</translation>
     </message>
     <message>
-        <location line="+8" />
-        <source>'exceptions' must be an object mapping codes to meanings</source>
-        <translation>'exceptions' muss ein Objekt sein, das Codes ihren Bedeutungen zuordnet</translation>
+        <location line="+8"/>
+        <source>&apos;exceptions&apos; must be an object mapping codes to meanings</source>
+        <translation>&apos;exceptions&apos; muss ein Objekt sein, das Codes ihren Bedeutungen zuordnet</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>'%1' is not an exception code with a text</source>
-        <translation>'%1' ist kein Exception-Code mit Text</translation>
+        <location line="+7"/>
+        <source>&apos;%1&apos; is not an exception code with a text</source>
+        <translation>&apos;%1&apos; ist kein Exception-Code mit Text</translation>
     </message>
     <message>
-        <location line="+12" />
-        <source>'errorValues' must be an object or null</source>
-        <translation>'errorValues' muss ein Objekt oder null sein</translation>
+        <location line="+12"/>
+        <source>&apos;errorValues&apos; must be an object or null</source>
+        <translation>&apos;errorValues&apos; muss ein Objekt oder null sein</translation>
     </message>
     <message>
-        <location line="+57" />
+        <location line="+57"/>
         <source>entry #%1</source>
         <translation>Eintrag #%1</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>an entry must be an object</source>
         <translation>ein Eintrag muss ein Objekt sein</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>entry #%1 (%2)</source>
         <translation>Eintrag #%1 (%2)</translation>
     </message>
     <message>
-        <location line="-402" />
-        <location line="+403" />
-        <location line="+369" />
-        <location filename="../lib/protocol/overlapcheck.cpp" line="+70" />
-        <source>entry '%1' (%2)</source>
-        <translation>Eintrag '%1' (%2)</translation>
+        <location line="-402"/>
+        <location line="+403"/>
+        <location line="+369"/>
+        <location filename="../lib/protocol/overlapcheck.cpp" line="+70"/>
+        <source>entry &apos;%1&apos; (%2)</source>
+        <translation>Eintrag &apos;%1&apos; (%2)</translation>
     </message>
     <message>
-        <location line="-359" />
-        <source>id must be lower case letters, digits and '_'</source>
-        <translation>die Kennung darf nur aus Kleinbuchstaben, Ziffern und '_' bestehen</translation>
+        <location line="-359"/>
+        <source>id must be lower case letters, digits and &apos;_&apos;</source>
+        <translation>die Kennung darf nur aus Kleinbuchstaben, Ziffern und &apos;_&apos; bestehen</translation>
     </message>
     <message>
-        <location line="+8" />
-        <source>unknown type '%1' (expected float, int16, uint16, int32, uint32, bool, enum, bitfield or text)</source>
-        <translation>unbekannter Typ '%1' (erwartet: float, int16, uint16, int32, uint32, bool, enum, bitfield oder text)</translation>
+        <location line="+8"/>
+        <source>unknown type &apos;%1&apos; (expected float, int16, uint16, int32, uint32, bool, enum, bitfield or text)</source>
+        <translation>unbekannter Typ &apos;%1&apos; (erwartet: float, int16, uint16, int32, uint32, bool, enum, bitfield oder text)</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>unknown access '%1' (expected R, W or RW)</source>
-        <translation>unbekannter Zugriff '%1' (erwartet: R, W oder RW)</translation>
+        <location line="+7"/>
+        <source>unknown access &apos;%1&apos; (expected R, W or RW)</source>
+        <translation>unbekannter Zugriff &apos;%1&apos; (erwartet: R, W oder RW)</translation>
     </message>
     <message>
-        <location line="+8" />
-        <source>unknown storage '%1' (expected RAM or EEPROM)</source>
-        <translation>unbekannter Speicherort '%1' (erwartet: RAM oder EEPROM)</translation>
+        <location line="+8"/>
+        <source>unknown storage &apos;%1&apos; (expected RAM or EEPROM)</source>
+        <translation>unbekannter Speicherort &apos;%1&apos; (erwartet: RAM oder EEPROM)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>a read-only entry cannot have a storage</source>
         <translation>ein nur lesbarer Eintrag kann keinen Speicherort haben</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>a text needs 'bytes' (at least 2, including the NUL)</source>
-        <translation>ein Text benötigt 'bytes' (mindestens 2, einschließlich des NUL)</translation>
+        <location line="+6"/>
+        <source>a text needs &apos;bytes&apos; (at least 2, including the NUL)</source>
+        <translation>ein Text benötigt &apos;bytes&apos; (mindestens 2, einschließlich des NUL)</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>'bytes' is only for texts</source>
-        <translation>'bytes' ist nur für Texte zulässig</translation>
+        <location line="+3"/>
+        <source>&apos;bytes&apos; is only for texts</source>
+        <translation>&apos;bytes&apos; ist nur für Texte zulässig</translation>
     </message>
     <message>
-        <location line="+20" />
-        <source>'min' is greater than 'max'</source>
-        <translation>'min' ist größer als 'max'</translation>
+        <location line="+20"/>
+        <source>&apos;min&apos; is greater than &apos;max&apos;</source>
+        <translation>&apos;min&apos; ist größer als &apos;max&apos;</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>unknown control '%1'</source>
-        <translation>unbekanntes Bedienelement '%1'</translation>
+        <location line="+6"/>
+        <source>unknown control &apos;%1&apos;</source>
+        <translation>unbekanntes Bedienelement &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>a control needs a writable entry</source>
         <translation>ein Bedienelement benötigt einen schreibbaren Eintrag</translation>
     </message>
     <message>
-        <location line="-221" />
+        <location line="-221"/>
         <source>address range %1..%2 is empty</source>
         <translation>Adressbereich %1..%2 ist leer</translation>
     </message>
     <message>
-        <location line="-318" />
-        <source>malformed JSON at byte %1: '%2' given twice in one object</source>
-        <translation>fehlerhaftes JSON bei Byte %1: '%2' zweimal im selben Objekt angegeben</translation>
+        <location line="-318"/>
+        <source>malformed JSON at byte %1: &apos;%2&apos; given twice in one object</source>
+        <translation>fehlerhaftes JSON bei Byte %1: &apos;%2&apos; zweimal im selben Objekt angegeben</translation>
     </message>
     <message>
-        <location line="+37" />
-        <source>'shortName' must be 1 to 24 characters, not '%1'</source>
-        <translation>'shortName' muss 1 bis 24 Zeichen lang sein, nicht '%1'</translation>
+        <location line="+37"/>
+        <source>&apos;shortName&apos; must be 1 to 24 characters, not &apos;%1&apos;</source>
+        <translation>&apos;shortName&apos; muss 1 bis 24 Zeichen lang sein, nicht &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+28" />
-        <source>'configuredUnit' names '%1', which 'configuredUnits' does not define</source>
-        <translation>'configuredUnit' nennt '%1', das 'configuredUnits' nicht definiert</translation>
+        <location line="+28"/>
+        <source>&apos;configuredUnit&apos; names &apos;%1&apos;, which &apos;configuredUnits&apos; does not define</source>
+        <translation>&apos;configuredUnit&apos; nennt &apos;%1&apos;, das &apos;configuredUnits&apos; nicht definiert</translation>
     </message>
     <message>
-        <location line="+54" />
-        <source>'%1' must be a readable bool entry or a single bit of a readable bit field</source>
-        <translation>'%1' muss ein lesbarer Bool-Eintrag oder ein einzelnes Bit eines lesbaren Bitfelds sein</translation>
+        <location line="+54"/>
+        <source>&apos;%1&apos; must be a readable bool entry or a single bit of a readable bit field</source>
+        <translation>&apos;%1&apos; muss ein lesbarer Bool-Eintrag oder ein einzelnes Bit eines lesbaren Bitfelds sein</translation>
     </message>
     <message>
-        <location line="+24" />
-        <source>'%1' must be an array</source>
-        <translation>'%1' muss ein Array sein</translation>
+        <location line="+24"/>
+        <source>&apos;%1&apos; must be an array</source>
+        <translation>&apos;%1&apos; muss ein Array sein</translation>
     </message>
     <message>
-        <location line="+33" />
-        <source>'%1' is a reserve, which the HMI does not read</source>
-        <translation>'%1' ist eine Reserve, die die HMI nicht liest</translation>
+        <location line="+33"/>
+        <source>&apos;%1&apos; is a reserve, which the HMI does not read</source>
+        <translation>&apos;%1&apos; ist eine Reserve, die die HMI nicht liest</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>the scale '%1' must be a number, or an enum whose every text starts with one</source>
-        <translation>die Skala '%1' muss eine Zahl sein oder eine Aufzählung, deren Texte alle mit einer Zahl beginnen</translation>
+        <location line="+6"/>
+        <source>the scale &apos;%1&apos; must be a number, or an enum whose every text starts with one</source>
+        <translation>die Skala &apos;%1&apos; muss eine Zahl sein oder eine Aufzählung, deren Texte alle mit einer Zahl beginnen</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>'%1' has a bar, so it must be a number, or an enum whose every text starts with one</source>
-        <translation>'%1' hat einen Balken, muss also eine Zahl sein oder eine Aufzählung, deren Texte alle mit einer Zahl beginnen</translation>
+        <location line="+2"/>
+        <source>&apos;%1&apos; has a bar, so it must be a number, or an enum whose every text starts with one</source>
+        <translation>&apos;%1&apos; hat einen Balken, muss also eine Zahl sein oder eine Aufzählung, deren Texte alle mit einer Zahl beginnen</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>'%1' must be a number</source>
-        <translation>'%1' muss eine Zahl sein</translation>
+        <location line="+2"/>
+        <source>&apos;%1&apos; must be a number</source>
+        <translation>&apos;%1&apos; muss eine Zahl sein</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>'faceplate' must be an object</source>
-        <translation>'faceplate' muss ein Objekt sein</translation>
+        <location line="+7"/>
+        <source>&apos;faceplate&apos; must be an object</source>
+        <translation>&apos;faceplate&apos; muss ein Objekt sein</translation>
     </message>
     <message>
-        <location line="+10" />
-        <source>unknown kind '%1' (expected power_unit or process_controller)</source>
-        <translation>unbekannte Art '%1' (erwartet: power_unit oder process_controller)</translation>
+        <location line="+10"/>
+        <source>unknown kind &apos;%1&apos; (expected power_unit or process_controller)</source>
+        <translation>unbekannte Art &apos;%1&apos; (erwartet: power_unit oder process_controller)</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>'values' must be a non-empty array</source>
-        <translation>'values' muss ein nicht leeres Array sein</translation>
+        <location line="+9"/>
+        <source>&apos;values&apos; must be a non-empty array</source>
+        <translation>&apos;values&apos; muss ein nicht leeres Array sein</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>'values' has %1 rows; a faceplate shows at most %2</source>
-        <translation>'values' hat %1 Zeilen; ein Gerätebild der Übersicht zeigt höchstens %2</translation>
+        <location line="+4"/>
+        <source>&apos;values&apos; has %1 rows; a faceplate shows at most %2</source>
+        <translation>&apos;values&apos; hat %1 Zeilen; ein Gerätebild der Übersicht zeigt höchstens %2</translation>
     </message>
     <message>
-        <location line="+16" />
-        <source>'max' must be above 'min'</source>
-        <translation>'max' muss größer als 'min' sein</translation>
+        <location line="+16"/>
+        <source>&apos;max&apos; must be above &apos;min&apos;</source>
+        <translation>&apos;max&apos; muss größer als &apos;min&apos; sein</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>'from' names one entry, or two whose product is the scale</source>
-        <translation>'from' nennt einen Eintrag oder zwei, deren Produkt die Skala ist</translation>
+        <location line="+6"/>
+        <source>&apos;from&apos; names one entry, or two whose product is the scale</source>
+        <translation>&apos;from&apos; nennt einen Eintrag oder zwei, deren Produkt die Skala ist</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>unknown scale '%1' (expected range, nominal or limit)</source>
-        <translation>unbekannte Skala '%1' (erwartet: range, nominal oder limit)</translation>
+        <location line="+4"/>
+        <source>unknown scale &apos;%1&apos; (expected range, nominal or limit)</source>
+        <translation>unbekannte Skala &apos;%1&apos; (erwartet: range, nominal oder limit)</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>'min' and 'max' are only for the scale 'range'</source>
-        <translation>'min' und 'max' gibt es nur für die Skala 'range'</translation>
+        <location line="+6"/>
+        <source>&apos;min&apos; and &apos;max&apos; are only for the scale &apos;range&apos;</source>
+        <translation>&apos;min&apos; und &apos;max&apos; gibt es nur für die Skala &apos;range&apos;</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>'from' is only for the scales 'nominal' and 'limit'</source>
-        <translation>'from' gibt es nur für die Skalen 'nominal' und 'limit'</translation>
+        <location line="+3"/>
+        <source>&apos;from&apos; is only for the scales &apos;nominal&apos; and &apos;limit&apos;</source>
+        <translation>&apos;from&apos; gibt es nur für die Skalen &apos;nominal&apos; und &apos;limit&apos;</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>'program' must be an object</source>
-        <translation>'program' muss ein Objekt sein</translation>
+        <location line="+9"/>
+        <source>&apos;program&apos; must be an object</source>
+        <translation>&apos;program&apos; muss ein Objekt sein</translation>
     </message>
     <message>
-        <location line="+61" />
-        <source>'alwaysAnswersAddress' must be 1..247 or 255, not %1</source>
-        <translation>'alwaysAnswersAddress' muss 1..247 oder 255 sein, nicht %1</translation>
+        <location line="+61"/>
+        <source>&apos;alwaysAnswersAddress&apos; must be 1..247 or 255, not %1</source>
+        <translation>&apos;alwaysAnswersAddress&apos; muss 1..247 oder 255 sein, nicht %1</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>'processingTimeMaxMs' is missing</source>
-        <translation>'processingTimeMaxMs' fehlt</translation>
+        <location line="+6"/>
+        <source>&apos;processingTimeMaxMs&apos; is missing</source>
+        <translation>&apos;processingTimeMaxMs&apos; fehlt</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+17"/>
         <source>a probe must be an object</source>
         <translation>eine Probe muss ein Objekt sein</translation>
     </message>
     <message>
-        <location line="+22" />
-        <source>'answers' can only be true</source>
-        <translation>'answers' kann nur true sein</translation>
+        <location line="+22"/>
+        <source>&apos;answers&apos; can only be true</source>
+        <translation>&apos;answers&apos; kann nur true sein</translation>
     </message>
     <message>
-        <location line="+52" />
-        <source>'configuredUnits' must be an object mapping ids to what decides the unit</source>
-        <translation>'configuredUnits' muss ein Objekt sein, das IDs dem zuordnet, was die Einheit bestimmt</translation>
+        <location line="+52"/>
+        <source>&apos;configuredUnits&apos; must be an object mapping ids to what decides the unit</source>
+        <translation>&apos;configuredUnits&apos; muss ein Objekt sein, das IDs dem zuordnet, was die Einheit bestimmt</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>'%1' is no id (lower case letters, digits and '_')</source>
-        <translation>'%1' ist keine ID (Kleinbuchstaben, Ziffern und '_')</translation>
+        <location line="+6"/>
+        <source>&apos;%1&apos; is no id (lower case letters, digits and &apos;_&apos;)</source>
+        <translation>&apos;%1&apos; ist keine ID (Kleinbuchstaben, Ziffern und &apos;_&apos;)</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>'%1' needs a text that says what decides the unit</source>
-        <translation>'%1' braucht einen Text, der sagt, was die Einheit bestimmt</translation>
+        <location line="+2"/>
+        <source>&apos;%1&apos; needs a text that says what decides the unit</source>
+        <translation>&apos;%1&apos; braucht einen Text, der sagt, was die Einheit bestimmt</translation>
     </message>
     <message>
-        <location line="+13" />
-        <source>'decimals' and 'significantDigits' are only for floats</source>
-        <translation>'decimals' und 'significantDigits' gibt es nur für Gleitkommazahlen</translation>
+        <location line="+13"/>
+        <source>&apos;decimals&apos; and &apos;significantDigits&apos; are only for floats</source>
+        <translation>&apos;decimals&apos; und &apos;significantDigits&apos; gibt es nur für Gleitkommazahlen</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>give 'decimals' or 'significantDigits', not both</source>
-        <translation>'decimals' oder 'significantDigits' angeben, nicht beides</translation>
+        <location line="+4"/>
+        <source>give &apos;decimals&apos; or &apos;significantDigits&apos;, not both</source>
+        <translation>&apos;decimals&apos; oder &apos;significantDigits&apos; angeben, nicht beides</translation>
     </message>
     <message>
-        <location line="+73" />
-        <source>'words' is only for reserved blocks</source>
-        <translation>'words' gilt nur für reservierte Blöcke</translation>
+        <location line="+73"/>
+        <source>&apos;words&apos; is only for reserved blocks</source>
+        <translation>&apos;words&apos; gilt nur für reservierte Blöcke</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>give 'unit' or 'configuredUnit', not both</source>
-        <translation>'unit' oder 'configuredUnit' angeben, nicht beides</translation>
+        <location line="+6"/>
+        <source>give &apos;unit&apos; or &apos;configuredUnit&apos;, not both</source>
+        <translation>&apos;unit&apos; oder &apos;configuredUnit&apos; angeben, nicht beides</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>a unit is only for numbers</source>
         <translation>eine Einheit gibt es nur für Zahlen</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+18"/>
         <source>an entry cannot be an alias of itself</source>
         <translation>ein Eintrag kann kein Alias seiner selbst sein</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>an action needs a writable entry</source>
         <translation>eine Aktion braucht einen beschreibbaren Eintrag</translation>
     </message>
     <message>
-        <location line="+16" />
-        <source>'values' is only for enums</source>
-        <translation>'values' ist nur für Enums zulässig</translation>
+        <location line="+16"/>
+        <source>&apos;values&apos; is only for enums</source>
+        <translation>&apos;values&apos; ist nur für Enums zulässig</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>an enum needs 'values'</source>
-        <translation>ein Enum benötigt 'values'</translation>
+        <location line="+4"/>
+        <source>an enum needs &apos;values&apos;</source>
+        <translation>ein Enum benötigt &apos;values&apos;</translation>
     </message>
     <message>
-        <location line="+8" />
-        <source>enum value '%1' must be a number 0..65535 with a text</source>
-        <translation>Enum-Wert '%1' muss eine Zahl 0..65535 mit einem Text sein</translation>
+        <location line="+8"/>
+        <source>enum value &apos;%1&apos; must be a number 0..65535 with a text</source>
+        <translation>Enum-Wert &apos;%1&apos; muss eine Zahl 0..65535 mit einem Text sein</translation>
     </message>
     <message>
-        <location line="+15" />
-        <source>'default' is only for writable entries</source>
-        <translation>'default' gibt es nur für beschreibbare Einträge</translation>
+        <location line="+15"/>
+        <source>&apos;default&apos; is only for writable entries</source>
+        <translation>&apos;default&apos; gibt es nur für beschreibbare Einträge</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>'default' is only for numbers, enums and booleans</source>
-        <translation>'default' gibt es nur für Zahlen, Aufzählungen und Wahrheitswerte</translation>
+        <location line="+9"/>
+        <source>&apos;default&apos; is only for numbers, enums and booleans</source>
+        <translation>&apos;default&apos; gibt es nur für Zahlen, Aufzählungen und Wahrheitswerte</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>'default' of a boolean must be true or false, not %1</source>
-        <translation>'default' eines Wahrheitswerts muss true oder false sein, nicht %1</translation>
+        <location line="+4"/>
+        <source>&apos;default&apos; of a boolean must be true or false, not %1</source>
+        <translation>&apos;default&apos; eines Wahrheitswerts muss true oder false sein, nicht %1</translation>
     </message>
     <message>
-        <location line="+10" />
-        <source>'default' must be a number, not %1</source>
-        <translation>'default' muss eine Zahl sein, nicht %1</translation>
+        <location line="+10"/>
+        <source>&apos;default&apos; must be a number, not %1</source>
+        <translation>&apos;default&apos; muss eine Zahl sein, nicht %1</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>'default' %1 is none of the enum's values</source>
-        <translation>'default' %1 ist keiner der Werte der Aufzählung</translation>
+        <location line="+5"/>
+        <source>&apos;default&apos; %1 is none of the enum&apos;s values</source>
+        <translation>&apos;default&apos; %1 ist keiner der Werte der Aufzählung</translation>
     </message>
     <message>
-        <location line="+15" />
-        <source>'default' of a %1 must be a whole number, not %2</source>
-        <translation>'default' eines %1 muss eine ganze Zahl sein, nicht %2</translation>
+        <location line="+15"/>
+        <source>&apos;default&apos; of a %1 must be a whole number, not %2</source>
+        <translation>&apos;default&apos; eines %1 muss eine ganze Zahl sein, nicht %2</translation>
     </message>
     <message>
-        <location line="+8" />
-        <source>'default' %1 is outside the entry's range %2..%3</source>
-        <translation>'default' %1 liegt außerhalb des Bereichs %2..%3 des Eintrags</translation>
+        <location line="+8"/>
+        <source>&apos;default&apos; %1 is outside the entry&apos;s range %2..%3</source>
+        <translation>&apos;default&apos; %1 liegt außerhalb des Bereichs %2..%3 des Eintrags</translation>
     </message>
     <message>
-        <location line="+11" />
-        <source>'bits' is only for bit fields</source>
-        <translation>'bits' ist nur für Bitfelder zulässig</translation>
+        <location line="+11"/>
+        <source>&apos;bits&apos; is only for bit fields</source>
+        <translation>&apos;bits&apos; ist nur für Bitfelder zulässig</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>a bit field needs 'bits'</source>
-        <translation>ein Bitfeld benötigt 'bits'</translation>
+        <location line="+4"/>
+        <source>a bit field needs &apos;bits&apos;</source>
+        <translation>ein Bitfeld benötigt &apos;bits&apos;</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>a bit must be an object</source>
         <translation>ein Bit muss ein Objekt sein</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>%1, bit %2</source>
         <translation>%1, Bit %2</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+14"/>
         <source>bit number must be 0..15</source>
         <translation>Bitnummer muss 0..15 sein</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>bit field of width %1 does not fit in 16 bits</source>
         <translation>Bitfeld der Breite %1 passt nicht in 16 Bit</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>a bit needs an id of lower case letters, digits and '_'</source>
-        <translation>ein Bit benötigt eine Kennung aus Kleinbuchstaben, Ziffern und '_'</translation>
+        <location line="+4"/>
+        <source>a bit needs an id of lower case letters, digits and &apos;_&apos;</source>
+        <translation>ein Bit benötigt eine Kennung aus Kleinbuchstaben, Ziffern und &apos;_&apos;</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>duplicate bit id '%1'</source>
-        <translation>doppelte Bitkennung '%1'</translation>
+        <location line="+2"/>
+        <source>duplicate bit id &apos;%1&apos;</source>
+        <translation>doppelte Bitkennung &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>a bit needs a label</source>
         <translation>ein Bit benötigt eine Bezeichnung</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>unknown kind '%1' (expected alarm, warning, status or command)</source>
-        <translation>unbekannte Art '%1' (erwartet: alarm, warning, status oder command)</translation>
+        <location line="+5"/>
+        <source>unknown kind &apos;%1&apos; (expected alarm, warning, status or command)</source>
+        <translation>unbekannte Art &apos;%1&apos; (erwartet: alarm, warning, status oder command)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>bit defined twice</source>
         <translation>Bit doppelt definiert</translation>
     </message>
     <message>
-        <location line="+13" />
-        <source>refers to unknown entry '%1'</source>
-        <translation>verweist auf unbekannten Eintrag '%1'</translation>
+        <location line="+13"/>
+        <source>refers to unknown entry &apos;%1&apos;</source>
+        <translation>verweist auf unbekannten Eintrag &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>refers to unknown bit '%1' of '%2'</source>
-        <translation>verweist auf unbekanntes Bit '%1' von '%2'</translation>
+        <location line="+4"/>
+        <source>refers to unknown bit &apos;%1&apos; of &apos;%2&apos;</source>
+        <translation>verweist auf unbekanntes Bit &apos;%1&apos; von &apos;%2&apos;</translation>
     </message>
     <message>
-        <location line="+13" />
-        <source>entry '%1', bit %2</source>
-        <translation>Eintrag '%1', Bit %2</translation>
+        <location line="+13"/>
+        <source>entry &apos;%1&apos;, bit %2</source>
+        <translation>Eintrag &apos;%1&apos;, Bit %2</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>'stateFrom' is only for write-only words (a readable word reports its own bits)</source>
-        <translation>'stateFrom' gibt es nur für Nur-Schreib-Wörter (ein lesbares Wort meldet seine Bits selbst)</translation>
+        <location line="+2"/>
+        <source>&apos;stateFrom&apos; is only for write-only words (a readable word reports its own bits)</source>
+        <translation>&apos;stateFrom&apos; gibt es nur für Nur-Schreib-Wörter (ein lesbares Wort meldet seine Bits selbst)</translation>
     </message>
     <message>
-        <location line="+8" />
-        <source>'stateFrom' must name a single bit of a readable bit field</source>
-        <translation>'stateFrom' muss ein einzelnes Bit eines lesbaren Bitfelds nennen</translation>
+        <location line="+8"/>
+        <source>&apos;stateFrom&apos; must name a single bit of a readable bit field</source>
+        <translation>&apos;stateFrom&apos; muss ein einzelnes Bit eines lesbaren Bitfelds nennen</translation>
     </message>
     <message>
-        <location line="+13" />
-        <source>unknown model '%1' (expected power_controller or process_controller)</source>
-        <translation>unbekanntes Modell '%1' (erwartet: power_controller oder process_controller)</translation>
+        <location line="+13"/>
+        <source>unknown model &apos;%1&apos; (expected power_controller or process_controller)</source>
+        <translation>unbekanntes Modell &apos;%1&apos; (erwartet: power_controller oder process_controller)</translation>
     </message>
     <message>
-        <location line="+35" />
-        <source>a limit needs 'above' or 'below' (an entry id or a number)</source>
-        <translation>ein Grenzwert benötigt 'above' oder 'below' (eine Eintragskennung oder eine Zahl)</translation>
+        <location line="+35"/>
+        <source>a limit needs &apos;above&apos; or &apos;below&apos; (an entry id or a number)</source>
+        <translation>ein Grenzwert benötigt &apos;above&apos; oder &apos;below&apos; (eine Eintragskennung oder eine Zahl)</translation>
     </message>
     <message>
-        <location line="+13" />
-        <source>unknown action '%1'</source>
-        <translation>unbekannte Aktion '%1'</translation>
+        <location line="+13"/>
+        <source>unknown action &apos;%1&apos;</source>
+        <translation>unbekannte Aktion &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>a link is a pair of references</source>
         <translation>eine Verknüpfung ist ein Paar von Verweisen</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+21"/>
         <source>duplicate id (also at %1)</source>
         <translation>doppelte Kennung (auch bei %1)</translation>
     </message>
     <message>
-        <location line="+5" />
-        <location line="+2" />
-        <source>entry '%1'</source>
-        <translation>Eintrag '%1'</translation>
+        <location line="+5"/>
+        <location line="+2"/>
+        <source>entry &apos;%1&apos;</source>
+        <translation>Eintrag &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="-2" />
-        <source>alias of unknown entry '%1'</source>
-        <translation>Alias eines unbekannten Eintrags '%1'</translation>
+        <location line="-2"/>
+        <source>alias of unknown entry &apos;%1&apos;</source>
+        <translation>Alias eines unbekannten Eintrags &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>runs past address 0xFFFF</source>
         <translation>reicht über Adresse 0xFFFF hinaus</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/overlapcheck.cpp" line="-33" />
-        <source>'%1' (%2..%3)</source>
-        <translation>'%1' (%2..%3)</translation>
+        <location filename="../lib/protocol/overlapcheck.cpp" line="-33"/>
+        <source>&apos;%1&apos; (%2..%3)</source>
+        <translation>&apos;%1&apos; (%2..%3)</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+28"/>
         <source>words %1..%2 overlap entry %3</source>
         <translation>Wörter %1..%2 überschneiden sich mit Eintrag %3</translation>
     </message>
     <message numerus="yes">
-        <location line="+4" />
+        <location line="+4"/>
         <source> and %n more entries</source>
         <translation>
             <numerusform> und %n weiteren Eintrag</numerusform>
@@ -3489,7 +3494,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+15" />
+        <location line="+15"/>
         <source>%n more group(s) of overlapping entries not listed</source>
         <translation>
             <numerusform>%n weitere Gruppe überlappender Einträge nicht aufgeführt</numerusform>
@@ -3500,60 +3505,60 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ParameterEditModel</name>
     <message>
-        <location filename="../lib/models/parametereditmodel.cpp" line="+185" />
-        <location line="+260" />
+        <location filename="../lib/models/parametereditmodel.cpp" line="+185"/>
+        <location line="+260"/>
         <source>On</source>
         <translation>Ein</translation>
     </message>
     <message>
-        <location line="-260" />
-        <location line="+262" />
+        <location line="-260"/>
+        <location line="+262"/>
         <source>Off</source>
         <translation>Aus</translation>
     </message>
     <message>
-        <location line="-243" />
+        <location line="-243"/>
         <source>write-only</source>
         <translation>nur schreibbar</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>%1 (stale)</source>
         <translation>%1 (veraltet)</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+28"/>
         <source>Not written: %1</source>
         <translation>Nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Writing...</source>
         <translation>Wird geschrieben...</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Confirmed: %1</source>
         <translation>Bestätigt: %1</translation>
     </message>
     <message>
-        <location line="+0" />
-        <location filename="../ui/parametereditor.cpp" line="+167" />
+        <location line="+0"/>
+        <location filename="../ui/parametereditor.cpp" line="+167"/>
         <source>Confirmed by read-back: %1</source>
         <translation>Durch Rücklesen bestätigt: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Refused: %1</source>
         <translation>Abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Unknown, check the device: %1</source>
         <translation>Unbekannt, bitte am Gerät prüfen: %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+16" />
+        <location line="+16"/>
         <source>%1 (%n changed)</source>
         <translation>
             <numerusform>%1 (%n geändert)</numerusform>
@@ -3561,137 +3566,137 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+47" />
+        <location line="+47"/>
         <source>EEPROM</source>
         <translation>EEPROM</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>RAM</source>
         <translation>RAM</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+15"/>
         <source>%1, register %2, %3</source>
         <translation>%1, Register %2, %3</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Changed: %1 waits to be written</source>
         <translation>Geändert: %1 wartet darauf, geschrieben zu werden</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Precondition: %1</source>
         <translation>Voraussetzung: %1</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>Status: %1</source>
         <translation>Status: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Last known value: %1, %2 s ago</source>
         <translation>Letzter bekannter Wert: %1, vor %2 s</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>The device cannot report this value.</source>
         <translation>Das Gerät kann diesen Wert nicht melden.</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Not written yet</source>
         <translation>Noch nicht geschrieben</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Stored in EEPROM: every write wears it (about 10,000 write cycles).</source>
         <translation>Im EEPROM gespeichert: jedes Schreiben nutzt es ab (etwa 10.000 Schreibzyklen).</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Kept in RAM: lost when the device is switched off.</source>
         <translation>Im RAM gehalten: geht beim Ausschalten des Geräts verloren.</translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+36"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Device value</source>
         <translation>Gerätewert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>New value</source>
         <translation>Neuer Wert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Unit</source>
         <translation>Einheit</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Storage</source>
         <translation>Speicherort</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Last write</source>
         <translation>Letztes Schreiben</translation>
     </message>
     <message>
-        <location line="+10" />
-        <source>'%1' is no parameter listed here</source>
+        <location line="+10"/>
+        <source>&apos;%1&apos; is no parameter listed here</source>
         <translation>„%1“ ist kein hier aufgeführter Parameter</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>read-only mode: nothing is changed or written</source>
         <translation>Nur-Lese-Modus: es wird nichts geändert oder geschrieben</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>a write is under way: changes wait until it has ended</source>
         <translation>es wird gerade geschrieben: Änderungen warten, bis das beendet ist</translation>
     </message>
     <message>
-        <location line="+24" />
-        <source>'%1' is no number that can be read one way only: write it without thousands separators</source>
+        <location line="+24"/>
+        <source>&apos;%1&apos; is no number that can be read one way only: write it without thousands separators</source>
         <translation>„%1“ ist keine eindeutig lesbare Zahl: bitte ohne Tausenderpunkte schreiben</translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+36"/>
         <source>%1 is not a whole number: %2 takes whole numbers only</source>
         <translation>%1 ist keine ganze Zahl: %2 nimmt nur ganze Zahlen an</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>%1 to %2</source>
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1 or more</source>
         <translation>%1 oder mehr</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>up to %1</source>
         <translation>bis %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1 is out of range: %2 takes %3</source>
         <translation>%1 liegt außerhalb des Bereichs: %2 nimmt %3 an</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+28"/>
         <source>%1 already holds %2: no change</source>
         <translation>%1 hat bereits %2: keine Änderung</translation>
     </message>
@@ -3699,22 +3704,22 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ParameterEditor</name>
     <message>
-        <location filename="../ui/parametereditor.cpp" line="-90" />
+        <location filename="../ui/parametereditor.cpp" line="-90"/>
         <source>Lo&amp;ad backup...</source>
         <translation>Sicherung lade&amp;n...</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Dis&amp;card changes</source>
         <translation>Änderungen &amp;verwerfen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>S&amp;top after this write</source>
         <translation>Nach diesem Schreiben anhal&amp;ten</translation>
     </message>
     <message numerus="yes">
-        <location line="+18" />
+        <location line="+18"/>
         <source>All %n parameter(s) listed here are stored in EEPROM: every write wears it (about 10,000 write cycles). Write only what needs changing.</source>
         <translation>
             <numerusform>Der hier aufgeführte Parameter ist im EEPROM gespeichert: jedes Schreiben nutzt es ab (etwa 10.000 Schreibzyklen). Nur schreiben, was sich ändern muss.</numerusform>
@@ -3722,7 +3727,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+4" />
+        <location line="+4"/>
         <source>%1 of the %n parameter(s) listed here are stored in EEPROM: every write wears it (about 10,000 write cycles). Write only what needs changing.</source>
         <translation>
             <numerusform>%1 des hier aufgeführten Parameters ist im EEPROM gespeichert: jedes Schreiben nutzt es ab (etwa 10.000 Schreibzyklen). Nur schreiben, was sich ändern muss.</numerusform>
@@ -3730,105 +3735,105 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>The parameters listed here are kept in RAM: the device loses them when it is switched off.</source>
         <translation>Die hier aufgeführten Parameter werden im RAM gehalten: das Gerät verliert sie beim Ausschalten.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>This device has no parameters to edit.</source>
         <translation>Dieses Gerät hat keine Parameter zum Bearbeiten.</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>&amp;Search:</source>
         <translation>S&amp;uchen:</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Name, id or address</source>
         <translation>Name, Kennung oder Adresse</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Shows the parameters whose name, id or register address contains this text (Ctrl+F).</source>
         <translation>Zeigt die Parameter, deren Name, Kennung oder Registeradresse diesen Text enthält (Strg+F).</translation>
     </message>
     <message>
-        <location line="+46" />
+        <location line="+46"/>
         <source>%1 (stale)</source>
         <translation>%1 (veraltet)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>EEPROM</source>
         <translation>EEPROM</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>RAM</source>
         <translation>RAM</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Take back this change</source>
         <translation>Diese Änderung zurücknehmen</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+24"/>
         <source>Not taken for %1: %2</source>
         <translation>Für %1 nicht übernommen: %2</translation>
     </message>
     <message>
-        <location line="+7" />
-        <location line="+136" />
-        <source>Shows the changes with the device's values first; nothing is written before you confirm.</source>
+        <location line="+7"/>
+        <location line="+136"/>
+        <source>Shows the changes with the device&apos;s values first; nothing is written before you confirm.</source>
         <translation>Zeigt zuerst die Änderungen mit den Werten des Geräts; geschrieben wird erst nach Ihrer Bestätigung.</translation>
     </message>
     <message>
-        <location line="-135" />
-        <location line="+143" />
+        <location line="-135"/>
+        <location line="+143"/>
         <source>Fills in the values of a parameter backup file that differ from the device, to check before writing them.</source>
         <translation>Trägt die Werte einer Parametersicherung ein, die vom Gerät abweichen, zum Prüfen vor dem Schreiben.</translation>
     </message>
     <message>
-        <location line="-141" />
+        <location line="-141"/>
         <source>Drops every change that has not been written.</source>
         <translation>Verwirft jede Änderung, die noch nicht geschrieben ist.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The write under way ends as usual; the changes after it are not written and stay.</source>
         <translation>Das laufende Schreiben endet wie gewohnt; die Änderungen danach werden nicht geschrieben und bleiben erhalten.</translation>
     </message>
     <message>
-        <location line="+5" />
-        <location line="+367" />
+        <location line="+5"/>
+        <location line="+367"/>
         <source>stopped before its turn</source>
         <translation>angehalten, bevor es an der Reihe war</translation>
     </message>
     <message>
-        <location line="-362" />
+        <location line="-362"/>
         <source>Load parameter backup</source>
         <translation>Parametersicherung laden</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter files (*.json)</source>
         <translation>Parameterdateien (*.json)</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>Writing %1 of %2...</source>
         <translation>Schreibe %1 von %2...</translation>
     </message>
     <message>
-        <location line="+85" />
-        <source>No parameter matches "%1".</source>
+        <location line="+85"/>
+        <source>No parameter matches &quot;%1&quot;.</source>
         <translation>Kein Parameter passt zu „%1“.</translation>
     </message>
     <message numerus="yes">
-        <location line="+19" />
+        <location line="+19"/>
         <source>&amp;Write %n change(s)</source>
         <translation>
             <numerusform>%n Änderung s&amp;chreiben</numerusform>
@@ -3836,23 +3841,23 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>&amp;Write changes</source>
         <translation>Änderungen s&amp;chreiben</translation>
     </message>
     <message>
-        <location line="+3" />
-        <location line="+141" />
+        <location line="+3"/>
+        <location line="+141"/>
         <source>Read-only mode: nothing is written to the devices.</source>
         <translation>Nur-Lese-Modus: Es wird nichts auf die Geräte geschrieben.</translation>
     </message>
     <message>
-        <location line="-139" />
+        <location line="-139"/>
         <source>Not now: %1. The changes can be written once the device answers.</source>
         <translation>Jetzt nicht: %1. Die Änderungen können geschrieben werden, sobald das Gerät antwortet.</translation>
     </message>
     <message numerus="yes">
-        <location line="+8" />
+        <location line="+8"/>
         <source>%n change(s) not written yet</source>
         <translation>
             <numerusform>%n Änderung noch nicht geschrieben</numerusform>
@@ -3860,23 +3865,23 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>No changes</source>
         <translation>Keine Änderungen</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+31" />
+        <location line="+1"/>
+        <location line="+31"/>
         <source>Read-only mode: nothing is changed or written.</source>
         <translation>Nur-Lese-Modus: Es wird nichts geändert oder geschrieben.</translation>
     </message>
     <message>
-        <location line="-19" />
+        <location line="-19"/>
         <source>the device stopped answering (%1)</source>
         <translation>das Gerät antwortet nicht mehr (%1)</translation>
     </message>
     <message numerus="yes">
-        <location line="+13" />
+        <location line="+13"/>
         <source>%n change(s) discarded.</source>
         <translation>
             <numerusform>%n Änderung verworfen.</numerusform>
@@ -3884,35 +3889,35 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+10" />
-        <location line="+99" />
+        <location line="+10"/>
+        <location line="+99"/>
         <source>Wait until the read or write under way has ended.</source>
         <translation>Bitte warten, bis das laufende Lesen oder Schreiben beendet ist.</translation>
     </message>
     <message>
-        <location line="-92" />
-        <location line="+12" />
-        <location line="+24" />
+        <location line="-92"/>
+        <location line="+12"/>
+        <location line="+24"/>
         <source>Not loaded: %1</source>
         <translation>Nicht geladen: %1</translation>
     </message>
     <message>
-        <location line="-30" />
+        <location line="-30"/>
         <source>Not loaded: %1: %2</source>
         <translation>Nicht geladen: %1: %2</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>Not loaded: %1. A backup is compared with the device, which must answer.</source>
         <translation>Nicht geladen: %1. Eine Sicherung wird mit dem Gerät verglichen, das dafür antworten muss.</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>Reading the device's parameters to compare with %1...</source>
+        <location line="+5"/>
+        <source>Reading the device&apos;s parameters to compare with %1...</source>
         <translation>Die Parameter des Geräts werden zum Vergleich mit %1 gelesen...</translation>
     </message>
     <message numerus="yes">
-        <location line="+8" />
+        <location line="+8"/>
         <source>and %n more</source>
         <translation>
             <numerusform>und %n weiterer</numerusform>
@@ -3920,17 +3925,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Not loaded: these could not be read from the device to compare: %1</source>
         <translation>Nicht geladen: diese konnten zum Vergleich nicht vom Gerät gelesen werden: %1</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>Not loaded: a write started meanwhile.</source>
         <translation>Nicht geladen: inzwischen hat ein Schreiben begonnen.</translation>
     </message>
     <message numerus="yes">
-        <location line="+22" />
+        <location line="+22"/>
         <source>%1: %n value(s) that differ from the device filled in as changes; check them and write them.</source>
         <translation>
             <numerusform>%1: %n vom Gerät abweichender Wert als Änderung eingetragen; bitte prüfen und schreiben.</numerusform>
@@ -3938,12 +3943,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>%1: every parameter listed here matches the device, nothing to fill in.</source>
         <translation>%1: jeder hier aufgeführte Parameter stimmt mit dem Gerät überein, nichts einzutragen.</translation>
     </message>
     <message numerus="yes">
-        <location line="+2" />
+        <location line="+2"/>
         <source>%n parameter(s) the file does not hold are left as they are.</source>
         <translation>
             <numerusform>%n Parameter, den die Datei nicht enthält, bleibt, wie er ist.</numerusform>
@@ -3951,7 +3956,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+2" />
+        <location line="+2"/>
         <source>%n differing value(s) of the file are not on this page (setpoints and the like); the Parameters dialog restores them.</source>
         <translation>
             <numerusform>%n abweichender Wert der Datei steht nicht auf dieser Seite (Sollwerte und dergleichen); der Parameter-Dialog stellt ihn wieder her.</numerusform>
@@ -3959,28 +3964,28 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Not taken: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+30"/>
         <source>Nothing to write: no parameter is changed.</source>
         <translation>Nichts zu schreiben: kein Parameter ist geändert.</translation>
     </message>
     <message>
-        <location line="+4" />
-        <location line="+34" />
+        <location line="+4"/>
+        <location line="+34"/>
         <source>Not written: %1. The changes stay and can be written once the device answers.</source>
         <translation>Nicht geschrieben: %1. Die Änderungen bleiben und können geschrieben werden, sobald das Gerät antwortet.</translation>
     </message>
     <message>
-        <location line="-16" />
+        <location line="-16"/>
         <source>%1 at address %2</source>
         <translation>%1 an Adresse %2</translation>
     </message>
     <message numerus="yes">
-        <location line="+44" />
+        <location line="+44"/>
         <source>Writing %n change(s), each verified by reading it back...</source>
         <translation>
             <numerusform>%n Änderung wird geschrieben und durch Rücklesen geprüft...</numerusform>
@@ -3988,12 +3993,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+14"/>
         <source>the write of %1 ended unknown; check the device first</source>
         <translation>das Schreiben von %1 endete unbekannt; bitte zuerst das Gerät prüfen</translation>
     </message>
     <message numerus="yes">
-        <location line="+35" />
+        <location line="+35"/>
         <source>%1 of %n change(s) written and confirmed by read-back.</source>
         <translation>
             <numerusform>%1 von %n Änderung geschrieben und durch Rücklesen bestätigt.</numerusform>
@@ -4001,7 +4006,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+2" />
+        <location line="+2"/>
         <source>%n refused.</source>
         <translation>
             <numerusform>%n abgelehnt.</numerusform>
@@ -4009,7 +4014,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+2" />
+        <location line="+2"/>
         <source>%n with an unknown outcome: check the device.</source>
         <translation>
             <numerusform>%n mit unbekanntem Ausgang: bitte am Gerät prüfen.</numerusform>
@@ -4017,7 +4022,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+2" />
+        <location line="+2"/>
         <source>%n not written (%1).</source>
         <translation>
             <numerusform>%n nicht geschrieben (%1).</numerusform>
@@ -4025,30 +4030,30 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>stopped</source>
         <translation>angehalten</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>What was not confirmed stays as a change; see "Last write".</source>
+        <location line="+2"/>
+        <source>What was not confirmed stays as a change; see &quot;Last write&quot;.</source>
         <translation>Was nicht bestätigt ist, bleibt als Änderung; siehe „Letztes Schreiben“.</translation>
     </message>
 </context>
 <context>
     <name>jumo::ParameterReadJob</name>
     <message>
-        <location filename="../lib/commissioning/parameterreadjob.cpp" line="+18" />
+        <location filename="../lib/commissioning/parameterreadjob.cpp" line="+18"/>
         <source>unknown device</source>
         <translation>unbekanntes Gerät</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+26"/>
         <source>the device was removed</source>
         <translation>das Gerät wurde entfernt</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+26"/>
         <source>could not be read: %1</source>
         <translation>konnte nicht gelesen werden: %1</translation>
     </message>
@@ -4056,75 +4061,75 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ParameterSet</name>
     <message>
-        <location filename="../lib/commissioning/parameterset.cpp" line="+73" />
+        <location filename="../lib/commissioning/parameterset.cpp" line="+73"/>
         <source>not a parameter file: %1 at byte %2</source>
         <translation>keine Parameterdatei: %1 bei Byte %2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>not a parameter file: a control character at byte %1</source>
         <translation>keine Parameterdatei: ein Steuerzeichen bei Byte %1</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>the parameter file names '%1' twice (again at byte %2): which value is meant is not clear</source>
-        <translation>die Parameterdatei nennt '%1' zweimal (erneut bei Byte %2): welcher Wert gemeint ist, ist nicht klar</translation>
+        <location line="+4"/>
+        <source>the parameter file names &apos;%1&apos; twice (again at byte %2): which value is meant is not clear</source>
+        <translation>die Parameterdatei nennt &apos;%1&apos; zweimal (erneut bei Byte %2): welcher Wert gemeint ist, ist nicht klar</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>not a parameter file (no "format": "jumo-parameters")</source>
-        <translation>keine Parameterdatei (kein "format": "jumo-parameters")</translation>
+        <location line="+5"/>
+        <source>not a parameter file (no &quot;format&quot;: &quot;jumo-parameters&quot;)</source>
+        <translation>keine Parameterdatei (kein &quot;format&quot;: &quot;jumo-parameters&quot;)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>parameter file version %1 is not supported (expected %2)</source>
         <translation>Version %1 der Parameterdatei wird nicht unterstützt (erwartet: %2)</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>the parameter file lacks "family" or "values"</source>
-        <translation>der Parameterdatei fehlt "family" oder "values"</translation>
+        <location line="+4"/>
+        <source>the parameter file lacks &quot;family&quot; or &quot;values&quot;</source>
+        <translation>der Parameterdatei fehlt &quot;family&quot; oder &quot;values&quot;</translation>
     </message>
     <message>
-        <location line="+11" />
-        <source>'time' is no ISO 8601 time: %1</source>
-        <translation>'time' ist keine ISO-8601-Zeit: %1</translation>
+        <location line="+11"/>
+        <source>&apos;time&apos; is no ISO 8601 time: %1</source>
+        <translation>&apos;time&apos; ist keine ISO-8601-Zeit: %1</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>'identity' must be an object</source>
-        <translation>'identity' muss ein Objekt sein</translation>
+        <location line="+3"/>
+        <source>&apos;identity&apos; must be an object</source>
+        <translation>&apos;identity&apos; muss ein Objekt sein</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>the value of '%1' must be a text</source>
-        <translation>der Wert von '%1' muss ein Text sein</translation>
+        <location line="+9"/>
+        <source>the value of &apos;%1&apos; must be a text</source>
+        <translation>der Wert von &apos;%1&apos; muss ein Text sein</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>the file is for the family %1, the device is %2</source>
         <translation>die Datei gehört zur Gerätefamilie %1, das Gerät ist %2</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>the file is from software version %1, the device runs %2</source>
         <translation>die Datei stammt von Softwareversion %1, auf dem Gerät läuft %2</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>'%1' in the file is no parameter of %2</source>
-        <translation>'%1' in der Datei ist kein Parameter von %2</translation>
+        <location line="+4"/>
+        <source>&apos;%1&apos; in the file is no parameter of %2</source>
+        <translation>&apos;%1&apos; in der Datei ist kein Parameter von %2</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>'%1' in the file: %2</source>
-        <translation>'%1' in der Datei: %2</translation>
+        <location line="+3"/>
+        <source>&apos;%1&apos; in the file: %2</source>
+        <translation>&apos;%1&apos; in der Datei: %2</translation>
     </message>
 </context>
 <context>
     <name>jumo::ParameterTransfer</name>
     <message>
-        <location filename="../lib/commissioning/parametertransfer.cpp" line="+14" />
+        <location filename="../lib/commissioning/parametertransfer.cpp" line="+14"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
@@ -4132,37 +4137,37 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ParameterValueDelegate</name>
     <message>
-        <location filename="../ui/parametervaluedelegate.cpp" line="+35" />
+        <location filename="../ui/parametervaluedelegate.cpp" line="+35"/>
         <source>%1 to %2</source>
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1 or more</source>
         <translation>%1 oder mehr</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>up to %1</source>
         <translation>bis %1</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+21"/>
         <source>Off</source>
         <translation>Aus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>On</source>
         <translation>Ein</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+17"/>
         <source>Takes %1</source>
         <translation>Nimmt %1 an</translation>
     </message>
     <message numerus="yes">
-        <location line="+2" />
+        <location line="+2"/>
         <source>The device shows %n decimal(s)</source>
         <translation>
             <numerusform>Das Gerät zeigt %n Nachkommastelle</numerusform>
@@ -4170,7 +4175,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Enter takes the value, Escape leaves it as it was; an empty field drops the change.</source>
         <translation>Eingabe übernimmt den Wert, Esc lässt ihn, wie er war; ein leeres Feld verwirft die Änderung.</translation>
     </message>
@@ -4178,12 +4183,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ParameterWriteJob</name>
     <message>
-        <location filename="../lib/commissioning/parameterwritejob.cpp" line="+34" />
+        <location filename="../lib/commissioning/parameterwritejob.cpp" line="+34"/>
         <source>cancelled after %1 of %2 writes</source>
         <translation>abgebrochen nach %1 von %2 Schreibvorgängen</translation>
     </message>
     <message numerus="yes">
-        <location line="+5" />
+        <location line="+5"/>
         <source>%n write(s) failed</source>
         <translation>
             <numerusform>%n Schreibvorgang fehlgeschlagen</numerusform>
@@ -4194,12 +4199,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ParameterWritePreview</name>
     <message>
-        <location filename="../ui/parameterwritepreview.cpp" line="+21" />
+        <location filename="../ui/parameterwritepreview.cpp" line="+21"/>
         <source>Write parameters</source>
         <translation>Parameter schreiben</translation>
     </message>
     <message numerus="yes">
-        <location line="+5" />
+        <location line="+5"/>
         <source>Write these %n change(s) to %1? Each is written once and verified by reading it back.</source>
         <translation>
             <numerusform>Diese %n Änderung auf %1 schreiben? Sie wird einmal geschrieben und durch Rücklesen geprüft.</numerusform>
@@ -4207,7 +4212,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+9" />
+        <location line="+9"/>
         <source>%n of them are stored in EEPROM, which wears with every write.</source>
         <translation>
             <numerusform>%n davon ist im EEPROM gespeichert, das sich mit jedem Schreiben abnutzt.</numerusform>
@@ -4215,37 +4220,37 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Device value</source>
         <translation>Gerätewert</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>New value</source>
         <translation>Neuer Wert</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Unit</source>
         <translation>Einheit</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Last write</source>
         <translation>Letztes Schreiben</translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+36"/>
         <source>A change whose last write is unknown may already be on the device: writing it again sends the same value once more.</source>
         <translation>Eine Änderung, deren letztes Schreiben unbekannt endete, kann schon auf dem Gerät sein: erneutes Schreiben sendet denselben Wert noch einmal.</translation>
     </message>
     <message numerus="yes">
-        <location line="+9" />
+        <location line="+9"/>
         <source>&amp;Write %n change(s)</source>
         <translation>
             <numerusform>%n Änderung s&amp;chreiben</numerusform>
@@ -4253,7 +4258,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -4261,82 +4266,82 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ParametersDialog</name>
     <message>
-        <location filename="../ui/parametersdialog.cpp" line="+22" />
+        <location filename="../ui/parametersdialog.cpp" line="+22"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Parameters of %1 at address %2</source>
         <translation>Parameter von %1 an Adresse %2</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Unit</source>
         <translation>Einheit</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Result</source>
         <translation>Ergebnis</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Parameter files (*.json)</source>
         <translation>Parameterdateien (*.json)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Back up to file...</source>
         <translation>In Datei sichern...</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Compare with file...</source>
         <translation>Mit Datei vergleichen...</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Restore from file...</source>
         <translation>Aus Datei wiederherstellen...</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Back up parameters</source>
         <translation>Parameter sichern</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Compare with</source>
         <translation>Vergleichen mit</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Restore from</source>
         <translation>Wiederherstellen aus</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Restore parameters</source>
         <translation>Parameter wiederherstellen</translation>
     </message>
     <message numerus="yes">
-        <location line="+1" />
+        <location line="+1"/>
         <source>Write %n parameter(s) that differ to the device? Each is verified by reading it back; EEPROM parameters wear with every write.</source>
         <translation>
             <numerusform>%n abweichenden Parameter auf das Gerät schreiben? Er wird durch Rücklesen geprüft; EEPROM-Parameter verschleißen mit jedem Schreiben.</numerusform>
@@ -4344,23 +4349,23 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+52" />
+        <location line="+52"/>
         <source>Cannot read %1</source>
         <translation>%1 kann nicht gelesen werden</translation>
     </message>
     <message>
-        <location line="+26" />
-        <location line="+29" />
+        <location line="+26"/>
+        <location line="+29"/>
         <source>Reading all parameters...</source>
         <translation>Alle Parameter werden gelesen...</translation>
     </message>
     <message>
-        <location line="-24" />
+        <location line="-24"/>
         <source>Not saved: these could not be read: %1</source>
         <translation>Nicht gesichert: diese konnten nicht gelesen werden: %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+8" />
+        <location line="+8"/>
         <source>%n parameter(s) saved to %1</source>
         <translation>
             <numerusform>%n Parameter in %1 gesichert</numerusform>
@@ -4368,24 +4373,24 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+12" />
-        <location line="+43" />
+        <location line="+12"/>
+        <location line="+43"/>
         <source>Refused: %1</source>
         <translation>Abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="-26" />
-        <location line="+21" />
+        <location line="-26"/>
+        <location line="+21"/>
         <source>Could not read: %1</source>
         <translation>Nicht lesbar: %1</translation>
     </message>
     <message>
-        <location line="-16" />
+        <location line="-16"/>
         <source>The device matches the file.</source>
         <translation>Das Gerät stimmt mit der Datei überein.</translation>
     </message>
     <message numerus="yes">
-        <location line="+1" />
+        <location line="+1"/>
         <source>%n parameter(s) differ from the file.</source>
         <translation>
             <numerusform>%n Parameter weicht von der Datei ab.</numerusform>
@@ -4393,7 +4398,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+29" />
+        <location line="+29"/>
         <source>Nothing to write: the %n parameter(s) that differ are missing from the file and are left as they are.</source>
         <translation>
             <numerusform>Nichts zu schreiben: Der %n abweichende Parameter fehlt in der Datei und bleibt unverändert.</numerusform>
@@ -4401,22 +4406,22 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>The device already matches the file: nothing to write.</source>
         <translation>Das Gerät stimmt bereits mit der Datei überein: nichts zu schreiben.</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>Nothing written.</source>
         <translation>Nichts geschrieben.</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Writing...</source>
         <translation>Schreiben...</translation>
     </message>
     <message numerus="yes">
-        <location line="+14" />
+        <location line="+14"/>
         <source>Cancelled after %n verified write(s).</source>
         <translation>
             <numerusform>Abgebrochen nach %n geprüften Schreibvorgang.</numerusform>
@@ -4424,12 +4429,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1 written and verified, %2 failed: see the table.</source>
         <translation>%1 geschrieben und geprüft, %2 fehlgeschlagen: siehe Tabelle.</translation>
     </message>
     <message numerus="yes">
-        <location line="+1" />
+        <location line="+1"/>
         <source>%n parameter(s) restored and verified.</source>
         <translation>
             <numerusform>%n Parameter wiederhergestellt und geprüft.</numerusform>
@@ -4440,47 +4445,47 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::PortAccess</name>
     <message>
-        <location filename="../lib/bus/portaccess.cpp" line="+138" />
-        <source>there is no such port: is the adapter plugged in? 'jumoctl ports' lists the serial ports.</source>
-        <translation>diese Schnittstelle gibt es nicht: Ist der Adapter eingesteckt? 'jumoctl ports' listet die seriellen Schnittstellen auf.</translation>
+        <location filename="../lib/bus/portaccess.cpp" line="+138"/>
+        <source>there is no such port: is the adapter plugged in? &apos;jumoctl ports&apos; lists the serial ports.</source>
+        <translation>diese Schnittstelle gibt es nicht: Ist der Adapter eingesteckt? &apos;jumoctl ports&apos; listet die seriellen Schnittstellen auf.</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>no permission to reach %1.</source>
         <translation>keine Berechtigung, %1 zu erreichen.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>no permission: %1 (owner %2, group %3, mode %4) is not open to a group. Ask the administrator to give it to the group dialout (a udev rule).</source>
         <translation>keine Berechtigung: %1 (Eigentümer %2, Gruppe %3, Modus %4) ist für keine Gruppe freigegeben. Bitten Sie den Administrator, es der Gruppe dialout zu geben (eine udev-Regel).</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>no permission: %1 belongs to the group '%2'; you are in it, but this login started before you joined: log out and in again.</source>
-        <translation>keine Berechtigung: %1 gehört der Gruppe '%2'; Sie sind Mitglied, aber diese Anmeldung begann vor dem Beitritt: ab- und wieder anmelden.</translation>
+        <location line="+4"/>
+        <source>no permission: %1 belongs to the group &apos;%2&apos;; you are in it, but this login started before you joined: log out and in again.</source>
+        <translation>keine Berechtigung: %1 gehört der Gruppe &apos;%2&apos;; Sie sind Mitglied, aber diese Anmeldung begann vor dem Beitritt: ab- und wieder anmelden.</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>no permission: %1 belongs to the group '%2'. Join it with 'sudo usermod -aG %2 $USER', then log out and in again.</source>
-        <translation>keine Berechtigung: %1 gehört der Gruppe '%2'. Treten Sie ihr mit 'sudo usermod -aG %2 $USER' bei, dann ab- und wieder anmelden.</translation>
+        <location line="+3"/>
+        <source>no permission: %1 belongs to the group &apos;%2&apos;. Join it with &apos;sudo usermod -aG %2 $USER&apos;, then log out and in again.</source>
+        <translation>keine Berechtigung: %1 gehört der Gruppe &apos;%2&apos;. Treten Sie ihr mit &apos;sudo usermod -aG %2 $USER&apos; bei, dann ab- und wieder anmelden.</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>%1 is in use by another program (the system does not tell which).</source>
         <translation>%1 wird von einem anderen Programm benutzt (das System sagt nicht, von welchem).</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>%1 (PID %2)</source>
         <translation>%1 (PID %2)</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>a process</source>
         <translation>einem Prozess</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1 is in use by %2: close it there first.</source>
         <translation>%1 wird benutzt von %2: dort zuerst schließen.</translation>
     </message>
@@ -4488,52 +4493,52 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::PortCommands</name>
     <message>
-        <location filename="../app/cli/portcommands.cpp" line="+53" />
+        <location filename="../app/cli/portcommands.cpp" line="+53"/>
         <source>Lists the serial ports: USB adapters under their stable /dev/serial/by-id names (give that name to --port: it still finds the adapter when it comes back as another ttyUSBn), with description, serial number, the device each is now, and whether it can be opened. Pseudo-terminals are not listed.</source>
         <translation>Listet die seriellen Schnittstellen auf: USB-Adapter unter ihren stabilen /dev/serial/by-id-Namen (diesen Namen bei --port angeben: er findet den Adapter auch, wenn er als anderes ttyUSBn wiederkommt), mit Beschreibung, Seriennummer, der aktuellen Gerätedatei und ob sie sich öffnen lässt. Pseudo-Terminals werden nicht aufgelistet.</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Print a JSON array.</source>
         <translation>Ein JSON-Array ausgeben.</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>No serial ports found (pseudo-terminals are not listed; give their path to --port).</source>
         <translation>Keine seriellen Schnittstellen gefunden (Pseudo-Terminals werden nicht aufgelistet; ihren Pfad bei --port angeben).</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>device now: %1</source>
         <translation>Gerätedatei jetzt: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>description: %1</source>
         <translation>Beschreibung: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>manufacturer: %1</source>
         <translation>Hersteller: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>serial number: %1</source>
         <translation>Seriennummer: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>USB id: %1:%2</source>
         <translation>USB-ID: %1:%2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>access: ok</source>
         <translation>Zugriff: ok</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>access: %1</source>
         <translation>Zugriff: %1</translation>
     </message>
@@ -4541,17 +4546,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::PtyPair</name>
     <message>
-        <location filename="../lib/sim/ptypair.cpp" line="+21" />
+        <location filename="../lib/sim/ptypair.cpp" line="+21"/>
         <source>cannot start socat (is it installed?): %1</source>
         <translation>socat kann nicht gestartet werden (ist es installiert?): %1</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>socat ended: %1</source>
         <translation>socat beendet: %1</translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+36"/>
         <source>socat did not create the pseudo-terminals</source>
         <translation>socat hat die Pseudo-Terminals nicht angelegt</translation>
     </message>
@@ -4559,41 +4564,41 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ReadPlanner</name>
     <message>
-        <location filename="../lib/bus/devicepoll.cpp" line="+53" />
-        <location filename="../lib/protocol/readplanner.cpp" line="+32" />
-        <source>'%1' is not an entry of %2</source>
-        <translation>'%1' ist kein Eintrag von %2</translation>
+        <location filename="../lib/bus/devicepoll.cpp" line="+53"/>
+        <location filename="../lib/protocol/readplanner.cpp" line="+32"/>
+        <source>&apos;%1&apos; is not an entry of %2</source>
+        <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
     <message>
-        <location filename="../lib/protocol/readplanner.cpp" line="+49" />
-        <source>'%1' (%2) is write-only</source>
-        <translation>'%1' (%2) ist nur schreibbar</translation>
+        <location filename="../lib/protocol/readplanner.cpp" line="+49"/>
+        <source>&apos;%1&apos; (%2) is write-only</source>
+        <translation>&apos;%1&apos; (%2) ist nur schreibbar</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>'%1' (%2) spans words that are not all readable</source>
-        <translation>'%1' (%2) umfasst Wörter, die nicht alle lesbar sind</translation>
+        <location line="+5"/>
+        <source>&apos;%1&apos; (%2) spans words that are not all readable</source>
+        <translation>&apos;%1&apos; (%2) umfasst Wörter, die nicht alle lesbar sind</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>'%1' (%2) has %3 words, more than the %4 words one read may take</source>
-        <translation>'%1' (%2) hat %3 Wörter, mehr als die %4 Wörter, die eine Leseanfrage umfassen darf</translation>
+        <location line="+4"/>
+        <source>&apos;%1&apos; (%2) has %3 words, more than the %4 words one read may take</source>
+        <translation>&apos;%1&apos; (%2) hat %3 Wörter, mehr als die %4 Wörter, die eine Leseanfrage umfassen darf</translation>
     </message>
 </context>
 <context>
     <name>jumo::RegisterMap</name>
     <message>
-        <location filename="../lib/protocol/registermap.cpp" line="+198" />
-        <source>the gateway's path to the device is unavailable (sent by the gateway, the request did not reach the device)</source>
+        <location filename="../lib/protocol/registermap.cpp" line="+198"/>
+        <source>the gateway&apos;s path to the device is unavailable (sent by the gateway, the request did not reach the device)</source>
         <translation>der Weg des Gateways zum Gerät ist nicht verfügbar (vom Gateway gesendet, die Anfrage hat das Gerät nicht erreicht)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>the device behind the gateway did not respond (sent by the gateway)</source>
         <translation>das Gerät hinter dem Gateway hat nicht geantwortet (vom Gateway gesendet)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>exception %1 (not documented for this family)</source>
         <translation>Exception-Code %1 (für diese Gerätefamilie nicht dokumentiert)</translation>
     </message>
@@ -4601,17 +4606,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RegisterMapBrowser</name>
     <message>
-        <location filename="../ui/registermapbrowser.cpp" line="+18" />
+        <location filename="../ui/registermapbrowser.cpp" line="+18"/>
         <source>JUMO register maps</source>
         <translation>JUMO-Registertabellen</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+27"/>
         <source>No register maps could be loaded.</source>
         <translation>Es konnten keine Registertabellen geladen werden.</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>%1 - %2 registers - models: %3 - manual: %4</source>
         <translation>%1 - %2 Register - Modelle: %3 - Handbuch: %4</translation>
     </message>
@@ -4619,47 +4624,47 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RegisterMapModel</name>
     <message>
-        <location filename="../lib/models/registermapmodel.cpp" line="+36" />
+        <location filename="../lib/models/registermapmodel.cpp" line="+36"/>
         <source>Correction of the manual: %1</source>
         <translation>Korrektur des Handbuchs: %1</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+23"/>
         <source>Address</source>
         <translation>Adresse</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Id</source>
         <translation>Kennung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Label</source>
         <translation>Bezeichnung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Type</source>
         <translation>Typ</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Access</source>
         <translation>Zugriff</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Storage</source>
         <translation>Speicherort</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Unit</source>
         <translation>Einheit</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Section</source>
         <translation>Abschnitt</translation>
     </message>
@@ -4667,17 +4672,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RegularFile</name>
     <message>
-        <location filename="../lib/protocol/regularfile.cpp" line="+49" />
+        <location filename="../lib/protocol/regularfile.cpp" line="+49"/>
         <source>%1: not a regular file</source>
         <translation>%1: keine reguläre Datei</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+32"/>
         <source>%1: too big (%2 bytes, at most %3)</source>
         <translation>%1: zu groß (%2 Bytes, höchstens %3)</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>%1: too big (more than %2 bytes)</source>
         <translation>%1: zu groß (mehr als %2 Bytes)</translation>
     </message>
@@ -4685,57 +4690,57 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ReportDetailsDialog</name>
     <message>
-        <location filename="../ui/reportdetailsdialog.cpp" line="+22" />
+        <location filename="../ui/reportdetailsdialog.cpp" line="+22"/>
         <source>Commissioning report</source>
         <translation>Inbetriebnahmebericht</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>Plant, hall or building</source>
         <translation>Anlage, Halle oder Gebäude</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Cabinet or panel</source>
         <translation>Schaltschrank oder Tafel</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>e.g. TIC-101</source>
         <translation>z. B. TIC-101</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Who commissions the device</source>
         <translation>Wer das Gerät in Betrieb nimmt</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Choose a &amp;file...</source>
         <translation>&amp;Datei wählen...</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>The title block of the report of %1. What you enter here is offered again next time.</source>
         <translation>Die Kopfdaten des Berichts von %1. Was Sie hier eingeben, wird beim nächsten Mal wieder angeboten.</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>&amp;Site:</source>
         <translation>Stand&amp;ort:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Cabinet:</source>
         <translation>&amp;Schaltschrank:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Device &amp;tag:</source>
         <translation>Geräte&amp;kennzeichen:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Engineer:</source>
         <translation>&amp;Inbetriebnehmer:</translation>
     </message>
@@ -4743,7 +4748,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ReportWriter</name>
     <message>
-        <location filename="../ui/reportwriter.cpp" line="+169" />
+        <location filename="../ui/reportwriter.cpp" line="+169"/>
         <source>Page %1 of %2</source>
         <translation>Seite %1 von %2</translation>
     </message>
@@ -4751,47 +4756,47 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RtuTcpTransport</name>
     <message>
-        <location filename="../lib/bus/rtutcptransport.cpp" line="+36" />
+        <location filename="../lib/bus/rtutcptransport.cpp" line="+36"/>
         <source>the device server %1 did not accept a connection within %2 s</source>
         <translation>der Geräteserver %1 hat innerhalb von %2 s keine Verbindung angenommen</translation>
     </message>
     <message>
-        <location line="+44" />
+        <location line="+44"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+25"/>
         <source>not connected to the device server %1</source>
         <translation>nicht mit dem Geräteserver %1 verbunden</translation>
     </message>
     <message>
-        <location line="+66" />
+        <location line="+66"/>
         <source>no reply within %1 ms</source>
         <translation>keine Antwort innerhalb von %1 ms</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>no complete reply within %1 ms (%2 byte(s) received: %3)</source>
         <translation>keine vollständige Antwort innerhalb von %1 ms (%2 Byte empfangen: %3)</translation>
     </message>
     <message>
-        <location line="+55" />
+        <location line="+64"/>
         <source>exception %1</source>
         <translation>Ausnahme %1</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+30"/>
         <source>the device server %1 closed the connection</source>
         <translation>der Geräteserver %1 hat die Verbindung geschlossen</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>connection to the device server %1 lost: %2</source>
         <translation>Verbindung zum Geräteserver %1 verloren: %2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>no connection to the device server %1: %2</source>
         <translation>keine Verbindung zum Geräteserver %1: %2</translation>
     </message>
@@ -4799,17 +4804,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RtuTransport</name>
     <message>
-        <location filename="../lib/bus/rtutransport.cpp" line="+143" />
+        <location filename="../lib/bus/rtutransport.cpp" line="+143"/>
         <source>reply with function code %1 to a request with %2</source>
         <translation>Antwort mit Funktionscode %1 auf eine Anfrage mit %2</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>reply of %1 words where %2 were asked for</source>
         <translation>Antwort mit %1 Wörtern, angefragt waren %2</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>write reply names %1 word(s) at %2 where %3 at %4 were written</source>
         <translation>Schreibantwort nennt %1 Wort/Wörter ab %2, geschrieben wurden %3 ab %4</translation>
     </message>
@@ -4817,52 +4822,52 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ScanDialog</name>
     <message>
-        <location filename="../ui/scandialog.cpp" line="+21" />
+        <location filename="../ui/scandialog.cpp" line="+21"/>
         <source>Scan</source>
         <translation>Suchen</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Cancel scan</source>
         <translation>Suche abbrechen</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Scan the line</source>
         <translation>Leitung durchsuchen</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+16"/>
         <source>address %1</source>
         <translation>Adresse %1</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Address %1 answers as %2, as every %2 does whatever its own address: not a device of its own</source>
         <translation>Adresse %1 antwortet als %2, wie jedes %2 unabhängig von seiner eigenen Adresse: kein eigenes Gerät</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>%1 at address %2</source>
         <translation>%1 an Adresse %2</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Unknown device at address %1</source>
         <translation>Unbekanntes Gerät an Adresse %1</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>stopped: %1</source>
         <translation>angehalten: %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+3" />
+        <location line="+3"/>
         <source>%n device(s) found</source>
         <translation>
             <numerusform>%n Gerät gefunden</numerusform>
@@ -4870,17 +4875,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>From address</source>
         <translation>Von Adresse</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>to</source>
         <translation>bis</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Add checked devices</source>
         <translation>Markierte Geräte hinzufügen</translation>
     </message>
@@ -4888,12 +4893,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::SerialPortList</name>
     <message>
-        <location filename="../lib/bus/serialportlist.cpp" line="+83" />
+        <location filename="../lib/bus/serialportlist.cpp" line="+83"/>
         <source>serial number %1</source>
         <translation>Seriennummer %1</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -4901,43 +4906,43 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::TcpTransport</name>
     <message>
-        <location filename="../lib/bus/tcptransport.cpp" line="+21" />
+        <location filename="../lib/bus/tcptransport.cpp" line="+21"/>
         <source>the gateway %1 did not accept a connection within %2 s</source>
         <translation>das Gateway %1 hat innerhalb von %2 s keine Verbindung angenommen</translation>
     </message>
     <message>
-        <location line="+52" />
+        <location line="+52"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
     <message>
-        <location line="+29" />
+        <location line="+29"/>
         <source>broadcasts are not sent through a Modbus TCP gateway</source>
         <translation>über ein Modbus-TCP-Gateway werden keine Broadcasts gesendet</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+16"/>
         <source>not connected to the gateway %1</source>
         <translation>nicht mit dem Gateway %1 verbunden</translation>
     </message>
     <message>
-        <location line="+53" />
+        <location line="+53"/>
         <source>the connection was refused or closed</source>
         <translation>die Verbindung wurde abgelehnt oder geschlossen</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>the gateway %1 closed the connection</source>
         <translation>das Gateway %1 hat die Verbindung geschlossen</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+11" />
+        <location line="+1"/>
+        <location line="+11"/>
         <source>no connection to the gateway %1: %2</source>
         <translation>keine Verbindung zum Gateway %1: %2</translation>
     </message>
     <message>
-        <location line="-1" />
+        <location line="-1"/>
         <source>connection to the gateway %1 lost: %2</source>
         <translation>Verbindung zum Gateway %1 verloren: %2</translation>
     </message>
@@ -4945,22 +4950,22 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::Theme</name>
     <message>
-        <location filename="../ui/theme.cpp" line="+301" />
+        <location filename="../ui/theme.cpp" line="+301"/>
         <source>&amp;System</source>
         <translation>&amp;System</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;Light</source>
         <translation>&amp;Hell</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;Dark</source>
         <translation>&amp;Dunkel</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;High contrast</source>
         <translation>Hoher &amp;Kontrast</translation>
     </message>
@@ -4968,69 +4973,69 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::TrafficView</name>
     <message>
-        <location filename="../ui/trafficview.cpp" line="+26" />
+        <location filename="../ui/trafficview.cpp" line="+26"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Requests</source>
         <translation>Anfragen</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Timeouts</source>
         <translation>Zeitüberschreitungen</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>CRC errors</source>
         <translation>CRC-Fehler</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Mismatches</source>
         <translation>Unpassende Antworten</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Exceptions</source>
         <translation>Exceptions</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Last round trip</source>
         <translation>Letzte Umlaufzeit</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Mean round trip</source>
         <translation>Mittlere Umlaufzeit</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Last cycle</source>
         <translation>Letzter Zyklus</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+20"/>
         <source>(no reply)</source>
         <translation>(keine Antwort)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>  %1 ms</source>
         <translation>  %1 ms</translation>
     </message>
     <message>
-        <location line="+22" />
-        <location line="+1" />
-        <location line="+1" />
+        <location line="+22"/>
+        <location line="+1"/>
+        <location line="+1"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -5038,53 +5043,53 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::TrendView</name>
     <message>
-        <location filename="../ui/trendview.cpp" line="+51" />
+        <location filename="../ui/trendview.cpp" line="+51"/>
         <source>1 minute</source>
         <translation>1 Minute</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5 minutes</source>
         <translation>5 Minuten</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>15 minutes</source>
         <translation>15 Minuten</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>1 hour</source>
         <translation>1 Stunde</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>Export CSV...</source>
         <translation>CSV exportieren...</translation>
     </message>
     <message>
-        <location line="+2" />
-        <location line="+3" />
+        <location line="+2"/>
+        <location line="+3"/>
         <source>Export trend</source>
         <translation>Trend exportieren</translation>
     </message>
     <message>
-        <location line="-3" />
+        <location line="-3"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location line="+67" />
+        <location line="+67"/>
         <source>Value (no unit)</source>
         <translation>Wert (ohne Einheit)</translation>
     </message>
@@ -5092,180 +5097,180 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ValueCodec</name>
     <message>
-        <location filename="../lib/protocol/valuecodec.cpp" line="+96" />
+        <location filename="../lib/protocol/valuecodec.cpp" line="+96"/>
         <source>Underrange</source>
         <translation>Unterlauf</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Overrange</source>
         <translation>Überlauf</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Invalid</source>
         <translation>Ungültig</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Decode error</source>
         <translation>Dekodierfehler</translation>
     </message>
     <message>
-        <location line="+46" />
+        <location line="+46"/>
         <source>expected %1 words, got %2</source>
         <translation>%1 Wörter erwartet, %2 erhalten</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+39"/>
         <source>not a boolean: %1</source>
         <translation>kein boolescher Wert: %1</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>on</source>
         <translation>ein</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>off</source>
         <translation>aus</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>unknown value %1</source>
         <translation>unbekannter Wert %1</translation>
     </message>
     <message>
-        <location line="+39" />
-        <source>'%1' is read-only</source>
-        <translation>'%1' ist nur lesbar</translation>
+        <location line="+39"/>
+        <source>&apos;%1&apos; is read-only</source>
+        <translation>&apos;%1&apos; ist nur lesbar</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>no value given for '%1'</source>
-        <translation>kein Wert für '%1' angegeben</translation>
+        <location line="+4"/>
+        <source>no value given for &apos;%1&apos;</source>
+        <translation>kein Wert für &apos;%1&apos; angegeben</translation>
     </message>
     <message>
-        <location line="+8" />
-        <source>%1 is outside the range of '%2' (%3 to %4)</source>
-        <translation>%1 liegt außerhalb des Bereichs von '%2' (%3 bis %4)</translation>
+        <location line="+8"/>
+        <source>%1 is outside the range of &apos;%2&apos; (%3 to %4)</source>
+        <translation>%1 liegt außerhalb des Bereichs von &apos;%2&apos; (%3 bis %4)</translation>
     </message>
     <message>
-        <location line="+11" />
-        <source>'%1' is not a whole number</source>
-        <translation>'%1' ist keine ganze Zahl</translation>
+        <location line="+11"/>
+        <source>&apos;%1&apos; is not a whole number</source>
+        <translation>&apos;%1&apos; ist keine ganze Zahl</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>%1 does not fit the type of '%2' (%3 to %4)</source>
-        <translation>%1 passt nicht zum Typ von '%2' (%3 bis %4)</translation>
+        <location line="+4"/>
+        <source>%1 does not fit the type of &apos;%2&apos; (%3 to %4)</source>
+        <translation>%1 passt nicht zum Typ von &apos;%2&apos; (%3 bis %4)</translation>
     </message>
     <message>
-        <location line="+13" />
-        <source>'%1' is not a number</source>
-        <translation>'%1' ist keine Zahl</translation>
+        <location line="+13"/>
+        <source>&apos;%1&apos; is not a number</source>
+        <translation>&apos;%1&apos; ist keine Zahl</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>%1 is too large for a float</source>
         <translation>%1 ist zu groß für einen float</translation>
     </message>
     <message>
-        <location line="+31" />
-        <source>'%1' is not a boolean (0/1, on/off, true/false)</source>
-        <translation>'%1' ist kein boolescher Wert (0/1, on/off, true/false)</translation>
+        <location line="+31"/>
+        <source>&apos;%1&apos; is not a boolean (0/1, on/off, true/false)</source>
+        <translation>&apos;%1&apos; ist kein boolescher Wert (0/1, on/off, true/false)</translation>
     </message>
     <message>
-        <location line="+15" />
-        <source>'%1' is not a value of '%2' (%3)</source>
-        <translation>'%1' ist kein Wert von '%2' (%3)</translation>
+        <location line="+15"/>
+        <source>&apos;%1&apos; is not a value of &apos;%2&apos; (%3)</source>
+        <translation>&apos;%1&apos; ist kein Wert von &apos;%2&apos; (%3)</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>%1 does not fit in 16 bits</source>
         <translation>%1 passt nicht in 16 Bit</translation>
     </message>
     <message>
-        <location line="+8" />
-        <source>'%1' is not a bit of '%2'</source>
-        <translation>'%1' ist kein Bit von '%2'</translation>
+        <location line="+8"/>
+        <source>&apos;%1&apos; is not a bit of &apos;%2&apos;</source>
+        <translation>&apos;%1&apos; ist kein Bit von &apos;%2&apos;</translation>
     </message>
     <message>
-        <location line="+16" />
-        <source>the text for '%1' must be at most %2 Latin-1 characters</source>
-        <translation>der Text für '%1' darf höchstens %2 Latin-1-Zeichen lang sein</translation>
+        <location line="+16"/>
+        <source>the text for &apos;%1&apos; must be at most %2 Latin-1 characters</source>
+        <translation>der Text für &apos;%1&apos; darf höchstens %2 Latin-1-Zeichen lang sein</translation>
     </message>
 </context>
 <context>
     <name>jumo::ValueText</name>
     <message>
-        <location filename="../lib/bus/valuetext.cpp" line="+29" />
+        <location filename="../lib/bus/valuetext.cpp" line="+29"/>
         <source>(configured)</source>
         <translation>(konfiguriert)</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Unit as configured on the device: %1</source>
         <translation>Einheit wie am Gerät konfiguriert: %1</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>Not read yet</source>
         <translation>Noch nicht gelesen</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>No answer</source>
         <translation>Keine Antwort</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Exception %1: %2</source>
         <translation>Exception %1: %2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Reply did not fit the request</source>
         <translation>Antwort passte nicht zur Anfrage</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Device not answering</source>
         <translation>Gerät antwortet nicht</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Line lost</source>
         <translation>Leitung verloren</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Line disconnected</source>
         <translation>Leitung getrennt</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Not available on this device</source>
         <translation>Auf diesem Gerät nicht vorhanden</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Identity not confirmed yet</source>
         <translation>Identität noch nicht bestätigt</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Another device answers at this address</source>
         <translation>An dieser Adresse antwortet ein anderes Gerät</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>OK</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Stale (%1 s old)</source>
         <translation>Veraltet (%1 s alt)</translation>
     </message>
@@ -5273,42 +5278,42 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::WriteAssignment</name>
     <message>
-        <location filename="../app/cli/writeassignment.cpp" line="+31" />
-        <source>'%1' is not ID=VALUE or ID.BIT=0|1</source>
-        <translation>'%1' hat nicht die Form ID=VALUE oder ID.BIT=0|1</translation>
+        <location filename="../app/cli/writeassignment.cpp" line="+31"/>
+        <source>&apos;%1&apos; is not ID=VALUE or ID.BIT=0|1</source>
+        <translation>&apos;%1&apos; hat nicht die Form ID=VALUE oder ID.BIT=0|1</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>'%1' is not an entry of %2</source>
-        <translation>'%1' ist kein Eintrag von %2</translation>
+        <location line="+6"/>
+        <source>&apos;%1&apos; is not an entry of %2</source>
+        <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>'%1' is given both whole and by bits: give one or the other</source>
-        <translation>'%1' ist sowohl ganz als auch bitweise angegeben: eines von beiden angeben</translation>
+        <location line="+6"/>
+        <source>&apos;%1&apos; is given both whole and by bits: give one or the other</source>
+        <translation>&apos;%1&apos; ist sowohl ganz als auch bitweise angegeben: eines von beiden angeben</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>'%1' is given twice</source>
-        <translation>'%1' ist zweimal angegeben</translation>
+        <location line="+4"/>
+        <source>&apos;%1&apos; is given twice</source>
+        <translation>&apos;%1&apos; ist zweimal angegeben</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>'%1': a broadcast is not answered, so the bits it should keep cannot be read; write the whole word</source>
-        <translation>'%1': Ein Broadcast wird nicht beantwortet, daher können die Bits, die erhalten bleiben sollen, nicht gelesen werden; das ganze Wort schreiben</translation>
+        <location line="+9"/>
+        <source>&apos;%1&apos;: a broadcast is not answered, so the bits it should keep cannot be read; write the whole word</source>
+        <translation>&apos;%1&apos;: Ein Broadcast wird nicht beantwortet, daher können die Bits, die erhalten bleiben sollen, nicht gelesen werden; das ganze Wort schreiben</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>'%1' is not a bit state for '%2': give 0, 1, on, off, true or false</source>
-        <translation>'%1' ist kein Bitzustand für '%2': 0, 1, on, off, true oder false angeben</translation>
+        <location line="+5"/>
+        <source>&apos;%1&apos; is not a bit state for &apos;%2&apos;: give 0, 1, on, off, true or false</source>
+        <translation>&apos;%1&apos; ist kein Bitzustand für &apos;%2&apos;: 0, 1, on, off, true oder false angeben</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>'%1' is given twice, on and off</source>
-        <translation>'%1' ist zweimal angegeben, ein und aus</translation>
+        <location line="+3"/>
+        <source>&apos;%1&apos; is given twice, on and off</source>
+        <translation>&apos;%1&apos; ist zweimal angegeben, ein und aus</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>send a command as %1=BIT, e.g. %1=%2; it is sent once</source>
         <translation>einen Befehl als %1=BIT senden, z. B. %1=%2; er wird einmal gesendet</translation>
     </message>
@@ -5316,8 +5321,8 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::WriteCommand</name>
     <message>
-        <location filename="../lib/models/writecommand.cpp" line="+37" />
-        <location line="+6" />
+        <location filename="../lib/models/writecommand.cpp" line="+37"/>
+        <location line="+6"/>
         <source>Writing %1...</source>
         <translation>%1 wird geschrieben...</translation>
     </message>
@@ -5325,53 +5330,53 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::WriteTransaction</name>
     <message>
-        <location filename="../lib/bus/writetransaction.cpp" line="+88" />
+        <location filename="../lib/bus/writetransaction.cpp" line="+88"/>
         <source>refused by the device: exception %1, %2</source>
         <translation>vom Gerät abgelehnt: Exception %1, %2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source> (precondition: %1)</source>
         <translation> (Voraussetzung: %1)</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+28"/>
         <source>not written: the line went down before the write</source>
         <translation>nicht geschrieben: Die Leitung fiel vor dem Schreiben aus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>not written: the state of the other bits could not be read (%1)</source>
         <translation>nicht geschrieben: Der Zustand der übrigen Bits konnte nicht gelesen werden (%1)</translation>
     </message>
     <message>
-        <location line="+2" />
-        <location line="+76" />
+        <location line="+2"/>
+        <location line="+76"/>
         <source>exception %1, %2</source>
         <translation>Exception %1, %2</translation>
     </message>
     <message>
-        <location line="-61" />
+        <location line="-61"/>
         <source>not written: the gateway could not reach the device (exception %1, %2); nothing was changed</source>
         <translation>nicht geschrieben: das Gateway konnte das Gerät nicht erreichen (Ausnahme %1, %2); nichts wurde geändert</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>the gateway got no answer from the device (exception %1, %2): the write may or may not have reached it; it is not sent again, check the device</source>
         <translation>das Gateway hat vom Gerät keine Antwort erhalten (Ausnahme %1, %2): der Schreibvorgang hat es vielleicht erreicht, vielleicht nicht; er wird nicht wiederholt, prüfen Sie das Gerät</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>the line was lost while the write was under way: its outcome is unknown, check the device</source>
         <translation>die Leitung ging während des Schreibens verloren: Das Ergebnis ist unbekannt, prüfen Sie das Gerät</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>an answer that does not fit the command (%1): it may or may not have been carried out; it is not sent again, check the device</source>
         <translation>eine Antwort, die nicht zum Befehl passt (%1): Er wurde vielleicht ausgeführt, vielleicht nicht; er wird nicht erneut gesendet, prüfen Sie das Gerät</translation>
     </message>
     <message numerus="yes">
-        <location line="+3" />
+        <location line="+3"/>
         <source>no fitting answer after %n attempt(s) (the last: %1): the device may or may not have taken the value, read it back</source>
         <translation>
             <numerusform>keine passende Antwort nach %n Versuch (die letzte: %1): Das Gerät hat den Wert vielleicht übernommen, vielleicht nicht, lesen Sie ihn zurück</numerusform>
@@ -5379,12 +5384,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>no answer: the command may or may not have been carried out; it is not sent again, check the device</source>
         <translation>keine Antwort: Der Befehl wurde vielleicht ausgeführt, vielleicht nicht; er wird nicht erneut gesendet, prüfen Sie das Gerät</translation>
     </message>
     <message numerus="yes">
-        <location line="+2" />
+        <location line="+2"/>
         <source>no answer after %n attempt(s): the device may or may not have taken the value, read it back</source>
         <translation>
             <numerusform>keine Antwort nach %n Versuch: Das Gerät hat den Wert vielleicht übernommen, vielleicht nicht, lesen Sie ihn zurück</numerusform>
@@ -5392,94 +5397,94 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+14"/>
         <source>the line went down</source>
         <translation>die Leitung fiel aus</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>broadcast sent, but the device at address %1 could not be read back: %2</source>
         <translation>Broadcast gesendet, aber das Gerät an Adresse %1 konnte nicht zurückgelesen werden: %2</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>written and acknowledged, but the read-back failed: %1</source>
         <translation>geschrieben und quittiert, aber das Zurücklesen schlug fehl: %1</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+23"/>
         <source>broadcast sent; it cannot be read back</source>
         <translation>Broadcast gesendet; er kann nicht zurückgelesen werden</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>acknowledged by the device; it does not report these bits, so they cannot be read back</source>
         <translation>vom Gerät quittiert; es meldet diese Bits nicht, daher können sie nicht zurückgelesen werden</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>written (not read back)</source>
         <translation>geschrieben (nicht zurückgelesen)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>acknowledged by the device; it cannot be read back</source>
         <translation>vom Gerät quittiert; kann nicht zurückgelesen werden</translation>
     </message>
     <message>
-        <location line="+14" />
-        <location line="+10" />
+        <location line="+14"/>
+        <location line="+10"/>
         <source>confirmed by read-back: %1</source>
         <translation>durch Zurücklesen bestätigt: %1</translation>
     </message>
     <message>
-        <location line="-7" />
+        <location line="-7"/>
         <source>written, but the device does not report %1</source>
         <translation>geschrieben, aber das Gerät meldet nicht %1</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>written, but the device reads back %1</source>
         <translation>geschrieben, aber das Gerät liest %1 zurück</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>broadcast not taken by the device at address %1: it reads back %2</source>
         <translation>Broadcast vom Gerät an Adresse %1 nicht übernommen: Es liest %2 zurück</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>broadcast confirmed by read-back from every device</source>
         <translation>Broadcast durch Zurücklesen von jedem Gerät bestätigt</translation>
     </message>
     <message>
-        <location line="+7" />
-        <location line="+5" />
+        <location line="+7"/>
+        <location line="+5"/>
         <source>not written: %1</source>
         <translation>nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>no answer, and then %1: the outcome is unknown, check the device</source>
         <translation>keine Antwort, und dann %1: Das Ergebnis ist unbekannt, prüfen Sie das Gerät</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>written and acknowledged, but not read back: %1</source>
         <translation>geschrieben und quittiert, aber nicht zurückgelesen: %1</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+16"/>
         <source>broadcast confirmed by read-back from every remaining device</source>
         <translation>Broadcast durch Zurücklesen von jedem verbleibenden Gerät bestätigt</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>broadcast sent; no device is left to read it back from</source>
         <translation>Broadcast gesendet; kein Gerät ist mehr da, um ihn zurückzulesen</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>the device was removed from the line</source>
         <translation>das Gerät wurde von der Leitung entfernt</translation>
     </message>
@@ -5487,3452 +5492,3452 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::maps</name>
     <message>
-        <location filename="mapstrings.cpp" line="+6" />
+        <location filename="mapstrings.cpp" line="+6"/>
         <source>Invalid function</source>
         <translation>Ungültige Funktion</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Invalid parameter address or too many words are to be read or written</source>
         <translation>Ungültige Parameteradresse oder zu viele Wörter zum Lesen oder Schreiben</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Write access to parameter denied</source>
         <translation>Schreibzugriff auf Parameter verweigert</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>the unit of the value the limit comparator watches, as configured on the device (the process value's by default)</source>
+        <location line="+1"/>
+        <source>the unit of the value the limit comparator watches, as configured on the device (the process value&apos;s by default)</source>
         <translation>die Einheit des Werts, den der Grenzwertkomparator überwacht, wie am Gerät konfiguriert (standardmäßig die des Istwerts)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>as the math formula is configured on the device (its inputs and scaling)</source>
         <translation>wie die Mathematikformel am Gerät konfiguriert ist (ihre Eingänge und Skalierung)</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>the process value's unit, set with the analog input's configuration on the device: °C or °F for a thermocouple or RTD, the scaled unit of a standard signal</source>
+        <location line="+1"/>
+        <source>the process value&apos;s unit, set with the analog input&apos;s configuration on the device: °C or °F for a thermocouple or RTD, the scaled unit of a standard signal</source>
         <translation>die Einheit des Istwerts, mit der Konfiguration des Analogeingangs am Gerät eingestellt: °C oder °F bei Thermoelement oder Widerstandsthermometer, die skalierte Einheit bei einem Einheitssignal</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>process value units per minute or per hour, as the ramp function is configured on the device</source>
         <translation>Istwerteinheiten pro Minute oder pro Stunde, wie die Rampenfunktion am Gerät konfiguriert ist</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>Program status</source>
         <translation>Programmstatus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.1 Process data</source>
         <translation>5.1 Prozessdaten</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Program pause</source>
         <translation>Programmpause</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Basic status/Program stop</source>
         <translation>Grundstatus/Programmstopp</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Automatic mode</source>
         <translation>Automatikbetrieb</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Program end signal</source>
         <translation>Programmendesignal</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Tolerance limit signal</source>
         <translation>Toleranzbandsignal</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller status</source>
         <translation>Reglerstatus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Manual mode</source>
         <translation>Handbetrieb</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Autotuning active</source>
         <translation>Selbstoptimierung aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary outputs 1 – 10</source>
         <translation>Binärausgänge 1 – 10</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary output 1</source>
         <translation>Binärausgang 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary output 2</source>
         <translation>Binärausgang 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary output 3</source>
         <translation>Binärausgang 3</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary output 4</source>
         <translation>Binärausgang 4</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary output 5</source>
         <translation>Binärausgang 5</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary output 6</source>
         <translation>Binärausgang 6</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary output 7</source>
         <translation>Binärausgang 7</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary output 8</source>
         <translation>Binärausgang 8</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary output 9</source>
         <translation>Binärausgang 9</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary output 10</source>
         <translation>Binärausgang 10</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary inputs 1 – 6</source>
         <translation>Binäreingänge 1 – 6</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary input 1</source>
         <translation>Binäreingang 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary input 2</source>
         <translation>Binäreingang 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary input 3</source>
         <translation>Binäreingang 3</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary input 4</source>
         <translation>Binäreingang 4</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary input 6</source>
         <translation>Binäreingang 6</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary input 5</source>
         <translation>Binäreingang 5</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary input 8</source>
         <translation>Binäreingang 8</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary input 7</source>
         <translation>Binäreingang 7</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator</source>
         <translation>Grenzwertüberwachung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 1</source>
         <translation>Grenzwertüberwachung 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 2</source>
         <translation>Grenzwertüberwachung 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 3</source>
         <translation>Grenzwertüberwachung 3</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 4</source>
         <translation>Grenzwertüberwachung 4</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Control contacts 1 – 4</source>
         <translation>Steuerkontakte 1 – 4</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Control contact 1</source>
         <translation>Steuerkontakt 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Control contact 2</source>
         <translation>Steuerkontakt 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Control contact 3</source>
         <translation>Steuerkontakt 3</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Control contact 4</source>
         <translation>Steuerkontakt 4</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary signals</source>
         <translation>Binärsignale</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Timer 1</source>
         <translation>Timer 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Timer 2</source>
         <translation>Timer 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Logic formula 1</source>
         <translation>Logikformel 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Logic formula 2</source>
         <translation>Logikformel 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Control of the binary outputs</source>
         <translation>Ansteuerung der Binärausgänge</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output 1</source>
         <translation>Ausgang 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output 2</source>
         <translation>Ausgang 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output 3</source>
         <translation>Ausgang 3</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output 4</source>
         <translation>Ausgang 4</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output 5</source>
         <translation>Ausgang 5</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output 6</source>
         <translation>Ausgang 6</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output 7</source>
         <translation>Ausgang 7</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output 8</source>
         <translation>Ausgang 8</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output 9</source>
         <translation>Ausgang 9</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output 10</source>
         <translation>Ausgang 10</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Activation</source>
         <translation>Aktivierung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Analog input 1</source>
         <translation>Analogeingang 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Analog input 2</source>
         <translation>Analogeingang 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Internal Pt100</source>
         <translation>Interner Pt100</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Sampling cycle time</source>
         <translation>Abtastzykluszeit</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Math 1</source>
         <translation>Mathematik 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Math 2</source>
         <translation>Mathematik 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Ramp end value (W)</source>
         <translation>Rampenendwert (W)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Filtered process value</source>
         <translation>Gefilterter Istwert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Unfiltered process value</source>
         <translation>Ungefilterter Istwert</translation>
     </message>
     <message>
-        <location line="-71" />
+        <location line="-71"/>
         <source>Setpoint</source>
         <translation>Sollwert</translation>
     </message>
     <message>
-        <location line="+72" />
+        <location line="+72"/>
         <source>Output (displayed value)</source>
         <translation>Stellgrad (Anzeigewert)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output, heating</source>
         <translation>Stellgrad, Heizen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output, cooling</source>
         <translation>Stellgrad, Kühlen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Control difference</source>
         <translation>Regelabweichung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Switching status, heating</source>
         <translation>Schaltzustand, Heizen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Off (contact open)</source>
         <translation>Aus (Kontakt offen)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>On (contact closed)</source>
         <translation>Ein (Kontakt geschlossen)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Switching status, cooling</source>
         <translation>Schaltzustand, Kühlen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set number</source>
         <translation>Parametersatznummer</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Manual output</source>
         <translation>Hand-Stellgrad</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment number</source>
         <translation>Segmentnummer</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Number of segments</source>
         <translation>Anzahl Segmente</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Program setpoint</source>
         <translation>Programmsollwert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Program run time</source>
         <translation>Programmlaufzeit</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Residual program time</source>
         <translation>Programmrestzeit</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment run time</source>
         <translation>Segmentlaufzeit</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Residual segment time</source>
         <translation>Segmentrestzeit</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Timer run time, timer 1</source>
         <translation>Timerlaufzeit, Timer 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Timer run time, timer 2</source>
         <translation>Timerlaufzeit, Timer 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Timer run time, timer 3</source>
         <translation>Timerlaufzeit, Timer 3</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Timer run time, timer 4</source>
         <translation>Timerlaufzeit, Timer 4</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Binary functions "Program controller"</source>
-        <translation>Binärfunktionen "Programmregler"</translation>
+        <location line="+1"/>
+        <source>Binary functions &quot;Program controller&quot;</source>
+        <translation>Binärfunktionen &quot;Programmregler&quot;</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.6 Commands</source>
         <translation>5.6 Befehle</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Program canceled</source>
         <translation>Programmabbruch</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Program start</source>
         <translation>Programmstart</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment change</source>
         <translation>Segmentwechsel</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Store temporary change</source>
         <translation>Temporäre Änderung speichern</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Binary functions "Controller"</source>
-        <translation>Binärfunktionen "Regler"</translation>
+        <location line="+1"/>
+        <source>Binary functions &quot;Controller&quot;</source>
+        <translation>Binärfunktionen &quot;Regler&quot;</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Pause program</source>
         <translation>Programm anhalten</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Cancel ramp</source>
         <translation>Rampe abbrechen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Activate manual mode</source>
         <translation>Handbetrieb aktivieren</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller off</source>
         <translation>Regler aus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Start autotuning</source>
         <translation>Selbstoptimierung starten</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Cancel autotuning</source>
         <translation>Selbstoptimierung abbrechen</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Binary functions "Operation"</source>
-        <translation>Binärfunktionen "Bedienung"</translation>
+        <location line="+1"/>
+        <source>Binary functions &quot;Operation&quot;</source>
+        <translation>Binärfunktionen &quot;Bedienung&quot;</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Display off with key inhibit</source>
         <translation>Anzeige aus mit Tastatursperre</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Acknowledge limit comparators</source>
         <translation>Grenzwertüberwachungen quittieren</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Text display</source>
         <translation>Textanzeige</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Binary functions "Timer"</source>
-        <translation>Binärfunktionen "Timer"</translation>
+        <location line="+1"/>
+        <source>Binary functions &quot;Timer&quot;</source>
+        <translation>Binärfunktionen &quot;Timer&quot;</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Pause timer 1</source>
         <translation>Timer 1 anhalten</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Cancel timer 1</source>
         <translation>Timer 1 abbrechen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Start timer 1</source>
         <translation>Timer 1 starten</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Pause timer 2</source>
         <translation>Timer 2 anhalten</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Cancel timer 2</source>
         <translation>Timer 2 abbrechen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Start timer 2</source>
         <translation>Timer 2 starten</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Setpoint switching</source>
         <translation>Sollwertumschaltung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Off</source>
         <translation>Aus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>W1</source>
         <translation>W1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>W2</source>
         <translation>W2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>W3</source>
         <translation>W3</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>W4</source>
         <translation>W4</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set switching</source>
         <translation>Parametersatzumschaltung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>P1</source>
         <translation>P1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>P2</source>
         <translation>P2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 1, limit AL</source>
         <translation>Grenzwertüberwachung 1, Grenzwert AL</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.4 Configuration</source>
         <translation>5.4 Konfiguration</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 1, switching differential</source>
         <translation>Grenzwertüberwachung 1, Schaltdifferenz</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 1, switch-on delay</source>
         <translation>Grenzwertüberwachung 1, Einschaltverzögerung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 1, switch-off delay</source>
         <translation>Grenzwertüberwachung 1, Ausschaltverzögerung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 2, limit AL</source>
         <translation>Grenzwertüberwachung 2, Grenzwert AL</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 2, switching differential</source>
         <translation>Grenzwertüberwachung 2, Schaltdifferenz</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 2, switch-on delay</source>
         <translation>Grenzwertüberwachung 2, Einschaltverzögerung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 2, switch-off delay</source>
         <translation>Grenzwertüberwachung 2, Ausschaltverzögerung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 3, limit AL</source>
         <translation>Grenzwertüberwachung 3, Grenzwert AL</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 3, switching differential</source>
         <translation>Grenzwertüberwachung 3, Schaltdifferenz</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 3, switch-on delay</source>
         <translation>Grenzwertüberwachung 3, Einschaltverzögerung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 3, switch-off delay</source>
         <translation>Grenzwertüberwachung 3, Ausschaltverzögerung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 4, limit AL</source>
         <translation>Grenzwertüberwachung 4, Grenzwert AL</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 4, switching differential</source>
         <translation>Grenzwertüberwachung 4, Schaltdifferenz</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 4, switch-on delay</source>
         <translation>Grenzwertüberwachung 4, Einschaltverzögerung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit comparator 4, switch-off delay</source>
         <translation>Grenzwertüberwachung 4, Ausschaltverzögerung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Ramp function, slope</source>
         <translation>Rampenfunktion, Steigung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment setpoint 1</source>
         <translation>Segmentsollwert 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.5 Program transmission</source>
         <translation>5.5 Programmübertragung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment time 1</source>
         <translation>Segmentzeit 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment setpoint 2</source>
         <translation>Segmentsollwert 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment time 2</source>
         <translation>Segmentzeit 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment setpoint 3</source>
         <translation>Segmentsollwert 3</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment time 3</source>
         <translation>Segmentzeit 3</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment setpoint 4</source>
         <translation>Segmentsollwert 4</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment time 4</source>
         <translation>Segmentzeit 4</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment setpoint 5</source>
         <translation>Segmentsollwert 5</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment time 5</source>
         <translation>Segmentzeit 5</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment setpoint 6</source>
         <translation>Segmentsollwert 6</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment time 6</source>
         <translation>Segmentzeit 6</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment setpoint 7</source>
         <translation>Segmentsollwert 7</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment time 7</source>
         <translation>Segmentzeit 7</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment setpoint 8</source>
         <translation>Segmentsollwert 8</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Segment time 8</source>
         <translation>Segmentzeit 8</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Control contacts, segment 1</source>
         <translation>Steuerkontakte, Segment 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Control contacts, segment 2</source>
         <translation>Steuerkontakte, Segment 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Control contacts, segment 3</source>
         <translation>Steuerkontakte, Segment 3</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Control contacts, segment 4</source>
         <translation>Steuerkontakte, Segment 4</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Control contacts, segment 5</source>
         <translation>Steuerkontakte, Segment 5</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Control contacts, segment 6</source>
         <translation>Steuerkontakte, Segment 6</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Control contacts, segment 7</source>
         <translation>Steuerkontakte, Segment 7</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Control contacts, segment 8</source>
         <translation>Steuerkontakte, Segment 8</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Alarm text (1-2)</source>
         <translation>Alarmtext (1-2)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Alarm text (3-4)</source>
         <translation>Alarmtext (3-4)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 1: Pb1</source>
         <translation>Parametersatz 1: Pb1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.3 Controller parameters</source>
         <translation>5.3 Reglerparameter</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 1: Pb2</source>
         <translation>Parametersatz 1: Pb2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 1: dt</source>
         <translation>Parametersatz 1: dt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 1: rt</source>
         <translation>Parametersatz 1: rt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 1: Cy1</source>
         <translation>Parametersatz 1: Cy1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 1: Cy2</source>
         <translation>Parametersatz 1: Cy2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 1: db</source>
         <translation>Parametersatz 1: db</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 1: HyS1</source>
         <translation>Parametersatz 1: HyS1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 1: HyS2</source>
         <translation>Parametersatz 1: HyS2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 1: tt</source>
         <translation>Parametersatz 1: tt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 1: y0</source>
         <translation>Parametersatz 1: y0</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 1: y1</source>
         <translation>Parametersatz 1: y1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 1: y2</source>
         <translation>Parametersatz 1: y2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 2: Pb1</source>
         <translation>Parametersatz 2: Pb1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 2: Pb2</source>
         <translation>Parametersatz 2: Pb2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 2: dt</source>
         <translation>Parametersatz 2: dt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 2: rt</source>
         <translation>Parametersatz 2: rt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 2: Cy1</source>
         <translation>Parametersatz 2: Cy1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 2: Cy2</source>
         <translation>Parametersatz 2: Cy2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 2: db</source>
         <translation>Parametersatz 2: db</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 2: HyS1</source>
         <translation>Parametersatz 2: HyS1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 2: HyS2</source>
         <translation>Parametersatz 2: HyS2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 2: tt</source>
         <translation>Parametersatz 2: tt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 2: y0</source>
         <translation>Parametersatz 2: y0</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 2: y1</source>
         <translation>Parametersatz 2: y1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Parameter set 2: y2</source>
         <translation>Parametersatz 2: y2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Setpoint W1</source>
         <translation>Sollwert W1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.2 Setpoints</source>
         <translation>5.2 Sollwerte</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Setpoint W2</source>
         <translation>Sollwert W2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Setpoint W3</source>
         <translation>Sollwert W3</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Setpoint W4</source>
         <translation>Sollwert W4</translation>
     </message>
     <message>
-        <location line="-200" />
+        <location line="-200"/>
         <source>Process value</source>
         <translation>Istwert</translation>
     </message>
     <message>
-        <location line="+201" />
+        <location line="+201"/>
         <source>Logic 1+2</source>
         <translation>Logik 1+2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Logic 1</source>
         <translation>Logik 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Logic 2</source>
         <translation>Logik 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Option slot 1+2</source>
         <translation>Optionssteckplatz 1+2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.7 Device identification</source>
         <translation>5.7 Geräteidentifikation</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Slot 2</source>
         <translation>Steckplatz 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Slot 1</source>
         <translation>Steckplatz 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Option slot 3</source>
         <translation>Optionssteckplatz 3</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Slot 3</source>
         <translation>Steckplatz 3</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Device format</source>
         <translation>Geräteformat</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Type 703041/45 (48 mm x 48 mm)</source>
         <translation>Typ 703041/45 (48 mm x 48 mm)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Type 703042/43/46 (48 mm x 96 mm)</source>
         <translation>Typ 703042/43/46 (48 mm x 96 mm)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Type 703044/48 (96 mm x 96 mm)</source>
         <translation>Typ 703044/48 (96 mm x 96 mm)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Invalid Modbus function</source>
         <translation>Ungültige Modbus-Funktion</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Invalid data address</source>
         <translation>Ungültige Datenadresse</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Data value outside admissible value range</source>
         <translation>Datenwert außerhalb des zulässigen Wertebereichs</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Error when processing the instruction (e.g. unable to write to flash)</source>
         <translation>Fehler beim Ausführen des Befehls (z. B. Schreiben in den Flash nicht möglich)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Currently unable to execute the instruction, please try again</source>
         <translation>Befehl kann derzeit nicht ausgeführt werden, bitte erneut versuchen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Write-protected</source>
         <translation>Schreibgeschützt</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>the quantity the alarm monitors, as configured on the device: V, A, W, kW, Ω, °C or °F (5.1.2: 'depending on what is being monitored')</source>
+        <location line="+1"/>
+        <source>the quantity the alarm monitors, as configured on the device: V, A, W, kW, Ω, °C or °F (5.1.2: &apos;depending on what is being monitored&apos;)</source>
         <translation>die Größe, die der Alarm überwacht, wie am Gerät konfiguriert: V, A, W, kW, Ω, °C oder °F (5.1.2: „je nachdem, was überwacht wird“)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>the measuring range the external current sensor is configured for: mA or A (5.2.1)</source>
         <translation>der Messbereich, für den der externe Stromsensor konfiguriert ist: mA oder A (5.2.1)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>the standard signal the external current sensor is configured for: 0-20 mA, 4-20 mA or customer-specific (5.2.1)</source>
         <translation>das Einheitssignal, für das der externe Stromsensor konfiguriert ist: 0-20 mA, 4-20 mA oder kundenspezifisch (5.2.1)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Measuring range underflow (underrange)</source>
         <translation>Messbereichsunterschreitung (Underrange)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Measuring range overflow (overrange)</source>
         <translation>Messbereichsüberschreitung (Overrange)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Other invalid value</source>
         <translation>Sonstiger ungültiger Wert</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>Software version</source>
         <translation>Softwareversion</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.1.1 ID</source>
         <translation>5.1.1 ID</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>VdN number</source>
         <translation>VdN-Nummer</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Internal software version</source>
         <translation>Interne Softwareversion</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Device name</source>
         <translation>Gerätename</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Fabrication number</source>
         <translation>Fabrikationsnummer</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Inspection ID</source>
         <translation>Prüfkennung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Reserve</source>
         <translation>Reserve</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Order code</source>
         <translation>Bestellschlüssel</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Basic type</source>
         <translation>Grundtyp</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>IPC300_709051</source>
         <translation>IPC300_709051</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Nominal current</source>
         <translation>Nennstrom</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>70 A</source>
         <translation>70 A</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>100 A</source>
         <translation>100 A</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>200 A</source>
         <translation>200 A</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Equipped digital output</source>
         <translation>Bestückter Digitalausgang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Relay</source>
         <translation>Relais</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Optocoupler</source>
         <translation>Optokoppler</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Equipped interface</source>
         <translation>Bestückte Schnittstelle</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>RS422/485</source>
         <translation>RS422/485</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>PROFINET</source>
         <translation>PROFINET</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.1.2 Operating level parameters</source>
         <translation>5.1.2 Parameter der Bedienerebene</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Switch-off of display lighting</source>
         <translation>Abschaltung der Displaybeleuchtung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load voltage limit value</source>
         <translation>Grenzwert Lastspannung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Current limit value</source>
         <translation>Grenzwert Strom</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Power limit value</source>
         <translation>Grenzwert Leistung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Resistance limit value</source>
         <translation>Grenzwert Widerstand</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Setpoint value in case of bus error/wire break</source>
         <translation>Sollwert bei Busfehler/Drahtbruch</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Base load</source>
         <translation>Grundlast</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit value for min. alarm</source>
         <translation>Grenzwert für Min.-Alarm</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit value for max. alarm</source>
         <translation>Grenzwert für Max.-Alarm</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit value for hysteresis</source>
         <translation>Hysterese der Grenzwerte</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit value for load monitoring</source>
         <translation>Grenzwert für Lastüberwachung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Setpoint value (fixed value) for setpoint switchover via digital input</source>
         <translation>Sollwert (Festwert) für Sollwertumschaltung über Digitaleingang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load voltage</source>
         <translation>Lastspannung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.2.1 RMS measured values</source>
         <translation>5.2.1 Effektivwerte</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load current</source>
         <translation>Laststrom</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load, mains or fault current of ext. current sensor 2, scaled to standard signal</source>
         <translation>Last-, Netz- oder Fehlerstrom des ext. Stromsensors 2, skaliert auf Einheitssignal</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load, mains or fault current of ext. current sensor 3, scaled to standard signal</source>
         <translation>Last-, Netz- oder Fehlerstrom des ext. Stromsensors 3, skaliert auf Einheitssignal</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load, mains or fault current of ext. current sensor 2, scaled to measuring range</source>
         <translation>Last-, Netz- oder Fehlerstrom des ext. Stromsensors 2, skaliert auf Messbereich</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load, mains or fault current of ext. current sensor 3, scaled to measuring range</source>
         <translation>Last-, Netz- oder Fehlerstrom des ext. Stromsensors 3, skaliert auf Messbereich</translation>
     </message>
     <message>
-        <location line="-43" />
+        <location line="-43"/>
         <source>Power</source>
         <translation>Leistung</translation>
     </message>
     <message>
-        <location line="+44" />
+        <location line="+44"/>
         <source>Load resistance</source>
         <translation>Lastwiderstand</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>DC link voltage</source>
         <translation>Zwischenkreisspannung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Voltage input</source>
         <translation>Spannungseingang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.2.2 Analog values</source>
         <translation>5.2.2 Analogwerte</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Current input</source>
         <translation>Stromeingang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Device temperature</source>
         <translation>Gerätetemperatur</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Digital input 1</source>
         <translation>Digitaleingang 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.2.3 Digital inputs/outputs</source>
         <translation>5.2.3 Digitaleingänge/-ausgänge</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Digital input 2</source>
         <translation>Digitaleingang 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Inhibit input</source>
         <translation>Sperreingang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Inhibit peak current</source>
         <translation>Sperre Spitzenstrom</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>External inhibit input</source>
         <translation>Externer Sperreingang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>External digital input 1</source>
         <translation>Externer Digitaleingang 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>External digital input 2</source>
         <translation>Externer Digitaleingang 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Digital output</source>
         <translation>Digitalausgang</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Configuration level &gt; Binary output &gt; Output mode = "Interface signal" (6.3)</source>
-        <translation>Konfigurationsebene &gt; Binärausgang &gt; Ausgangsmodus = "Schnittstellensignal" (6.3)</translation>
+        <location line="+1"/>
+        <source>Configuration level &gt; Binary output &gt; Output mode = &quot;Interface signal&quot; (6.3)</source>
+        <translation>Konfigurationsebene &gt; Binärausgang &gt; Ausgangsmodus = &quot;Schnittstellensignal&quot; (6.3)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output level of controller</source>
         <translation>Stellgrad des Reglers</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.2.4 Controller</source>
         <translation>5.2.4 Regler</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output level of PWM</source>
         <translation>Stellgrad der PWM</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Input setpoint value</source>
         <translation>Vorgabesollwert</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Configuration level &gt; Setpoint value configuration &gt; Setpoint value = "Via interface" (6.1)</source>
-        <translation>Konfigurationsebene &gt; Sollwertkonfiguration &gt; Sollwert = "Über Schnittstelle" (6.1)</translation>
+        <location line="+1"/>
+        <source>Configuration level &gt; Setpoint value configuration &gt; Setpoint value = &quot;Via interface&quot; (6.1)</source>
+        <translation>Konfigurationsebene &gt; Sollwertkonfiguration &gt; Sollwert = &quot;Über Schnittstelle&quot; (6.1)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Effective setpoint value</source>
         <translation>Wirksamer Sollwert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Actual value</source>
         <translation>Istwert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Inhibit active</source>
         <translation>Sperre aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.2.5 Device states</source>
         <translation>5.2.5 Gerätezustände</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Voltage limitation active</source>
         <translation>Spannungsbegrenzung aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Current limiting active</source>
         <translation>Strombegrenzung aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Power limitation active</source>
         <translation>Leistungsbegrenzung aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Resistance limitation active</source>
         <translation>Widerstandsbegrenzung aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limitation active</source>
         <translation>Begrenzung aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Soft start active</source>
         <translation>Sanftanlauf aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>External toggle switch of setpoint specification active</source>
         <translation>Externe Umschaltung der Sollwertvorgabe aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Reconfiguration active</source>
         <translation>Neukonfiguration aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Calibration mode active</source>
         <translation>Kalibriermodus aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Manual mode active</source>
         <translation>Handbetrieb aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Keypad locked</source>
         <translation>Tastatur gesperrt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Display switched off</source>
         <translation>Anzeige ausgeschaltet</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Voltage supply via USB only</source>
         <translation>Spannungsversorgung nur über USB</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Malfunction</source>
         <translation>Störung</translation>
     </message>
     <message>
-        <location line="-85" />
+        <location line="-85"/>
         <source>Power reduction</source>
         <translation>Leistungsreduzierung</translation>
     </message>
     <message>
-        <location line="-237" />
+        <location line="-237"/>
         <source>Self-optimisation</source>
         <translation>Selbstoptimierung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Manual</source>
         <translation>Hand</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Stopped</source>
         <translation>Gestoppt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Ended</source>
         <translation>Beendet</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Paused</source>
         <translation>Angehalten</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Output</source>
         <translation>Stellgrad</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Automatic</source>
         <translation>Automatik</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The interface reports manual mode and self-optimisation only; a controller switched off (a command) also shows as automatic.</source>
         <translation>Die Schnittstelle meldet nur Handbetrieb und Selbstoptimierung; ein (per Befehl) ausgeschalteter Regler erscheint ebenfalls als Automatik.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Running</source>
         <translation>Läuft</translation>
     </message>
     <message>
-        <location line="+223" />
+        <location line="+223"/>
         <source>Calibration</source>
         <translation>Kalibrierung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Voltage limitation</source>
         <translation>Spannungsbegrenzung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Current limiting</source>
         <translation>Strombegrenzung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Power limitation</source>
         <translation>Leistungsbegrenzung</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Voltage</source>
         <translation>Spannung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Current</source>
         <translation>Strom</translation>
     </message>
     <message>
-        <location line="+84" />
+        <location line="+84"/>
         <source>Trigger for manual Teach-In</source>
         <translation>Auslöser für manuelles Teach-In</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Malfunction signal 1</source>
         <translation>Störmeldung 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.2.6 Binary signals</source>
         <translation>5.2.6 Binärsignale</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Min. alarm</source>
         <translation>Min.-Alarm</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Max. alarm</source>
         <translation>Max.-Alarm</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load error</source>
         <translation>Lastfehler</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load failure virtual current sensor 1</source>
         <translation>Lastausfall virtueller Stromsensor 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load failure external current sensor 2</source>
         <translation>Lastausfall externer Stromsensor 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load failure external current sensor 3</source>
         <translation>Lastausfall externer Stromsensor 3</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Teach-In for load monitoring is missing</source>
         <translation>Teach-In für Lastüberwachung fehlt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Fuse failure</source>
         <translation>Sicherungsbruch</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>IGBT break</source>
         <translation>IGBT-Unterbrechung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>IGBT short-circuit</source>
         <translation>IGBT-Kurzschluss</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limited power due to excess temperature</source>
         <translation>Leistungsbegrenzung wegen Übertemperatur</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Pre-alarm due to excess temperature</source>
         <translation>Voralarm wegen Übertemperatur</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Mains voltage too low</source>
         <translation>Netzspannung zu niedrig</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Wire break at current input</source>
         <translation>Drahtbruch am Stromeingang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Wire break at voltage input</source>
         <translation>Drahtbruch am Spannungseingang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Bus error</source>
         <translation>Busfehler</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Malfunction signal 2</source>
         <translation>Störmeldung 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Reserved</source>
         <translation>Reserviert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Adjustment not possible</source>
         <translation>Abgleich nicht möglich</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Inhibit due to excessive peak current</source>
         <translation>Sperre wegen zu hohem Spitzenstrom</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Inhibit via UCEsat – detection 1</source>
         <translation>Sperre über UCEsat – Erkennung 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Inhibit via UCEsat – detection 2</source>
         <translation>Sperre über UCEsat – Erkennung 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Error current too large</source>
         <translation>Fehlerstrom zu groß</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Failure of fan 1</source>
         <translation>Ausfall Lüfter 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Failure of fan 2</source>
         <translation>Ausfall Lüfter 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Invalid configuration</source>
         <translation>Ungültige Konfiguration</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Wire break at external current sensor 2</source>
         <translation>Drahtbruch am externen Stromsensor 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Wire break at external current sensor 3</source>
         <translation>Drahtbruch am externen Stromsensor 3</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>External current sensor incorrectly configured</source>
         <translation>Externer Stromsensor falsch konfiguriert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary signal 1</source>
         <translation>Binärsignal 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Hardware level digital input 1</source>
         <translation>Hardwarepegel Digitaleingang 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Hardware level digital input 2</source>
         <translation>Hardwarepegel Digitaleingang 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Hardware level inhibit input</source>
         <translation>Hardwarepegel Sperreingang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Signal of peak current monitoring circuit</source>
         <translation>Signal der Spitzenstromüberwachung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Inhibit</source>
         <translation>Sperre</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The voltage limitation is active</source>
         <translation>Die Spannungsbegrenzung ist aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The current limiting is active</source>
         <translation>Die Strombegrenzung ist aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The power limitation is active</source>
         <translation>Die Leistungsbegrenzung ist aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The resistance limitation is active</source>
         <translation>Die Widerstandsbegrenzung ist aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary signal 2</source>
         <translation>Binärsignal 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The voltage, current, power, or resistance limitation is active</source>
         <translation>Die Spannungs-, Strom-, Leistungs- oder Widerstandsbegrenzung ist aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Soft start running</source>
         <translation>Sanftanlauf läuft</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The external switchover of the setpoint specification is active</source>
         <translation>Die externe Umschaltung der Sollwertvorgabe ist aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The power controller is currently being reconfigured</source>
         <translation>Der Leistungssteller wird gerade umkonfiguriert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The power controller is operating in manual mode</source>
         <translation>Der Leistungssteller arbeitet im Handbetrieb</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The keypad has been locked</source>
         <translation>Die Tastatur ist gesperrt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The display lighting has been switched off</source>
         <translation>Die Displaybeleuchtung ist ausgeschaltet</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Reduced power due to load failure, detected by ext. current sensor(s)</source>
         <translation>Leistungsreduzierung wegen Lastausfall, erkannt durch ext. Stromsensor(en)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Trigger for manual Teach-In is active</source>
         <translation>Auslöser für manuelles Teach-In ist aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary signal (write only)</source>
         <translation>Binärsignal (nur schreiben)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.2.7 Errors and malfunctions</source>
         <translation>5.2.7 Fehler und Störungen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Wire break at external current sensor 1</source>
         <translation>Drahtbruch am externen Stromsensor 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Energy meter configuration is incorrect</source>
         <translation>Konfiguration des Energiezählers ist fehlerhaft</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>SiC voltage reserve exhausted</source>
         <translation>SiC-Spannungsreserve erschöpft</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Inhibit via inhibit input</source>
         <translation>Sperre über Sperreingang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Inhibit via peak current</source>
         <translation>Sperre durch Spitzenstrom</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Inhibit via external input</source>
         <translation>Sperre über externen Eingang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Inhibit via UCE sat – detection 1</source>
         <translation>Sperre über UCE sat – Erkennung 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Inhibit via UCE sat – detection 2</source>
         <translation>Sperre über UCE sat – Erkennung 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Defect in external current sensor 2</source>
         <translation>Defekt am externen Stromsensor 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Defect in external current sensor 3</source>
         <translation>Defekt am externen Stromsensor 3</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Configuration error in external current sensor (2 and/or 3)</source>
         <translation>Konfigurationsfehler am externen Stromsensor (2 und/oder 3)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.2.8 Controlling the analog output</source>
         <translation>5.2.8 Ansteuerung des Analogausgangs</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Value of analog output when controlled via interface</source>
         <translation>Wert des Analogausgangs bei Ansteuerung über Schnittstelle</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Configuration level &gt; Analog output &gt; Value to be output = "From interface" (6.2)</source>
-        <translation>Konfigurationsebene &gt; Analogausgang &gt; Auszugebender Wert = "Von Schnittstelle" (6.2)</translation>
+        <location line="+1"/>
+        <source>Configuration level &gt; Analog output &gt; Value to be output = &quot;From interface&quot; (6.2)</source>
+        <translation>Konfigurationsebene &gt; Analogausgang &gt; Auszugebender Wert = &quot;Von Schnittstelle&quot; (6.2)</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>the input type configured on the device: V, mA or Ω (4.2: 'Analog input [V], [mA] or [Ohm]')</source>
+        <location line="+1"/>
+        <source>the input type configured on the device: V, mA or Ω (4.2: &apos;Analog input [V], [mA] or [Ohm]&apos;)</source>
         <translation>die am Gerät konfigurierte Eingangsart: V, mA oder Ω (4.2: „Analogeingang [V], [mA] oder [Ohm]“)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>4.2 Process data</source>
         <translation>4.2 Prozessdaten</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Self-optimization active</source>
         <translation>Selbstoptimierung aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary outputs 1 ... 5</source>
         <translation>Binärausgänge 1 ... 5</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output K1: Relay</source>
         <translation>Ausgang K1: Relais</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output K2: Relay or Logic</source>
         <translation>Ausgang K2: Relais oder Logik</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output K3: Relay or Logic</source>
         <translation>Ausgang K3: Relais oder Logik</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output K4: Relay or Logic</source>
         <translation>Ausgang K4: Relais oder Logik</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output K5: Relay or Logic</source>
         <translation>Ausgang K5: Relais oder Logik</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary input</source>
         <translation>Binäreingang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Input 1</source>
         <translation>Eingang 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit value monitoring</source>
         <translation>Grenzwertüberwachung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit value monitoring 1</source>
         <translation>Grenzwertüberwachung 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit value monitoring 2</source>
         <translation>Grenzwertüberwachung 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output K1</source>
         <translation>Ausgang K1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output K2</source>
         <translation>Ausgang K2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output K3</source>
         <translation>Ausgang K3</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output K4</source>
         <translation>Ausgang K4</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output K5</source>
         <translation>Ausgang K5</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Analog input</source>
         <translation>Analogeingang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Internal cold junction</source>
         <translation>Interne Vergleichsstelle</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Analog input (displayed value)</source>
         <translation>Analogeingang (Anzeigewert)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Sampling time</source>
         <translation>Abtastzeit</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller, ramp end value</source>
         <translation>Regler, Rampenendwert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller, actual value, filtered</source>
         <translation>Regler, Istwert, gefiltert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller, actual value, unfiltered</source>
         <translation>Regler, Istwert, ungefiltert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller, setpoint</source>
         <translation>Regler, Sollwert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller, output level display</source>
         <translation>Regler, Stellgradanzeige</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output level, controller output 1 (heating)</source>
         <translation>Stellgrad, Reglerausgang 1 (Heizen)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output level, controller output 2 (cooling)</source>
         <translation>Stellgrad, Reglerausgang 2 (Kühlen)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller, control difference</source>
         <translation>Regler, Regelabweichung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Switching state, controller output 1 (heating)</source>
         <translation>Schaltzustand, Reglerausgang 1 (Heizen)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Switching state, controller output 2 (cooling)</source>
         <translation>Schaltzustand, Reglerausgang 2 (Kühlen)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output level, manual mode</source>
         <translation>Stellgrad, Handbetrieb</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Timer run time</source>
         <translation>Timer-Laufzeit</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Residual timer time</source>
         <translation>Timer-Restzeit</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Timer status</source>
         <translation>Timer-Status</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Timer stopped</source>
         <translation>Timer angehalten</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Timer runs</source>
         <translation>Timer läuft</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Timer end</source>
         <translation>Timer-Ende</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Timer signal</source>
         <translation>Timer-Signal</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary functions CONTROLLER</source>
         <translation>Binärfunktionen REGLER</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>4.6 Commands</source>
         <translation>4.6 Befehle</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Self-optimization start</source>
         <translation>Start Selbstoptimierung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Self-optimization abort</source>
         <translation>Abbruch Selbstoptimierung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Manual mode inhibit</source>
         <translation>Sperre Handbetrieb</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Ramp stop</source>
         <translation>Rampe anhalten</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Ramp abort</source>
         <translation>Rampe abbrechen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Ramp restart</source>
         <translation>Rampe neu starten</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Timer start</source>
         <translation>Timer starten</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Timer abort</source>
         <translation>Timer abbrechen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Timer stop</source>
         <translation>Timer anhalten</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary functions OPERATION</source>
         <translation>Binärfunktionen BEDIENUNG</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Keyboard inhibit</source>
         <translation>Tastatursperre</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Configuration and parameter level inhibit</source>
         <translation>Sperre Konfigurations- und Parameterebene</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Display OFF</source>
         <translation>Anzeige AUS</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Setpoint changeover</source>
         <translation>Sollwertumschaltung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Setpoint 1</source>
         <translation>Sollwert 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Setpoint 2</source>
         <translation>Sollwert 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Ramp function, ramp rate</source>
         <translation>Rampenfunktion, Rampensteigung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>4.5 Configuration</source>
         <translation>4.5 Konfiguration</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Filter time constant</source>
         <translation>Filterzeitkonstante</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Offset analog input</source>
         <translation>Offset Analogeingang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Timer value</source>
         <translation>Timerwert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit value monitoring 1, alarm value AL</source>
         <translation>Grenzwertüberwachung 1, Grenzwert AL</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit value monitoring 1, hysteresis</source>
         <translation>Grenzwertüberwachung 1, Schaltdifferenz</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit value monitoring 2, alarm value AL</source>
         <translation>Grenzwertüberwachung 2, Grenzwert AL</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit value monitoring 2, hysteresis</source>
         <translation>Grenzwertüberwachung 2, Schaltdifferenz</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller parameter XP1 (Pb)</source>
         <translation>Reglerparameter XP1 (Pb)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>4.4 Controller parameters</source>
         <translation>4.4 Reglerparameter</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller parameter XP2 (Pb2)</source>
         <translation>Reglerparameter XP2 (Pb2)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller parameter TV (dt)</source>
         <translation>Reglerparameter TV (dt)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller parameter TN (rt)</source>
         <translation>Reglerparameter TN (rt)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller parameter CY1 (CY)</source>
         <translation>Reglerparameter CY1 (CY)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller parameter CY2 (CY2)</source>
         <translation>Reglerparameter CY2 (CY2)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller parameter XSH (db)</source>
         <translation>Reglerparameter XSH (db)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller parameter XD1 (HYS)</source>
         <translation>Reglerparameter XD1 (HYS)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller parameter XD2 (HYS2)</source>
         <translation>Reglerparameter XD2 (HYS2)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller parameter Y0 (Y0)</source>
         <translation>Reglerparameter Y0 (Y0)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller parameter Y1 (Y)</source>
         <translation>Reglerparameter Y1 (Y)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller parameter Y2 (Y2)</source>
         <translation>Reglerparameter Y2 (Y2)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Setpoint SP1</source>
         <translation>Sollwert SP1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>4.3 Setpoints</source>
         <translation>4.3 Sollwerte</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Setpoint SP2</source>
         <translation>Sollwert SP2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller setpoint (writable)</source>
         <translation>Reglersollwert (beschreibbar)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>4.7 RAM memory</source>
         <translation>4.7 RAM-Speicher</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Controller actual value (writable)</source>
         <translation>Regleristwert (beschreibbar)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Invalid data address (also sent when more words than admissible are to be read or written)</source>
         <translation>Ungültige Datenadresse (wird auch gesendet, wenn mehr Worte als zulässig gelesen oder geschrieben werden sollen)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Data value outside the admissible value range</source>
         <translation>Datenwert außerhalb des zulässigen Wertebereichs</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Error while processing the instruction (e.g. could not write to flash memory)</source>
         <translation>Fehler bei der Ausführung des Befehls (z. B. Flash-Speicher konnte nicht beschrieben werden)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Instruction cannot be carried out at this time, try again</source>
         <translation>Befehl kann zurzeit nicht ausgeführt werden, bitte erneut versuchen</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>the quantity the alarm monitors, as configured on the device: V, A, W, kW, Ω, °C or °F (5.8: 'depending on the monitored value')</source>
+        <location line="+1"/>
+        <source>the quantity the alarm monitors, as configured on the device: V, A, W, kW, Ω, °C or °F (5.8: &apos;depending on the monitored value&apos;)</source>
         <translation>die Größe, die der Alarm überwacht, wie am Gerät konfiguriert: V, A, W, kW, Ω, °C oder °F (5.8: „abhängig vom überwachten Wert“)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>External current limit</source>
         <translation>Externe Strombegrenzung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.1 Device data</source>
         <translation>5.1 Gerätedaten</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Serial number</source>
         <translation>Seriennummer</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Type key</source>
         <translation>Typenschlüssel</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.2 Type codes and options</source>
         <translation>5.2 Typangaben und Optionen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>709061 (TYA 201 - single-phase unit)</source>
         <translation>709061 (TYA 201 - Einzelgerät)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>709062 (TYA 202 - economy circuit)</source>
         <translation>709062 (TYA 202 - Sparschaltung)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>709063 (TYA 203 - three-phase power controller)</source>
         <translation>709063 (TYA 203 - Dreiphasen-Leistungssteller)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Nominal voltage</source>
         <translation>Nennspannung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>24 V</source>
         <translation>24 V</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>42 V</source>
         <translation>42 V</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>115 V</source>
         <translation>115 V</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>230 V</source>
         <translation>230 V</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>265 V</source>
         <translation>265 V</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>400 V</source>
         <translation>400 V</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>440 V</source>
         <translation>440 V</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>500 V</source>
         <translation>500 V</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Rated current</source>
         <translation>Nennstrom</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>16 A</source>
         <translation>16 A</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>30 A</source>
         <translation>30 A</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>50 A</source>
         <translation>50 A</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>75 A</source>
         <translation>75 A</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>150 A</source>
         <translation>150 A</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>250 A</source>
         <translation>250 A</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Current measurement option</source>
         <translation>Option Strommessung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>No</source>
         <translation>Nein</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Yes</source>
         <translation>Ja</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Released options</source>
         <translation>Freigeschaltete Optionen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>P control option</source>
         <translation>Option P-Regelung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Device can only be used as slave</source>
         <translation>Gerät nur als Slave verwendbar</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Equipped binary output</source>
         <translation>Bestückter Binärausgang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>RS422/RS485</source>
         <translation>RS422/RS485</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Profibus</source>
         <translation>Profibus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Switch off display light in</source>
         <translation>Displaybeleuchtung ausschalten nach</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.8 Parameters of the operator level (storage in the RAM)</source>
         <translation>5.8 Parameter der Bedienerebene (Speicherung im RAM)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Angle alpha start</source>
         <translation>Startwinkel Alpha</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Maximum actuating variable</source>
         <translation>Maximaler Stellgrad</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Min. limit value alarm</source>
         <translation>Grenzwert Min-Alarm</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Max. limit value alarm</source>
         <translation>Grenzwert Max-Alarm</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit value hysteresis</source>
         <translation>Grenzwert-Hysterese</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit value load monitoring</source>
         <translation>Grenzwert Lastkreisüberwachung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Setpoint in the case of a bus error/wire break</source>
         <translation>Sollwert bei Busfehler/Drahtbruch</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.3 Measured values</source>
         <translation>5.3 Messwerte</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Config level → Set point value config. → Default set point value = "via interface" (6.1); otherwise writes are ignored.</source>
-        <translation>Konfigurationsebene → Sollwertkonfiguration → Sollwertvorgabe = "über Schnittstelle" (6.1); andernfalls werden Schreibzugriffe ignoriert.</translation>
+        <location line="+1"/>
+        <source>Config level → Set point value config. → Default set point value = &quot;via interface&quot; (6.1); otherwise writes are ignored.</source>
+        <translation>Konfigurationsebene → Sollwertkonfiguration → Sollwertvorgabe = &quot;über Schnittstelle&quot; (6.1); andernfalls werden Schreibzugriffe ignoriert.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output level</source>
         <translation>Stellgrad</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Alpha</source>
         <translation>Alpha</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Mains voltage</source>
         <translation>Netzspannung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Mains frequency</source>
         <translation>Netzfrequenz</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load voltage slave/slave1</source>
         <translation>Lastspannung Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load current slave/slave1</source>
         <translation>Laststrom Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Power slave/slave1</source>
         <translation>Leistung Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load resistance slave/slave1</source>
         <translation>Lastwiderstand Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Mains voltage slave/slave1</source>
         <translation>Netzspannung Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Device temp. slave/slave1</source>
         <translation>Gerätetemp. Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load voltage slave2</source>
         <translation>Lastspannung Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load current slave2</source>
         <translation>Laststrom Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Power slave2</source>
         <translation>Leistung Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load resistance slave2</source>
         <translation>Lastwiderstand Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Mains voltage slave2</source>
         <translation>Netzspannung Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Device temp. slave2</source>
         <translation>Gerätetemp. Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Three-phase power</source>
         <translation>Drehstromleistung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Alpha default value</source>
         <translation>Alpha-Vorgabewert</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Logic mode (Config level → Power controller → SCR control = "Logics (switch)") with the default α value set to "via interface" under Config level → Set point value config. (6.2; the menu path is cut off in the manual).</source>
-        <translation>Logikbetrieb (Konfigurationsebene → Leistungssteller → Thyristoransteuerung = "Logik (Schalter)") mit α-Vorgabewert auf "über Schnittstelle" unter Konfigurationsebene → Sollwertkonfiguration (6.2; der Menüpfad ist im Handbuch abgeschnitten).</translation>
+        <location line="+1"/>
+        <source>Logic mode (Config level → Power controller → SCR control = &quot;Logics (switch)&quot;) with the default α value set to &quot;via interface&quot; under Config level → Set point value config. (6.2; the menu path is cut off in the manual).</source>
+        <translation>Logikbetrieb (Konfigurationsebene → Leistungssteller → Thyristoransteuerung = &quot;Logik (Schalter)&quot;) mit α-Vorgabewert auf &quot;über Schnittstelle&quot; unter Konfigurationsebene → Sollwertkonfiguration (6.2; der Menüpfad ist im Handbuch abgeschnitten).</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Analog output</source>
         <translation>Analogausgang</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Config level → Analog output → Output value = "From Interface" (6.3; table: only writable if "via interface" is configured); signal range start 0 %, end 100 % recommended.</source>
-        <translation>Konfigurationsebene → Analogausgang → Ausgabewert = "Von Schnittstelle" (6.3; Tabelle: nur beschreibbar, wenn "über Schnittstelle" konfiguriert ist); Signalbereich Anfang 0 %, Ende 100 % empfohlen.</translation>
+        <location line="+1"/>
+        <source>Config level → Analog output → Output value = &quot;From Interface&quot; (6.3; table: only writable if &quot;via interface&quot; is configured); signal range start 0 %, end 100 % recommended.</source>
+        <translation>Konfigurationsebene → Analogausgang → Ausgabewert = &quot;Von Schnittstelle&quot; (6.3; Tabelle: nur beschreibbar, wenn &quot;über Schnittstelle&quot; konfiguriert ist); Signalbereich Anfang 0 %, Ende 100 % empfohlen.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary signals - 1st section</source>
         <translation>Binärsignale - 1. Abschnitt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.4 Binary signals (bit field)</source>
         <translation>5.4 Binärsignale (Bitfeld)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>External binary input 1</source>
         <translation>Externer Binäreingang 1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>External binary input 2</source>
         <translation>Externer Binäreingang 2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary output</source>
         <translation>Binärausgang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Inhibit by the slave</source>
         <translation>Sperre durch den Slave</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Soft start is still running</source>
         <translation>Sanftanlauf läuft noch</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Current limiting is active</source>
         <translation>Strombegrenzung ist aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>External change-over to phase angle is active</source>
         <translation>Externe Umschaltung auf Phasenanschnitt ist aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>External current limit value is used</source>
         <translation>Externer Stromgrenzwert wird verwendet</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Display PCB is connected</source>
         <translation>Displayplatine ist angeschlossen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Power controller is currently reconfigured</source>
         <translation>Leistungssteller wird gerade umkonfiguriert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Power controller operates in the test and calibration mode</source>
         <translation>Leistungssteller arbeitet im Test- und Kalibriermodus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Binary signals - 2nd section</source>
         <translation>Binärsignale - 2. Abschnitt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Power controller operates in manual mode</source>
         <translation>Leistungssteller arbeitet im Handbetrieb</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Keyboard is locked</source>
         <translation>Tastatur ist gesperrt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Display is switched off</source>
         <translation>Anzeige ist ausgeschaltet</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Power controller is connected to the supply voltage</source>
         <translation>Leistungssteller ist an die Versorgungsspannung angeschlossen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Slave/slave1 power controller is connected to the supply voltage</source>
         <translation>Leistungssteller Slave/Slave1 ist an die Versorgungsspannung angeschlossen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Rotary field detection was successfully completed</source>
         <translation>Drehfelderkennung wurde erfolgreich abgeschlossen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Resistance limitation is active</source>
         <translation>Widerstandsbegrenzung ist aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>External switching of setpoint value is active</source>
         <translation>Externe Sollwertumschaltung ist aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Slave2 is connected to the supply voltage</source>
         <translation>Slave2 ist an die Versorgungsspannung angeschlossen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Inhibit of slave2</source>
         <translation>Sperre von Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Malfunction signals - 1st section</source>
         <translation>Störmeldungen - 1. Abschnitt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Min alarm</source>
         <translation>Min-Alarm</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Max alarm</source>
         <translation>Max-Alarm</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Teach-in for load monitoring is still missing</source>
         <translation>Teach-In für Lastkreisüberwachung fehlt noch</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Blown fuse</source>
         <translation>Sicherungsbruch</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Thyristor breakage</source>
         <translation>Thyristorbruch</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Thyristor short circuit</source>
         <translation>Thyristorkurzschluss</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Performance limitation due to over-temperature</source>
         <translation>Leistungsbegrenzung wegen Übertemperatur</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Over-temperature</source>
         <translation>Übertemperatur</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Supply voltage too low</source>
         <translation>Versorgungsspannung zu niedrig</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Supply voltage too high</source>
         <translation>Versorgungsspannung zu hoch</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Temporary supply voltage drop</source>
         <translation>Kurzzeitiger Einbruch der Versorgungsspannung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Wire breakage on input current</source>
         <translation>Drahtbruch am Stromeingang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Wire breakage on input voltage</source>
         <translation>Drahtbruch am Spannungseingang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Malfunction signals - 2nd section</source>
         <translation>Störmeldungen - 2. Abschnitt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Min alarm on slave/slave1</source>
         <translation>Min-Alarm an Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Max alarm on slave/slave1</source>
         <translation>Max-Alarm an Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load error on slave/slave1</source>
         <translation>Lastfehler an Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Blown fuse at the slave or slave1</source>
         <translation>Sicherungsbruch an Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Thyristor breakage at the slave/slave1</source>
         <translation>Thyristorbruch an Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Thyristor short circuit at the slave/slave1</source>
         <translation>Thyristorkurzschluss an Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Performance limitation due to over-temperature in slave/slave1</source>
         <translation>Leistungsbegrenzung wegen Übertemperatur in Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Over-temperature in slave/slave1</source>
         <translation>Übertemperatur in Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Supply voltage slave/slave1 too low</source>
         <translation>Versorgungsspannung Slave/Slave1 zu niedrig</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Supply voltage slave/slave1 too high</source>
         <translation>Versorgungsspannung Slave/Slave1 zu hoch</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Temporary supply voltage drop at slave/slave1</source>
         <translation>Kurzzeitiger Einbruch der Versorgungsspannung an Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Wrong energy counter configuration</source>
         <translation>Falsche Konfiguration des Energiezählers</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Malfunction signals - 3rd section</source>
         <translation>Störmeldungen - 3. Abschnitt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Master/slave synchronization has failed</source>
         <translation>Master/Slave-Synchronisation fehlgeschlagen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Error in the master/slave communication</source>
         <translation>Fehler in der Master/Slave-Kommunikation</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Error on the data cable between master and slave</source>
         <translation>Fehler an der Datenleitung zwischen Master und Slave</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Rotary field detection has failed</source>
         <translation>Drehfelderkennung fehlgeschlagen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Rotary field error</source>
         <translation>Drehfeldfehler</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Wiring error</source>
         <translation>Verdrahtungsfehler</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Power controller or one of the slaves is incompatible</source>
         <translation>Leistungssteller oder einer der Slaves ist inkompatibel</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Regulation not possible</source>
         <translation>Regelung nicht möglich</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Malfunction signals - 4th section</source>
         <translation>Störmeldungen - 4. Abschnitt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Min alarm on slave2</source>
         <translation>Min-Alarm an Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Max alarm on slave2</source>
         <translation>Max-Alarm an Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load error on slave2</source>
         <translation>Lastfehler an Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Blown fuse at the slave2</source>
         <translation>Sicherungsbruch an Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Thyristor breakage at the slave2</source>
         <translation>Thyristorbruch an Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Thyristor short circuit at the slave2</source>
         <translation>Thyristorkurzschluss an Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Performance limitation due to over-temperature in slave2</source>
         <translation>Leistungsbegrenzung wegen Übertemperatur in Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Over-temperature in slave2</source>
         <translation>Übertemperatur in Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Supply voltage slave2 too low</source>
         <translation>Versorgungsspannung Slave2 zu niedrig</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Supply voltage slave2 too high</source>
         <translation>Versorgungsspannung Slave2 zu hoch</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Temporary supply voltage drop at slave2</source>
         <translation>Kurzzeitiger Einbruch der Versorgungsspannung an Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Systembus: invalid configuration</source>
         <translation>Systembus: ungültige Konfiguration</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Systembus: watchdog timeout</source>
         <translation>Systembus: Watchdog-Zeitüberschreitung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Systembus: local error</source>
         <translation>Systembus: lokaler Fehler</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.5 Digital inputs and -output</source>
         <translation>5.5 Digitaleingänge und -ausgang</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Config level → Binary output → Output mode binary out = "Interf.sign.outp" (6.4; table: only writable if "interface-signal" is configured).</source>
-        <translation>Konfigurationsebene → Binärausgang → Ausgabemodus Binärausgang = "Schnittst.-Signal" (6.4; Tabelle: nur beschreibbar, wenn "Schnittstellensignal" konfiguriert ist).</translation>
+        <location line="+1"/>
+        <source>Config level → Binary output → Output mode binary out = &quot;Interf.sign.outp&quot; (6.4; table: only writable if &quot;interface-signal&quot; is configured).</source>
+        <translation>Konfigurationsebene → Binärausgang → Ausgabemodus Binärausgang = &quot;Schnittst.-Signal&quot; (6.4; Tabelle: nur beschreibbar, wenn &quot;Schnittstellensignal&quot; konfiguriert ist).</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.6 Device status</source>
         <translation>5.6 Gerätestatus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Inhibit slave/slave1</source>
         <translation>Sperre Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Soft start phase</source>
         <translation>Sanftanlaufphase</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Current limitation active</source>
         <translation>Strombegrenzung aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Ext. change-over to phase angle active</source>
         <translation>Ext. Umschaltung auf Phasenanschnitt aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Ext. current limit value active</source>
         <translation>Ext. Stromgrenzwert aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The display socket is connected</source>
         <translation>Displayanschluss ist belegt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Power controller is in calibrating mode</source>
         <translation>Leistungssteller ist im Kalibriermodus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Keyboard locked</source>
         <translation>Tastatur gesperrt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Display lighting deactivated</source>
         <translation>Displaybeleuchtung deaktiviert</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Power controller is connected on power supply</source>
         <translation>Leistungssteller ist an Versorgungsspannung angeschlossen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Slave/slave1 is connected on power supply</source>
         <translation>Slave/Slave1 ist an Versorgungsspannung angeschlossen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Rotating field detected</source>
         <translation>Drehfeld erkannt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Ext. change-over of setpoint specification active</source>
         <translation>Ext. Umschaltung der Sollwertvorgabe aktiv</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Slave2 is connected on power supply</source>
         <translation>Slave2 ist an Versorgungsspannung angeschlossen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Inhibit slave2</source>
         <translation>Sperre Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Collective fault</source>
         <translation>Sammelstörung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>5.7 Faults</source>
         <translation>5.7 Störungen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Low alarm</source>
         <translation>Min-Alarm</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>High alarm</source>
         <translation>Max-Alarm</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Missing teach-in</source>
         <translation>Teach-In fehlt</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Thyristor short-circuit</source>
         <translation>Thyristorkurzschluss</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limitation active due to overtemperature</source>
         <translation>Begrenzung aktiv wegen Übertemperatur</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Mains voltage is too low</source>
         <translation>Netzspannung ist zu niedrig</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Mains voltage is too high</source>
         <translation>Netzspannung ist zu hoch</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Short-term mains drop</source>
         <translation>Kurzzeitiger Netzeinbruch</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Wire break current input</source>
         <translation>Drahtbruch Stromeingang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Wire break voltage input</source>
         <translation>Drahtbruch Spannungseingang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>System bus error</source>
         <translation>Systembusfehler</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Low alarm slave/slave1</source>
         <translation>Min-Alarm Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>High alarm slave/slave1</source>
         <translation>Max-Alarm Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load error slave/slave1</source>
         <translation>Lastfehler Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Fuse breakage slave/slave1</source>
         <translation>Sicherungsbruch Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Thyristor breakage slave/slave1</source>
         <translation>Thyristorbruch Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Thyristor short-circuit slave/slave1</source>
         <translation>Thyristorkurzschluss Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limitation active due to overtemperature of slave/slave1</source>
         <translation>Begrenzung aktiv wegen Übertemperatur von Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Over-temperature slave/slave1</source>
         <translation>Übertemperatur Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Mains voltage of slave/slave1 is too low</source>
         <translation>Netzspannung von Slave/Slave1 ist zu niedrig</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Mains voltage of slave/slave1 is too high</source>
         <translation>Netzspannung von Slave/Slave1 ist zu hoch</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Short-term mains drop slave/slave1</source>
         <translation>Kurzzeitiger Netzeinbruch Slave/Slave1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Master slave synchronisation failed</source>
         <translation>Master-Slave-Synchronisation fehlgeschlagen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Error in master slave communication</source>
         <translation>Fehler in der Master-Slave-Kommunikation</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Data cable faulty</source>
         <translation>Datenleitung fehlerhaft</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Rotation field detection failed</source>
         <translation>Drehfelderkennung fehlgeschlagen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Rotation field error</source>
         <translation>Drehfeldfehler</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The or one of the slave controllers is incompatible</source>
         <translation>Der bzw. einer der Slave-Steller ist inkompatibel</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Setpoint cannot be reached</source>
         <translation>Sollwert kann nicht erreicht werden</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Low alarm slave2</source>
         <translation>Min-Alarm Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Max alarm slave2</source>
         <translation>Max-Alarm Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Load error slave2</source>
         <translation>Lastfehler Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Fuse breakage slave2</source>
         <translation>Sicherungsbruch Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Thyristor breakage slave2</source>
         <translation>Thyristorbruch Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Thyristor short-circuit slave2</source>
         <translation>Thyristorkurzschluss Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limitation active due to overtemperature of slave2</source>
         <translation>Begrenzung aktiv wegen Übertemperatur von Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Over-temperature slave2</source>
         <translation>Übertemperatur Slave2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Mains voltage of slave2 is too low</source>
         <translation>Netzspannung von Slave2 ist zu niedrig</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Mains voltage of slave2 is too high</source>
         <translation>Netzspannung von Slave2 ist zu hoch</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Short-term mains drop slave2</source>
         <translation>Kurzzeitiger Netzeinbruch Slave2</translation>
     </message>
@@ -8940,174 +8945,174 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+36" />
+        <location filename="../app/jumo-hmi.cpp" line="+36"/>
         <source>JUMO commissioning and monitoring HMI.</source>
         <translation>JUMO-HMI für Inbetriebnahme und Überwachung.</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Start on the built-in simulated bus (one device of each family).</source>
         <translation>Auf dem eingebauten simulierten Bus starten (ein Gerät jeder Familie).</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Control-room mode: nothing is ever written to the devices.</source>
         <translation>Leitwarten-Modus: Es wird nie etwas auf die Geräte geschrieben.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Open the page of this device, e.g. ipc300@1.</source>
         <translation>Die Seite dieses Geräts öffnen, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>With --show: open this tab of the device page (0 = live values).</source>
         <translation>Mit --show: diese Registerkarte der Geräteseite öffnen (0 = Live-Werte).</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Connect to this line at start: a serial port, tcp://HOST[:PORT] (a Modbus TCP gateway) or rtu+tcp://HOST:PORT (a serial device server); with --baud, --format, --device.</source>
         <translation>Beim Start mit dieser Leitung verbinden: eine serielle Schnittstelle, tcp://HOST[:PORT] (ein Modbus-TCP-Gateway) oder rtu+tcp://HOST:PORT (ein serieller Geräteserver); mit --baud, --format, --device.</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Baud rate for --port (default 9600).</source>
         <translation>Baudrate für --port (Standard 9600).</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Data format for --port (default 8N1).</source>
         <translation>Datenformat für --port (Standard 8N1).</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>A device to monitor, e.g. ipc300@1 (repeatable).</source>
         <translation>Ein zu überwachendes Gerät, z. B. ipc300@1 (mehrfach möglich).</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>Trust the named families without checking the devices' identity registers (for devices that cannot report them); the write audit log records it.</source>
+        <location line="+3"/>
+        <source>Trust the named families without checking the devices&apos; identity registers (for devices that cannot report them); the write audit log records it.</source>
         <translation>Den angegebenen Familien vertrauen, ohne die Identitätsregister der Geräte zu prüfen (für Geräte, die sie nicht melden können); das Schreibprotokoll vermerkt es.</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Colours for this run: system, light, dark or high-contrast (default: the theme chosen in the View menu, else system).</source>
         <translation>Farben für diesen Lauf: system, light, dark oder high-contrast (Vorgabe: das im Menü Ansicht gewählte Farbschema, sonst system).</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Print on stderr when the first live value arrives.</source>
         <translation>Auf stderr ausgeben, wann der erste Live-Wert eintrifft.</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>Show Qt's Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
+        <location line="+2"/>
+        <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
         <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
     </message>
     <message>
-        <location line="+12" />
-        <source>jumo-hmi: unknown theme '%1' (system, light, dark or high-contrast)</source>
+        <location line="+12"/>
+        <source>jumo-hmi: unknown theme &apos;%1&apos; (system, light, dark or high-contrast)</source>
         <translation>jumo-hmi: unbekanntes Farbschema „%1“ (system, light, dark oder high-contrast)</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>Map files refused: %1</source>
         <translation>Map-Dateien abgelehnt: %1</translation>
     </message>
     <message>
-        <location filename="../app/jumo-sim.cpp" line="+57" />
+        <location filename="../app/jumo-sim.cpp" line="+57"/>
         <source>Simulated JUMO devices on a serial line, or behind TCP as a Modbus TCP gateway or a serial device server. DEVICE is FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>Simulierte JUMO-Geräte an einer seriellen Leitung oder hinter TCP als Modbus-TCP-Gateway oder serieller Geräteserver. DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Serial port to serve.</source>
         <translation>Zu bedienende serielle Schnittstelle.</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Make a pseudo-terminal pair in this folder (needs socat); clients connect to FOLDER/master.</source>
         <translation>Ein Pseudo-Terminal-Paar in diesem Ordner anlegen (benötigt socat); Clients verbinden sich mit FOLDER/master.</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Be a Modbus TCP gateway listening on [HOST:]PORT (port 0: any free one); clients connect to tcp://HOST:PORT.</source>
         <translation>Als Modbus-TCP-Gateway auf [HOST:]PORT lauschen (Port 0: ein beliebiger freier); Clients verbinden sich mit tcp://HOST:PORT.</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Be a serial device server (raw RTU frames over TCP) listening on [HOST:]PORT; clients connect to rtu+tcp://HOST:PORT.</source>
         <translation>Als serieller Geräteserver (reine RTU-Telegramme über TCP) auf [HOST:]PORT lauschen; Clients verbinden sich mit rtu+tcp://HOST:PORT.</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Baud rate (default 9600).</source>
         <translation>Baudrate (Standard 9600).</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Data format (default 8N1).</source>
         <translation>Datenformat (Standard 8N1).</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Processing delay before each reply in ms (default 2).</source>
         <translation>Verarbeitungsverzögerung vor jeder Antwort in ms (Standard 2).</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Minimum response time in ms (default 0).</source>
         <translation>Minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Delay replies by their wire time at the baud rate.</source>
         <translation>Antworten um ihre Übertragungsdauer bei der Baudrate verzögern.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Devices to simulate.</source>
         <translation>Zu simulierende Geräte.</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>unsupported baud rate or data format</source>
         <translation>Baudrate oder Datenformat nicht unterstützt</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>give exactly one of --port, --pty, --tcp and --rtu-tcp</source>
         <translation>geben Sie genau eine der Optionen --port, --pty, --tcp und --rtu-tcp an</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>refused map file: %1</source>
         <translation>Map-Datei abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>--delay must be 0..10000 ms and --min-response 0..500 ms</source>
         <translation>--delay muss 0..10000 ms und --min-response 0..500 ms sein</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>name at least one device, e.g. ipc300@1</source>
         <translation>mindestens ein Gerät angeben, z. B. ipc300@1</translation>
     </message>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+10" />
-        <location filename="../app/jumo-sim.cpp" line="+8" />
-        <source>'%1' is not FAMILY@ADDRESS with a known family</source>
-        <translation>'%1' ist nicht FAMILY@ADDRESS mit einer bekannten Gerätefamilie</translation>
+        <location filename="../app/jumo-hmi.cpp" line="+10"/>
+        <location filename="../app/jumo-sim.cpp" line="+8"/>
+        <source>&apos;%1&apos; is not FAMILY@ADDRESS with a known family</source>
+        <translation>&apos;%1&apos; ist nicht FAMILY@ADDRESS mit einer bekannten Gerätefamilie</translation>
     </message>
     <message>
-        <location filename="../app/jumo-sim.cpp" line="+10" />
+        <location filename="../app/jumo-sim.cpp" line="+10"/>
         <source>cannot open %1: %2</source>
         <translation>%1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message numerus="yes">
-        <location line="+4" />
-        <location line="+29" />
+        <location line="+4"/>
+        <location line="+29"/>
         <source>serving %n device(s) on %1</source>
         <translation>
             <numerusform>bedient %n Gerät an %1</numerusform>
@@ -9115,18 +9120,18 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="-17" />
-        <source>'%1' is not [HOST:]PORT</source>
-        <translation>'%1' ist nicht [HOST:]PORT</translation>
+        <location line="-17"/>
+        <source>&apos;%1&apos; is not [HOST:]PORT</source>
+        <translation>&apos;%1&apos; ist nicht [HOST:]PORT</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>cannot listen on %1: %2</source>
         <translation>kann nicht auf %1 lauschen: %2</translation>
     </message>
     <message>
-        <location line="+12" />
-        <location line="+4" />
+        <location line="+12"/>
+        <location line="+4"/>
         <source>connect to %1</source>
         <translation>verbinden mit %1</translation>
     </message>

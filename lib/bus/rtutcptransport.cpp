@@ -190,11 +190,20 @@ std::optional<qsizetype> RtuTcpTransport::findReply(const ModbusRequest &request
                                                     qsizetype *skipped, int *crcErrors)
 {
     const quint8 function = quint8(request.function);
+    // An adapter or device server that echoes what it sends: the request itself (a 0x06
+    // reply is the request's echo by the standard, so it is the answer there).
+    const QByteArray echo = request.function == ModbusRequest::Function::WriteSingle
+            ? QByteArray()
+            : RtuFrame::build(request.slave, request.pdu());
     int badFrames = 0;
     for (qsizetype at = 0; at < buffer.size(); ++at) {
         const QByteArrayView head = QByteArrayView(buffer).sliced(at);
         if (quint8(head[0]) != request.slave)
             continue;
+        if (!echo.isEmpty() && head.startsWith(echo)) {
+            at += echo.size() - 1;
+            continue;
+        }
         if (head.size() < 2)
             break;
         const quint8 received = quint8(head[1]);

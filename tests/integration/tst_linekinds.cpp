@@ -13,6 +13,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QScopeGuard>
+#include <QTcpSocket>
 #include <QTest>
 
 #include <cmath>
@@ -154,6 +155,7 @@ private slots:
     void unreachableGatewayIsALostLine();
     void jumoctlReadsEachKind_data();
     void jumoctlReadsEachKind();
+    void simulatedGatewayEchoesTransactionIds();
 
 private:
     struct Setup
@@ -393,6 +395,12 @@ void tst_LineKinds::broadcastRefusedThroughGateway()
     const WriteOutcome outcome = finished.at(0).at(1).value<WriteOutcome>();
     QCOMPARE(outcome.result, WriteOutcome::Result::Invalid);
     QVERIFY2(outcome.message.contains("Modbus TCP gateway"), qPrintable(outcome.message));
+
+    // jumoctl says so before any scan or identity check.
+    const Run r = run({"write", "--port", s.far.url(), "--baud", "19200", "ipc300@0", "input_setpoint=50", "--verify", "1",
+                       "--line-has-only", "ipc300"});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains("no broadcast through a Modbus TCP gateway"), qPrintable(r.err));
     QCOMPARE(s.far.peer()->writeFrames(), 0);
 }
 
@@ -520,6 +528,25 @@ void tst_LineKinds::jumoctlReadsEachKind()
     const Run two = run(QStringList{"read"} + line + QStringList{"tya200@2", "setpoint"});
     QVERIFY2(two.code == 0, qPrintable(two.err));
     QVERIFY2(two.out.contains("setpoint = "), qPrintable(two.out));
+}
+
+void tst_LineKinds::simulatedGatewayEchoesTransactionIds()
+{
+    SimulatorLine line;
+    line.setFormat(testFormat());
+    line.addDevice(families().family("ipc300"), 1);
+    SimulatorServer gateway(&line, SimulatorServer::Mode::ModbusTcp);
+    QVERIFY(gateway.listen(QHostAddress::LocalHost, 0));
+    QTcpSocket client;
+    client.connectToHost(QHostAddress::LocalHost, gateway.port());
+    QVERIFY(client.waitForConnected(5000));
+    // Two requests under way at once: the device's read and one for a unit nobody has.
+    client.write(QByteArray::fromHex("123400000006" "01" "0300B10002") + QByteArray::fromHex("123500000006" "09" "0300B10002"));
+    QByteArray replies;
+    QTRY_VERIFY_WITH_TIMEOUT((replies += client.readAll()).size() >= 13 + 9, 5000);
+    QCOMPARE(replies.left(7).toHex(), QByteArray("12340000000701"));   // MBAP: its id, length 7, unit 1
+    QCOMPARE(replies.mid(7, 2).toHex(), QByteArray("0304"));            // 2 words
+    QCOMPARE(replies.mid(13).toHex(), QByteArray("123500000003" "09" "830b"));   // the gateway's 0x0B
 }
 
 QTEST_GUILESS_MAIN(tst_LineKinds)
