@@ -297,14 +297,12 @@ inline quint16 freeTcpPort()
 
 // A serial device server as socat makes one: a pty (where a peer serves the devices)
 // bridged to one TCP connection on 127.0.0.1. Raw bytes both ways, as an NPort does.
+// socat ends with that connection (its fork option would let an old child still read
+// the pty while the next client's is already there).
 class DeviceServer
 {
 public:
     ~DeviceServer() { kill(); }
-
-    // One connection after another (socat forks for each), as a device server that takes
-    // the next client once the last has gone. Off: one connection, then socat ends.
-    void setServesOneAfterAnother(bool on) { m_fork = on; }
 
     bool start(quint16 port = 0)
     {
@@ -317,9 +315,7 @@ public:
             // The pty first: socat opens it at once, then waits for the one connection.
             m_process.start(QStringLiteral("socat"),
                             {"-d", "-d", QStringLiteral("PTY,link=%1,raw,echo=0").arg(ptyPath()),
-                             QStringLiteral("TCP-LISTEN:%1,bind=127.0.0.1,reuseaddr%2")
-                                     .arg(m_port)
-                                     .arg(m_fork ? QStringLiteral(",fork") : QString())});
+                             QStringLiteral("TCP-LISTEN:%1,bind=127.0.0.1,reuseaddr").arg(m_port)});
             if (!m_process.waitForStarted(5000))
                 return false;
             QElapsedTimer timer;
@@ -353,7 +349,6 @@ private:
     QTemporaryDir m_dir;
     QProcess m_process;
     quint16 m_port = 0;
-    bool m_fork = false;
 };
 
 inline std::unique_ptr<Peer> makePeer(const QString &name)
