@@ -37,5 +37,7 @@ expect load_current jumoctl read --port /dev/ttyUSB0 ipc300@1 load_c
 expect input_setpoint= jumoctl write ipc300@1 input_
 expect 19200 jumoctl scan --baud ""
 expect 8E1 jumoctl dump --format 8
+expect load_current jumoctl read --station hall.json cabinet-a/ipc300@1 load_c
+expect --station jumoctl monitor --st
 [ "$fail" -eq 0 ] && echo "The completion offers every command and option."
 exit "$fail"

@@ -211,7 +211,7 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::Bus</name>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+87"/>
+        <location filename="../lib/bus/bus.cpp" line="+88"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
@@ -297,7 +297,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>nicht gehalten: %1 ist nicht als %2 bestätigt</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+277"/>
+        <location filename="../lib/bus/bus.cpp" line="+280"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
@@ -320,7 +320,7 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::CommandLineTool</name>
     <message>
-        <location filename="../app/cli/commandlinetool.cpp" line="+23"/>
+        <location filename="../app/cli/commandlinetool.cpp" line="+24"/>
         <source>Usage: jumoctl COMMAND [options] [arguments]
 
 Commissioning and monitoring of JUMO power and process controllers over Modbus RTU.
@@ -334,16 +334,23 @@ Commands on the register maps:
 The serial ports of this machine:
   ports [--json]           list them: stable by-id names, adapters, access
 
-Commands on a serial line (all take --port PATH --baud N --format 8N1|8E1|8O1|8N2
---timeout MS --read-only --verbose); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1, and
-its identity registers must confirm FAMILY (exit code 4 if not; --no-identify skips it):
-  scan [--from A --to B]   find devices and name their family
+Stations of several lines:
+  station FILE [--check|--json]
+                           check a station file, list its lines and devices
+
+Commands on lines (all take --port PATH --baud N --format 8N1|8E1|8O1|8N2
+--timeout MS --read-only --verbose for one line, or --line SPEC once per line, or
+--station FILE); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1, or LINE/FAMILY@ADDRESS
+where there are several lines; its identity registers must confirm FAMILY (exit
+code 4 if not; --no-identify skips it). A command of one device opens only its line:
+  scan [--from A --to B]   find devices and name their family, on every line
   read DEVICE ID...        read entries once
   write DEVICE ID=VALUE... write entries, verified by reading them back; a bit field&apos;s
                            ID=VALUE replaces every bit, ID.BIT=0|1 changes one bit only
   dump DEVICE [--json]     read every readable entry once
   monitor DEVICE... --jsonl|--csv [--interval MS] [--cycles N]
-                           poll continuously, one record per poll cycle
+                           poll continuously, one record per poll cycle; the
+                           devices of several lines at once
   backup DEVICE FILE       save every parameter of a device to a file
   diff DEVICE FILE         compare a device with a file (or FILE FILE)
   restore DEVICE FILE [--yes]
@@ -365,16 +372,23 @@ Befehle auf den Registertabellen:
 Die seriellen Schnittstellen dieses Rechners:
   ports [--json]           auflisten: stabile by-id-Namen, Adapter, Zugriff
 
-Befehle an einer seriellen Leitung (alle mit --port PATH --baud N --format 8N1|8E1|8O1|8N2
---timeout MS --read-only --verbose); DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1, und
-seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-identify überspringt das):
-  scan [--from A --to B]   Geräte suchen und ihre Familie nennen
+Stationen mit mehreren Leitungen:
+  station FILE [--check|--json]
+                           Stationsdatei prüfen, ihre Leitungen und Geräte auflisten
+
+Befehle an Leitungen (alle mit --port PATH --baud N --format 8N1|8E1|8O1|8N2
+--timeout MS --read-only --verbose für eine Leitung, oder --line SPEC je Leitung, oder
+--station FILE); DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1, oder LINE/FAMILY@ADDRESS,
+wo es mehrere Leitungen gibt; seine Identitätsregister müssen FAMILY bestätigen (sonst
+Exit-Code 4; --no-identify überspringt das). Ein Befehl für ein Gerät öffnet nur dessen Leitung:
+  scan [--from A --to B]   Geräte suchen und ihre Familie nennen, an jeder Leitung
   read DEVICE ID...        Einträge einmal lesen
   write DEVICE ID=VALUE... Einträge schreiben, durch Rücklesen geprüft; bei einem Bitfeld
                            ersetzt ID=VALUE jedes Bit, ID.BIT=0|1 ändert nur ein Bit
   dump DEVICE [--json]     alle lesbaren Einträge einmal lesen
   monitor DEVICE... --jsonl|--csv [--interval MS] [--cycles N]
-                           fortlaufend abfragen, ein Datensatz je Abfragezyklus
+                           fortlaufend abfragen, ein Datensatz je Abfragezyklus; die
+                           Geräte mehrerer Leitungen gleichzeitig
   backup DEVICE FILE       alle Parameter eines Geräts in einer Datei sichern
   diff DEVICE FILE         ein Gerät mit einer Datei vergleichen (oder FILE FILE)
   restore DEVICE FILE [--yes]
@@ -385,7 +399,7 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
 </translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+61"/>
         <source>jumoctl: the output could not be written: %1</source>
         <translation>jumoctl: die Ausgabe konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -400,7 +414,7 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
         <translation>Warnung: Map-Datei abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>jumoctl: unknown command &apos;%1&apos;</source>
         <translation>jumoctl: unbekannter Befehl &apos;%1&apos;</translation>
     </message>
@@ -432,7 +446,7 @@ seine Identitätsregister müssen FAMILY bestätigen (sonst Exit-Code 4; --no-id
 <context>
     <name>jumo::CommissioningReport</name>
     <message>
-        <location filename="../lib/commissioning/commissioningreport.cpp" line="+381"/>
+        <location filename="../lib/commissioning/commissioningreport.cpp" line="+375"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
@@ -1368,13 +1382,13 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+66"/>
         <source>the file is replaced again and again</source>
         <translation>die Datei wird immer wieder ersetzt</translation>
     </message>
     <message>
-        <location line="-72"/>
-        <location line="+72"/>
+        <location line="-76"/>
+        <location line="+76"/>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
@@ -1587,14 +1601,39 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+69"/>
+        <location filename="../app/cli/linecommands.cpp" line="+98"/>
         <source>the audit log did not take a record: %1</source>
         <translation>das Audit-Protokoll hat einen Eintrag nicht aufgenommen: %1</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+37"/>
+        <source>Serial port of the one line: its /dev/serial/by-id name, which &apos;jumoctl ports&apos; lists, or /dev/ttyUSB0, say.</source>
+        <translation>Serielle Schnittstelle der einen Leitung: ihr /dev/serial/by-id-Name, den &apos;jumoctl ports&apos; auflistet, oder etwa /dev/ttyUSB0.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>path</source>
         <translation>Pfad</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A line, given once per line: ADDRESS[,name=NAME][,baud=N][,format=8N1][,timeout=MS][,min-response=MS][,retries=N][,read-only]; unnamed lines are line1, line2, ... The options below are the defaults of every --line.</source>
+        <translation>Eine Leitung, je Leitung einmal angegeben: ADDRESS[,name=NAME][,baud=N][,format=8N1][,timeout=MS][,min-response=MS][,retries=N][,read-only]; Leitungen ohne Namen heißen line1, line2, ... Die folgenden Optionen sind die Vorgaben jeder --line.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>spec</source>
+        <translation>Angabe</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Station file (JSON) with the lines, their settings and devices.</source>
+        <translation>Stationsdatei (JSON) mit den Leitungen, ihren Einstellungen und Geräten.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>file</source>
+        <translation>Datei</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1624,12 +1663,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <message>
         <location line="+0"/>
         <location line="+2"/>
-        <location line="+496"/>
+        <location line="+722"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-496"/>
+        <location line="-722"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
@@ -1640,17 +1679,17 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+496"/>
+        <location line="+722"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-482"/>
-        <source>--port is required</source>
-        <translation>--port ist erforderlich</translation>
+        <location line="-719"/>
+        <source>Never write to any line (control-room mode; the system configuration can set it for everyone, a station file for one line).</source>
+        <translation>Auf keine Leitung schreiben (Leitwarten-Modus; die Systemkonfiguration kann ihn für alle festlegen, eine Stationsdatei für eine Leitung).</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>unsupported baud rate or data format: %1 %2</source>
         <translation>Baudrate oder Datenformat nicht unterstützt: %1 %2</translation>
     </message>
@@ -1670,7 +1709,32 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>--retries muss 0..10 sein</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+14"/>
+        <source>give the lines one way: --port, --line or --station</source>
+        <translation>die Leitungen auf eine Art angeben: --port, --line oder --station</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>--%1 does not go with --station: the station file sets each line&apos;s own</source>
+        <translation>--%1 passt nicht zu --station: die Stationsdatei legt das für jede Leitung selbst fest</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1: the station has no lines</source>
+        <translation>%1: die Station hat keine Leitungen</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>give the line: --port PATH, --line SPEC (once per line) or --station FILE</source>
+        <translation>die Leitung angeben: --port PATH, --line SPEC (je Leitung einmal) oder --station FILE</translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <source>line %1: %2</source>
+        <translation>Leitung %1: %2</translation>
+    </message>
+    <message>
+        <location line="+56"/>
         <source>&apos;%1&apos; is not a device: use FAMILY@ADDRESS, e.g. ipc300@1 (families: %2)</source>
         <translation>&apos;%1&apos; ist kein Gerät: FAMILY@ADDRESS verwenden, z. B. ipc300@1 (Gerätefamilien: %2)</translation>
     </message>
@@ -1685,7 +1749,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>ein %1 kann nicht Adresse %2 haben: seine Adressen sind %3..%4</translation>
     </message>
     <message numerus="yes">
-        <location line="+32"/>
+        <location line="+43"/>
         <source>%n device(s) found before the scan stopped</source>
         <translation>
             <numerusform>%n Gerät gefunden, bevor die Suche endete</numerusform>
@@ -1693,7 +1757,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%n poll cycle(s) printed</source>
         <translation>
             <numerusform>%n Abfragezyklus ausgegeben</numerusform>
@@ -1756,12 +1820,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>abgebrochen: %1</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <source>Finds devices on the line and names their family.</source>
-        <translation>Sucht Geräte an der Leitung und benennt ihre Gerätefamilie.</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+20"/>
         <source>First address (default 1).</source>
         <translation>Erste Adresse (Standard 1).</translation>
     </message>
@@ -1782,22 +1841,17 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>--from und --to müssen Adressen 1..255 sein, from &lt;= to</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>scanning address %1 (%2 of %3)</source>
-        <translation>Adresse %1 wird abgefragt (%2 von %3)</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+21"/>
         <source>address %1 answers as %2, which every %2 does whatever its own address: not listed</source>
         <translation>Adresse %1 antwortet als %2, wie es jeder %2 unabhängig von seiner eigenen Adresse tut: nicht aufgeführt</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>address %1 answers, but matches no known family</source>
         <translation>Adresse %1 antwortet, passt aber zu keiner bekannten Gerätefamilie</translation>
     </message>
     <message numerus="yes">
-        <location line="+3"/>
+        <location line="+43"/>
         <source>%n device(s) found</source>
         <translation>
             <numerusform>%n Gerät gefunden</numerusform>
@@ -1805,7 +1859,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+32"/>
         <source>exception %1: %2</source>
         <translation>Exception %1: %2</translation>
     </message>
@@ -1835,19 +1889,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>JSON-Array aus {family, address, id, label, register, value, unit, status}.</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location line="+393"/>
-        <location line="+159"/>
-        <source>FAMILY@ADDRESS, e.g. ipc300@1.</source>
-        <translation>FAMILY@ADDRESS, z. B. ipc300@1.</translation>
-    </message>
-    <message>
-        <location line="-550"/>
+        <location line="+4"/>
         <source>Entry ids.</source>
         <translation>Kennungen der Einträge.</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>&apos;%1&apos; is not an entry of %2</source>
         <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
@@ -1857,7 +1904,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>&apos;%1&apos; ist nur schreibbar</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <location line="+17"/>
         <source>some entries could not be read</source>
         <translation>einige Einträge konnten nicht gelesen werden</translation>
@@ -1873,12 +1920,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Adressen</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>FAMILY@ADDRESS, or FAMILY@0 for a broadcast.</source>
-        <translation>FAMILY@ADDRESS oder FAMILY@0 für einen Broadcast.</translation>
-    </message>
-    <message>
-        <location line="+14"/>
+        <location line="+27"/>
         <source>&apos;%1&apos; is not a device: use FAMILY@ADDRESS</source>
         <translation>&apos;%1&apos; ist kein Gerät: FAMILY@ADDRESS verwenden</translation>
     </message>
@@ -1888,12 +1930,37 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>--verify erwartet Adressen 1..255, nicht &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+297"/>
+        <location line="+118"/>
+        <source>the line %1 is read-only (station file): nothing is written to the devices</source>
+        <translation>die Leitung %1 ist schreibgeschützt (Stationsdatei): es wird nichts auf die Geräte geschrieben</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Polls devices continuously and prints every poll cycle; devices of several lines are polled at once, each line on its own.</source>
+        <translation>Fragt Geräte fortlaufend ab und gibt jeden Abfragezyklus aus; Geräte mehrerer Leitungen werden gleichzeitig abgefragt, jede Leitung für sich.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>FAMILY@ADDRESS; LINE/FAMILY@ADDRESS where there are several lines (default with --station: every device of the station file).</source>
+        <translation>FAMILY@ADDRESS; LINE/FAMILY@ADDRESS, wo es mehrere Leitungen gibt (Vorgabe mit --station: jedes Gerät der Stationsdatei).</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>jumoctl monitor: name at least one device (or give a station file that lists them)</source>
+        <translation>jumoctl monitor: mindestens ein Gerät nennen (oder eine Stationsdatei angeben, die Geräte auflistet)</translation>
+    </message>
+    <message>
+        <location line="+191"/>
+        <source>FAMILY@ADDRESS (LINE/FAMILY@ADDRESS where there are several lines), or a first parameter file.</source>
+        <translation>FAMILY@ADDRESS (LINE/FAMILY@ADDRESS, wo es mehrere Leitungen gibt) oder eine erste Parameterdatei.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>cannot read %1</source>
         <translation>%1 kann nicht gelesen werden</translation>
     </message>
     <message>
-        <location line="+139"/>
+        <location line="+142"/>
         <source>Writes the commissioning report of a device, a document to sign: a title block (site, cabinet, tag, engineer, date, device, line), identity, parameters with the manual&apos;s defaults, live values, active alarms, today&apos;s writes and signature lines. FILE ending in .pdf gives PDF (A4, numbered pages), else HTML.</source>
         <translation>Schreibt den Inbetriebnahmebericht eines Geräts, ein Dokument zum Unterschreiben: Kopfdaten (Standort, Schaltschrank, Kennzeichen, Inbetriebnehmer, Datum, Gerät, Leitung), Identität, Parameter mit den Standardwerten des Handbuchs, Live-Werte, aktive Alarme, die heutigen Schreibvorgänge und Unterschriftszeilen. Endet DATEI auf .pdf, entsteht PDF (A4, nummerierte Seiten), sonst HTML.</translation>
     </message>
@@ -1930,22 +1997,42 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Name</translation>
     </message>
     <message>
-        <location line="-813"/>
-        <source>Never write to the line (control-room mode; the system configuration can set it for everyone).</source>
-        <translation>Nie auf die Leitung schreiben (Leitwarten-Modus; die Systemkonfiguration kann ihn für alle festlegen).</translation>
-    </message>
-    <message>
-        <location line="-13"/>
-        <source>Serial port (required): its /dev/serial/by-id name, which &apos;jumoctl ports&apos; lists, or /dev/ttyUSB0, say.</source>
-        <translation>Serielle Schnittstelle (erforderlich): ihr /dev/serial/by-id-Name, den &apos;jumoctl ports&apos; auflistet, oder etwa /dev/ttyUSB0.</translation>
-    </message>
-    <message>
-        <location line="+16"/>
+        <location line="-1107"/>
         <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
         <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
     </message>
     <message>
-        <location line="+323"/>
+        <location line="+320"/>
+        <source>Finds devices on the line and names their family; with several lines (--line, --station), on every line at once.</source>
+        <translation>Sucht Geräte an der Leitung und benennt ihre Gerätefamilie; bei mehreren Leitungen (--line, --station) an allen Leitungen gleichzeitig.</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>address %1 (%2 of %3)</source>
+        <translation>Adresse %1 (%2 von %3)</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>scanning %1</source>
+        <translation>Suche %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+17"/>
+        <source>%1: %n device(s) found</source>
+        <translation>
+            <numerusform>%1: %n Gerät gefunden</numerusform>
+            <numerusform>%1: %n Geräte gefunden</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+64"/>
+        <location line="+482"/>
+        <location line="+164"/>
+        <source>FAMILY@ADDRESS, e.g. ipc300@1; LINE/FAMILY@ADDRESS where there are several lines.</source>
+        <translation>FAMILY@ADDRESS, z. B. ipc300@1; LINE/FAMILY@ADDRESS, wo es mehrere Leitungen gibt.</translation>
+    </message>
+    <message>
+        <location line="-579"/>
         <source>Writes entries of a device; each write is verified by reading it back.
 
 ID=VALUE writes the whole entry: for a bit field it replaces EVERY bit of
@@ -1973,12 +2060,17 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 2 falsche Argumente, nichts gesendet.</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+18"/>
+        <source>FAMILY@ADDRESS, or FAMILY@0 for a broadcast; LINE/ before it where there are several lines.</source>
+        <translation>FAMILY@ADDRESS oder FAMILY@0 für einen Broadcast; LINE/ davor, wo es mehrere Leitungen gibt.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>ID=VALUE, e.g. input_setpoint=42.5, or ID.BIT=0|1, e.g. binary_signal_write.digital_output=1.</source>
         <translation>ID=VALUE, z. B. input_setpoint=42.5, oder ID.BIT=0|1, z. B. binary_signal_write.digital_output=1.</translation>
     </message>
     <message>
-        <location line="+99"/>
+        <location line="+111"/>
         <source>unknown, check the device: </source>
         <translation>unbekannt, Gerät prüfen: </translation>
     </message>
@@ -2003,12 +2095,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Nur-Lese-Modus (--read-only): Es wird nichts auf die Geräte geschrieben</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Polls devices continuously and prints every poll cycle.</source>
-        <translation>Fragt Geräte fortlaufend ab und gibt jeden Abfragezyklus aus.</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+13"/>
         <source>Poll interval per device in ms (default 0: as fast as the line allows).</source>
         <translation>Abfrageintervall je Gerät in ms (Standard 0: so schnell, wie die Leitung es erlaubt).</translation>
     </message>
@@ -2038,12 +2125,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>CSV-Zeilen: time,device,id,value,unit,status.</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>FAMILY@ADDRESS.</source>
-        <translation>FAMILY@ADDRESS.</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+10"/>
         <source>jumoctl monitor: give exactly one of --jsonl and --csv</source>
         <translation>jumoctl monitor: genau eine der Optionen --jsonl und --csv angeben</translation>
     </message>
@@ -2058,12 +2140,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>--cycles muss eine Zahl &gt;= 0 sein</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+22"/>
         <source>&apos;%1&apos; is not a readable entry of %2</source>
         <translation>&apos;%1&apos; ist kein lesbarer Eintrag von %2</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+154"/>
         <source>no differences</source>
         <translation>keine Unterschiede</translation>
     </message>
@@ -2102,12 +2184,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Ohne Rückfrage schreiben.</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>FAMILY@ADDRESS, or a first parameter file.</source>
-        <translation>FAMILY@ADDRESS oder eine erste Parameterdatei.</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+7"/>
         <source>Parameter file (JSON).</source>
         <translation>Parameterdatei (JSON).</translation>
     </message>
@@ -2117,18 +2194,18 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>die Dateien gehören zu verschiedenen oder unbekannten Gerätefamilien: %1, %2</translation>
     </message>
     <message>
-        <location line="+25"/>
-        <location line="+36"/>
+        <location line="+27"/>
+        <location line="+37"/>
         <source>refused: %1</source>
         <translation>abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="-31"/>
+        <location line="-32"/>
         <source>read-only mode: nothing would be restored</source>
         <translation>Nur-Lese-Modus: es würde nichts wiederhergestellt</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>these parameters could not be read, nothing was done: %1</source>
         <translation>diese Parameter konnten nicht gelesen werden, es wurde nichts getan: %1</translation>
     </message>
@@ -2167,12 +2244,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>nichts geschrieben</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+45"/>
         <source>Report file (.pdf or .html).</source>
         <translation>Berichtsdatei (.pdf oder .html).</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>%1 did not answer: no report written</source>
         <translation>%1 hat nicht geantwortet: kein Bericht geschrieben</translation>
     </message>
@@ -3422,19 +3499,19 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ParameterEditModel</name>
     <message>
-        <location filename="../lib/models/parametereditmodel.cpp" line="+199"/>
-        <location line="+249"/>
+        <location filename="../lib/models/parametereditmodel.cpp" line="+185"/>
+        <location line="+260"/>
         <source>On</source>
         <translation>Ein</translation>
     </message>
     <message>
-        <location line="-249"/>
-        <location line="+251"/>
+        <location line="-260"/>
+        <location line="+262"/>
         <source>Off</source>
         <translation>Aus</translation>
     </message>
     <message>
-        <location line="-232"/>
+        <location line="-243"/>
         <source>write-only</source>
         <translation>nur schreibbar</translation>
     </message>
@@ -3568,30 +3645,27 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Letztes Schreiben</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <location line="+41"/>
+        <location line="+10"/>
         <source>&apos;%1&apos; is no parameter listed here</source>
         <translation>„%1“ ist kein hier aufgeführter Parameter</translation>
     </message>
     <message>
-        <location line="-39"/>
-        <location line="+41"/>
+        <location line="+2"/>
         <source>read-only mode: nothing is changed or written</source>
         <translation>Nur-Lese-Modus: es wird nichts geändert oder geschrieben</translation>
     </message>
     <message>
-        <location line="-39"/>
-        <location line="+41"/>
+        <location line="+2"/>
         <source>a write is under way: changes wait until it has ended</source>
         <translation>es wird gerade geschrieben: Änderungen warten, bis das beendet ist</translation>
     </message>
     <message>
-        <location line="-30"/>
+        <location line="+24"/>
         <source>&apos;%1&apos; is no number that can be read one way only: write it without thousands separators</source>
         <translation>„%1“ ist keine eindeutig lesbare Zahl: bitte ohne Tausenderpunkte schreiben</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+36"/>
         <source>%1 is not a whole number: %2 takes whole numbers only</source>
         <translation>%1 ist keine ganze Zahl: %2 nimmt nur ganze Zahlen an</translation>
     </message>
@@ -4508,7 +4582,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RegisterMap</name>
     <message>
-        <location filename="../lib/protocol/registermap.cpp" line="+182"/>
+        <location filename="../lib/protocol/registermap.cpp" line="+196"/>
         <source>exception %1 (not documented for this family)</source>
         <translation>Exception-Code %1 (für diese Gerätefamilie nicht dokumentiert)</translation>
     </message>
@@ -4763,6 +4837,232 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+3"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::StationCommands</name>
+    <message>
+        <location filename="../app/cli/stationcommands.cpp" line="+18"/>
+        <source>Checks a station file and lists its lines and devices as the line commands take them (--station FILE). Every problem is named with the line and the key; no line is opened.</source>
+        <translation>Prüft eine Stationsdatei und listet ihre Leitungen und Geräte so auf, wie die Leitungsbefehle sie nehmen (--station FILE). Jedes Problem wird mit Leitung und Schlüssel genannt; keine Leitung wird geöffnet.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Only check: one line of summary when the file is good.</source>
+        <translation>Nur prüfen: eine Zeile Zusammenfassung, wenn die Datei in Ordnung ist.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Print the station as its file would be written, every default filled in.</source>
+        <translation>Die Station so ausgeben, wie ihre Datei geschrieben würde, mit allen Vorgaben ausgefüllt.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Station file (JSON).</source>
+        <translation>Stationsdatei (JSON).</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>%n line(s)</source>
+        <translation>
+            <numerusform>%n Leitung</numerusform>
+            <numerusform>%n Leitungen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n device(s)</source>
+        <translation>
+            <numerusform>%n Gerät</numerusform>
+            <numerusform>%n Geräte</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: a good station file (%2)</source>
+        <translation>%1: eine gültige Stationsdatei (%2)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>station %1: %2</source>
+        <translation>Station %1: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>timeout %1 ms</source>
+        <translation>Timeout %1 ms</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>timeout from the families</source>
+        <translation>Timeout aus den Gerätefamilien</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>minimum response %1 ms</source>
+        <translation>minimale Antwortzeit %1 ms</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n retry(s)</source>
+        <translation>
+            <numerusform>%n Wiederholung</numerusform>
+            <numerusform>%n Wiederholungen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>read-only</source>
+        <translation>schreibgeschützt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>line %1: %2 (%3)</source>
+        <translation>Leitung %1: %2 (%3)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no devices listed</source>
+        <translation>keine Geräte aufgeführt</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::StationConfig</name>
+    <message>
+        <location filename="../lib/bus/stationconfig.cpp" line="+48"/>
+        <source>the line address (serial port or URL) is empty</source>
+        <translation>die Adresse der Leitung (serielle Schnittstelle oder URL) ist leer</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <location line="+115"/>
+        <source>&apos;name&apos; must be 1..%1 of the letters A-Z, a-z, digits, &apos;_&apos;, &apos;.&apos; and &apos;-&apos;, not &apos;%2&apos;</source>
+        <translation>&apos;name&apos; muss aus 1..%1 der Zeichen A-Z, a-z, Ziffern, &apos;_&apos;, &apos;.&apos; und &apos;-&apos; bestehen, nicht &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <location line="-108"/>
+        <source>&apos;%1&apos; must be 4800, 9600, 19200 or 38400, not %2</source>
+        <translation>&apos;%1&apos; muss 4800, 9600, 19200 oder 38400 sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;%1&apos; must be 8N1, 8E1, 8O1 or 8N2, not %2</source>
+        <translation>&apos;%1&apos; muss 8N1, 8E1, 8O1 oder 8N2 sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;%1&apos; must be 0 (derived from the baud rate and the families) or 10..60000 ms, not %2</source>
+        <translation>&apos;%1&apos; muss 0 (aus Baudrate und Gerätefamilien abgeleitet) oder 10..60000 ms sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>address %1 is used twice on the line (%2)</source>
+        <translation>Adresse %1 ist auf der Leitung doppelt vergeben (%2)</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>the line name &apos;%1&apos; is used by lines[%2] too</source>
+        <translation>der Leitungsname &apos;%1&apos; wird auch von lines[%2] verwendet</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>malformed JSON at byte %1: %2</source>
+        <translation>fehlerhaftes JSON bei Byte %1: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>malformed JSON at byte %1: a control character</source>
+        <translation>fehlerhaftes JSON bei Byte %1: ein Steuerzeichen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>malformed JSON at byte %1: &apos;%2&apos; given twice in one object</source>
+        <translation>fehlerhaftes JSON bei Byte %1: &apos;%2&apos; steht zweimal in einem Objekt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>not a station file (no &quot;format&quot;: &quot;jumo-station&quot;)</source>
+        <translation>keine Stationsdatei (kein &quot;format&quot;: &quot;jumo-station&quot;)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>station file version %1 is not supported (expected %2)</source>
+        <translation>Stationsdatei-Version %1 wird nicht unterstützt (erwartet: %2)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>&apos;lines&apos; must be an array of lines</source>
+        <translation>&apos;lines&apos; muss ein Array von Leitungen sein</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>a line must be an object, not %1</source>
+        <translation>eine Leitung muss ein Objekt sein, nicht %1</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>&apos;devices&apos; must be an array of &quot;FAMILY@ADDRESS&quot; texts, e.g. &quot;ipc300@1&quot;</source>
+        <translation>&apos;devices&apos; muss ein Array von Texten &quot;FAMILY@ADDRESS&quot; sein, z. B. &quot;ipc300@1&quot;</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>&apos;%1&apos; is not a device: use FAMILY@ADDRESS, e.g. ipc300@1</source>
+        <translation>&apos;%1&apos; ist kein Gerät: FAMILY@ADDRESS verwenden, z. B. ipc300@1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;%1&apos;: unknown family &apos;%2&apos; (families: %3)</source>
+        <translation>&apos;%1&apos;: unbekannte Gerätefamilie &apos;%2&apos; (Gerätefamilien: %3)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&apos;%1&apos;: the address must be 1..%2, not %3</source>
+        <translation>&apos;%1&apos;: die Adresse muss 1..%2 sein, nicht %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1&apos;: a %2 cannot have address %3, its addresses are %4..%5</source>
+        <translation>&apos;%1&apos;: ein %2 kann nicht die Adresse %3 haben, seine Adressen sind %4..%5</translation>
+    </message>
+    <message>
+        <location line="+116"/>
+        <source>&apos;%1&apos; must be a whole number %2..%3, not &apos;%4&apos;</source>
+        <translation>&apos;%1&apos; muss eine ganze Zahl %2..%3 sein, nicht &apos;%4&apos;</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&apos;%1&apos; is given twice</source>
+        <translation>&apos;%1&apos; ist zweimal angegeben</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&apos;read-only&apos; takes no value</source>
+        <translation>&apos;read-only&apos; nimmt keinen Wert</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>unknown option &apos;%1&apos; (ADDRESS[,name=NAME][,baud=N][,format=8N1][,timeout=MS][,min-response=MS][,retries=N][,read-only])</source>
+        <translation>unbekannte Option &apos;%1&apos; (ADDRESS[,name=NAME][,baud=N][,format=8N1][,timeout=MS][,min-response=MS][,retries=N][,read-only])</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>--line &apos;%1&apos;: %2</source>
+        <translation>--line &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>&apos;%1&apos;: there is no line &apos;%2&apos; (lines: %3)</source>
+        <translation>&apos;%1&apos;: es gibt keine Leitung &apos;%2&apos; (Leitungen: %3)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;%1&apos;: no line is given</source>
+        <translation>&apos;%1&apos;: keine Leitung angegeben</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1&apos;: which line? The station has the lines %2: name it as LINE/%1, e.g. %3/%1</source>
+        <translation>&apos;%1&apos;: welche Leitung? Die Station hat die Leitungen %2: als LINE/%1 angeben, z. B. %3/%1</translation>
     </message>
 </context>
 <context>

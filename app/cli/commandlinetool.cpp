@@ -6,6 +6,7 @@
 #include "mapcommands.h"
 #include "modbuslogging.h"
 #include "portcommands.h"
+#include "stationcommands.h"
 
 #include <QFileDevice>
 
@@ -33,16 +34,23 @@ QString CommandLineTool::usage() const
               "The serial ports of this machine:\n"
               "  ports [--json]           list them: stable by-id names, adapters, access\n"
               "\n"
-              "Commands on a serial line (all take --port PATH --baud N --format 8N1|8E1|8O1|8N2\n"
-              "--timeout MS --read-only --verbose); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1, and\n"
-              "its identity registers must confirm FAMILY (exit code 4 if not; --no-identify skips it):\n"
-              "  scan [--from A --to B]   find devices and name their family\n"
+              "Stations of several lines:\n"
+              "  station FILE [--check|--json]\n"
+              "                           check a station file, list its lines and devices\n"
+              "\n"
+              "Commands on lines (all take --port PATH --baud N --format 8N1|8E1|8O1|8N2\n"
+              "--timeout MS --read-only --verbose for one line, or --line SPEC once per line, or\n"
+              "--station FILE); DEVICE is FAMILY@ADDRESS, e.g. ipc300@1, or LINE/FAMILY@ADDRESS\n"
+              "where there are several lines; its identity registers must confirm FAMILY (exit\n"
+              "code 4 if not; --no-identify skips it). A command of one device opens only its line:\n"
+              "  scan [--from A --to B]   find devices and name their family, on every line\n"
               "  read DEVICE ID...        read entries once\n"
               "  write DEVICE ID=VALUE... write entries, verified by reading them back; a bit field's\n"
               "                           ID=VALUE replaces every bit, ID.BIT=0|1 changes one bit only\n"
               "  dump DEVICE [--json]     read every readable entry once\n"
               "  monitor DEVICE... --jsonl|--csv [--interval MS] [--cycles N]\n"
-              "                           poll continuously, one record per poll cycle\n"
+              "                           poll continuously, one record per poll cycle; the\n"
+              "                           devices of several lines at once\n"
               "  backup DEVICE FILE       save every parameter of a device to a file\n"
               "  diff DEVICE FILE         compare a device with a file (or FILE FILE)\n"
               "  restore DEVICE FILE [--yes]\n"
@@ -114,6 +122,8 @@ std::optional<int> CommandLineTool::runCommand(const QStringList &arguments)
         return maps.plan(rest);
     if (command == QLatin1String("decode"))
         return maps.decode(rest);
+    if (command == QLatin1String("station"))
+        return StationCommands(registry, m_out, m_err).station(rest);
     if (LineCommands::commands().contains(command)) {
         m_lineCommands = std::make_unique<LineCommands>(registry, m_out, m_err);
         connect(m_lineCommands.get(), &LineCommands::finished, this, [this](int code) { emit finished(checkOutput(code)); });

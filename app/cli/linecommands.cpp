@@ -23,6 +23,7 @@
 #include "systemsettings.h"
 
 #include <QDateTime>
+#include <QDir>
 #include <QFileDevice>
 #include <QFileInfo>
 #include <QRegularExpression>
@@ -55,6 +56,35 @@ bool isFailure(const EntryState *state)
     return !state || !state->isCurrent();
 }
 
+// The words of the monitor's JSON contract (and of the MQTT topics).
+QString conditionName(DeviceCondition::State state)
+{
+    switch (state) {
+    case DeviceCondition::State::Online:
+        return QStringLiteral("online");
+    case DeviceCondition::State::Offline:
+        return QStringLiteral("offline");
+    case DeviceCondition::State::LineLost:
+        return QStringLiteral("line_lost");
+    case DeviceCondition::State::Disconnected:
+        return QStringLiteral("disconnected");
+    case DeviceCondition::State::Identifying:
+        return QStringLiteral("identifying");
+    case DeviceCondition::State::WrongDevice:
+        return QStringLiteral("wrong_device");
+    }
+    return QStringLiteral("disconnected");
+}
+
+// A path is a path: Qt would put /dev/ in front of a relative one ("line/master"). A URL
+// (a gateway) stays as it is.
+QString absolutePort(const QString &port, const QString &folder)
+{
+    if (port.contains(QLatin1String("://")) || !port.contains(QLatin1Char('/')) || port.startsWith(QLatin1Char('/')))
+        return port;
+    return QDir::cleanPath(QDir(folder).absoluteFilePath(port));
+}
+
 } // namespace
 
 LineCommands::LineCommands(const FamilyRegistry &registry, QTextStream &out, QTextStream &err, QObject *parent)
@@ -64,13 +94,10 @@ LineCommands::LineCommands(const FamilyRegistry &registry, QTextStream &out, QTe
     m_audit = new EventLog(EventLog::defaultFolder() + QStringLiteral("/write-audit.jsonl"), this);
     // Rotated as the HMI rotates it: the same settings.
     m_audit->setRotation(EventLog::Rotation::fromSettings(QSettings(QStringLiteral("jumo"), QStringLiteral("jumo-hmi"))));
-    new WriteAudit(&m_bus, m_audit, this);
     connect(m_audit, &EventLog::writeFailed, this, [this](const QString &message) {
         m_err << tr("the audit log did not take a record: %1").arg(message) << Qt::endl;
         m_auditFailed = true;
     });
-    m_identity = new IdentityGate(m_bus, m_registry, m_err, this);
-    m_broadcast = new BroadcastGate(m_bus, m_registry, m_err, this);
 }
 
 LineCommands::~LineCommands() = default;
@@ -104,7 +131,17 @@ void LineCommands::addLineOptions(CommandParser &parser, bool namesDevices)
 {
     if (namesDevices)
         IdentityGate::addOption(parser);
-    parser.addOption({QStringLiteral("port"), tr("Serial port (required): its /dev/serial/by-id name, which 'jumoctl ports' lists, or /dev/ttyUSB0, say."), tr("path")});
+    parser.addOption({QStringLiteral("port"),
+                      tr("Serial port of the one line: its /dev/serial/by-id name, which 'jumoctl ports' lists, or "
+                         "/dev/ttyUSB0, say."),
+                      tr("path")});
+    parser.addOption({QStringLiteral("line"),
+                      tr("A line, given once per line: ADDRESS[,name=NAME][,baud=N][,format=8N1][,timeout=MS]"
+                         "[,min-response=MS][,retries=N][,read-only]; unnamed lines are line1, line2, ... The options "
+                         "below are the defaults of every --line."),
+                      tr("spec")});
+    parser.addOption({QStringLiteral("station"),
+                      tr("Station file (JSON) with the lines, their settings and devices."), tr("file")});
     parser.addOption({QStringLiteral("baud"), tr("Baud rate: 4800, 9600, 19200 or 38400 (default 9600)."), tr("rate"),
                       QStringLiteral("9600")});
     parser.addOption({QStringLiteral("format"), tr("Data format: 8N1, 8E1, 8O1 or 8N2 (default 8N1)."), tr("format"),
@@ -117,23 +154,15 @@ void LineCommands::addLineOptions(CommandParser &parser, bool namesDevices)
     parser.addOption({QStringLiteral("retries"), tr("Retries after a lost reply (default 2)."), tr("n"),
                       QStringLiteral("2")});
     parser.addOption({QStringLiteral("read-only"),
-                      tr("Never write to the line (control-room mode; the system configuration can set it for "
-                         "everyone).")});
+                      tr("Never write to any line (control-room mode; the system configuration can set it for "
+                         "everyone, a station file for one line).")});
     parser.addOption({QStringLiteral("verbose"),
                       tr("Show Qt's Modbus messages (CRC errors, timeouts, frames) on stderr.")});
 }
 
-std::optional<int> LineCommands::openLine(CommandParser &parser)
+std::optional<BusSettings> LineCommands::lineDefaults(const CommandParser &parser)
 {
     BusSettings settings;
-    settings.portName = parser.value(QStringLiteral("port"));
-    if (settings.portName.isEmpty()) {
-        m_err << tr("--port is required") << Qt::endl;
-        return 2;
-    }
-    // A path is a path: Qt would put /dev/ in front of a relative one ("line/master").
-    if (settings.portName.contains(QLatin1Char('/')) && !settings.portName.startsWith(QLatin1Char('/')))
-        settings.portName = QFileInfo(settings.portName).absoluteFilePath();
     bool ok = false;
     const int baud = parser.value(QStringLiteral("baud")).toInt(&ok);
     const std::optional<LineFormat> format = LineFormat::parse(ok ? baud : 0, parser.value(QStringLiteral("format")));
@@ -141,56 +170,203 @@ std::optional<int> LineCommands::openLine(CommandParser &parser)
         m_err << tr("unsupported baud rate or data format: %1 %2")
                          .arg(parser.value(QStringLiteral("baud")), parser.value(QStringLiteral("format")))
               << Qt::endl;
-        return 2;
+        return std::nullopt;
     }
     settings.format = *format;
     if (parser.isSet(QStringLiteral("timeout"))) {
         settings.timeoutMs = parser.value(QStringLiteral("timeout")).toInt(&ok);
         if (!ok || settings.timeoutMs < 10 || settings.timeoutMs > 60000) {
             m_err << tr("--timeout must be 10..60000 ms") << Qt::endl;
-            return 2;
+            return std::nullopt;
         }
     }
     settings.minimumResponseTimeMs = parser.value(QStringLiteral("min-response")).toInt(&ok);
     if (!ok || settings.minimumResponseTimeMs < 0 || settings.minimumResponseTimeMs > 500) {
         m_err << tr("--min-response must be 0..500 ms") << Qt::endl;
-        return 2;
+        return std::nullopt;
     }
     settings.retries = parser.value(QStringLiteral("retries")).toInt(&ok);
     if (!ok || settings.retries < 0 || settings.retries > 10) {
         m_err << tr("--retries must be 0..10") << Qt::endl;
-        return 2;
+        return std::nullopt;
     }
-    showModbusLogging(parser.isSet(QStringLiteral("verbose")));
-    // As in the HMI: the system configuration can make every tool read-only.
-    settings.readOnly = parser.isSet(QStringLiteral("read-only")) || SystemSettings::readOnly();
-    m_identity->configure(parser);
-    m_bus.setSettings(settings);
-    if (!m_bus.open()) {
-        m_err << m_bus.lastError() << Qt::endl;
-        return 1;
+    return settings;
+}
+
+std::optional<int> LineCommands::readStation(const CommandParser &parser)
+{
+    if (m_stationRead)
+        return std::nullopt;
+    const bool port = parser.isSet(QStringLiteral("port"));
+    const QStringList specs = parser.values(QStringLiteral("line"));
+    const bool stationFile = parser.isSet(QStringLiteral("station"));
+    if (int(port) + int(!specs.isEmpty()) + int(stationFile) > 1) {
+        m_err << tr("give the lines one way: --port, --line or --station") << Qt::endl;
+        return exitcode::Usage;
     }
-    connect(&m_bus, &Bus::lineError, this, [this](const QString &message) {
-        m_err << message << Qt::endl;
-        m_failed = true;
-        finish(1);
-    });
+    QString error;
+    if (stationFile) {
+        for (const QString &option : {QStringLiteral("baud"), QStringLiteral("format"), QStringLiteral("timeout"),
+                                      QStringLiteral("min-response"), QStringLiteral("retries")}) {
+            if (parser.isSet(option)) {
+                m_err << tr("--%1 does not go with --station: the station file sets each line's own").arg(option)
+                      << Qt::endl;
+                return exitcode::Usage;
+            }
+        }
+        const QString path = parser.value(QStringLiteral("station"));
+        std::optional<StationConfig> station = StationConfig::load(path, m_registry, &error);
+        if (!station) {
+            m_err << error << Qt::endl;
+            return exitcode::Usage;
+        }
+        if (station->lines.isEmpty()) {
+            m_err << tr("%1: the station has no lines").arg(path) << Qt::endl;
+            return exitcode::Usage;
+        }
+        // A relative path in the file is meant from where the file is.
+        for (LineConfig &line : station->lines)
+            line.settings.portName = absolutePort(line.settings.portName, QFileInfo(path).absolutePath());
+        m_station = std::move(*station);
+    } else {
+        const std::optional<BusSettings> defaults = lineDefaults(parser);
+        if (!defaults)
+            return exitcode::Usage;
+        QList<LineConfig> lines;
+        if (port) {
+            LineConfig line;
+            line.settings = *defaults;
+            line.settings.portName = parser.value(QStringLiteral("port"));
+            lines << line;
+        }
+        for (const QString &spec : specs) {
+            std::optional<LineConfig> line = StationConfig::parseLineSpec(spec, *defaults, &error);
+            if (!line) {
+                m_err << error << Qt::endl;
+                return exitcode::Usage;
+            }
+            lines << *line;
+        }
+        if (lines.isEmpty() || lines.constFirst().settings.portName.isEmpty()) {
+            m_err << tr("give the line: --port PATH, --line SPEC (once per line) or --station FILE") << Qt::endl;
+            return exitcode::Usage;
+        }
+        std::optional<StationConfig> station = StationConfig::fromLines(lines, &error);
+        if (!station) {
+            m_err << error << Qt::endl;
+            return exitcode::Usage;
+        }
+        for (LineConfig &line : station->lines)
+            line.settings.portName = absolutePort(line.settings.portName, QDir::currentPath());
+        m_station = std::move(*station);
+    }
+    // As in the HMI: the system configuration can make every tool read-only; --read-only
+    // makes every line of this command read-only, a station file one line.
+    const bool readOnly = parser.isSet(QStringLiteral("read-only")) || SystemSettings::readOnly();
+    for (LineConfig &line : m_station.lines)
+        line.settings.readOnly = line.settings.readOnly || readOnly;
+    m_lines.resize(size_t(m_station.lines.size()));
+    m_stationRead = true;
     return std::nullopt;
+}
+
+LineCommands::Line &LineCommands::prepareLine(qsizetype index)
+{
+    std::unique_ptr<Line> &line = m_lines.at(size_t(index));
+    if (!line) {
+        line = std::make_unique<Line>();
+        line->name = m_station.lines.at(index).name;
+        line->bus = std::make_unique<Bus>();
+        line->bus->setSettings(m_station.lines.at(index).settings);
+        // Writes from the command line are audited like the HMI's, in the same log.
+        new WriteAudit(line->bus.get(), m_audit, line->bus.get());
+        line->identity = std::make_unique<IdentityGate>(*line->bus, m_registry, m_err);
+    }
+    return *line;
+}
+
+std::optional<int> LineCommands::openLines(CommandParser &parser)
+{
+    showModbusLogging(parser.isSet(QStringLiteral("verbose")));
+    for (size_t i = 0; i < m_lines.size(); ++i) {
+        Line *line = m_lines[i].get();
+        if (!line)
+            continue;
+        line->identity->configure(parser);
+        if (!line->bus->open()) {
+            m_err << lineMessage(qsizetype(i), line->bus->lastError()) << Qt::endl;
+            return exitcode::Failed;
+        }
+        connect(line->bus.get(), &Bus::lineError, this,
+                [this, i](const QString &message) { lineLost(qsizetype(i), message); });
+        connect(line->bus.get(), &Bus::stateChanged, this, [line](LineState state) {
+            if (state == LineState::Connected)
+                line->lost = false;
+        });
+    }
+    return std::nullopt;
+}
+
+QString LineCommands::lineMessage(qsizetype index, const QString &message) const
+{
+    if (m_station.lines.size() < 2)
+        return message;
+    return tr("line %1: %2").arg(m_station.lines.at(index).name, message);
+}
+
+void LineCommands::lineLost(qsizetype index, const QString &message)
+{
+    m_err << lineMessage(index, message) << Qt::endl;
+    m_failed = true;
+    Line &line = *m_lines.at(size_t(index));
+    line.lost = true;
+    const bool othersAlive = std::any_of(m_lines.cbegin(), m_lines.cend(),
+                                         [](const std::unique_ptr<Line> &l) { return l && !l->lost; });
+    if (m_monitoring) {
+        // Its devices say so at once (unknown, line_lost); the bus tries to reopen it.
+        for (const Target &t : std::as_const(m_targets)) {
+            if (t.line == index)
+                printRecord(t, monitorEntries(t), std::nullopt);
+        }
+        if (othersAlive) {
+            checkMonitorDone();
+            return;
+        }
+    } else if (line.scanner && othersAlive) {
+        line.scanner->cancel();
+        return;
+    }
+    finish(exitcode::Failed);
 }
 
 bool LineCommands::isDeviceName(const QString &text)
 {
-    static const QRegularExpression pattern(QRegularExpression::anchoredPattern(QStringLiteral("[a-z][a-z0-9_]*@[0-9]{1,3}")));
+    static const QRegularExpression pattern(
+            QRegularExpression::anchoredPattern(QStringLiteral("([A-Za-z0-9_.-]{1,32}/)?[a-z][a-z0-9_]*@[0-9]{1,3}")));
     return pattern.match(text).hasMatch();
+}
+
+QString LineCommands::targetName(const Target &target) const
+{
+    const QString device = deviceName(*target.map, target.address);
+    return m_station.lines.size() > 1 ? QStringLiteral("%1/%2").arg(m_station.lines.at(target.line).name, device)
+                                      : device;
 }
 
 bool LineCommands::parseDevice(const QString &text, Target &target)
 {
-    const QString family = text.section(QLatin1Char('@'), 0, 0);
+    QString device;
+    QString error;
+    target.line = m_station.lineOfDevice(text, &device, &error);
+    if (target.line < 0) {
+        m_err << error << Qt::endl;
+        return false;
+    }
+    const QString family = device.section(QLatin1Char('@'), 0, 0);
     bool ok = false;
-    const int address = text.section(QLatin1Char('@'), 1).toInt(&ok);
+    const int address = device.section(QLatin1Char('@'), 1).toInt(&ok);
     target.map = m_registry.family(family);
-    if (!target.map || !ok || !isDeviceName(text)) {
+    if (!target.map || !ok || !isDeviceName(device)) {
         m_err << tr("'%1' is not a device: use FAMILY@ADDRESS, e.g. ipc300@1 (families: %2)")
                          .arg(text, m_registry.familyIds().join(QStringLiteral(", ")))
               << Qt::endl;
@@ -223,18 +399,30 @@ void LineCommands::interrupt(int signal)
     // Jobs stop asking; closing the line drops what has not gone out, and a write under
     // way ends as unknown. Their outcomes (and audit records) arrive from the event loop:
     // the command ends right after them.
-    m_identity->cancel();
-    m_broadcast->cancel();
-    if (m_scanner)
-        m_scanner->cancel();
-    m_bus.close();
+    for (const std::unique_ptr<Line> &line : m_lines) {
+        if (!line)
+            continue;
+        line->identity->cancel();
+        if (line->scanner)
+            line->scanner->cancel();
+    }
+    if (m_broadcast)
+        m_broadcast->cancel();
+    for (const std::unique_ptr<Line> &line : m_lines) {
+        if (line)
+            line->bus->close();
+    }
     QMetaObject::invokeMethod(this, [this] { finish(m_interruptCode); }, Qt::QueuedConnection);
 }
 
 QString LineCommands::progressSummary() const
 {
-    if (m_command == QLatin1String("scan"))
-        return tr("%n device(s) found before the scan stopped", nullptr, int(m_targets.size()));
+    if (m_command == QLatin1String("scan")) {
+        int found = 0;
+        for (const std::unique_ptr<Line> &line : m_lines)
+            found += line ? line->found : 0;
+        return tr("%n device(s) found before the scan stopped", nullptr, found);
+    }
     if (m_command == QLatin1String("monitor")) {
         int cycles = 0;
         for (const Target &t : m_targets)
@@ -279,13 +467,18 @@ void LineCommands::finish(int code)
         code = exitcode::Failed;
     m_out.flush();
     m_err.flush();
-    m_bus.close();
+    for (const std::unique_ptr<Line> &line : m_lines) {
+        if (line)
+            line->bus->close();
+    }
     emit finished(code);
 }
 
 std::optional<int> LineCommands::scan(const QStringList &arguments)
 {
-    CommandParser parser(QStringLiteral("scan"), tr("Finds devices on the line and names their family."));
+    CommandParser parser(QStringLiteral("scan"),
+                         tr("Finds devices on the line and names their family; with several lines (--line, "
+                            "--station), on every line at once."));
     addLineOptions(parser, false);
     parser.addOption({QStringLiteral("from"), tr("First address (default 1)."), tr("address"), QStringLiteral("1")});
     parser.addOption({QStringLiteral("to"), tr("Last address (default 247)."), tr("address"), QStringLiteral("247")});
@@ -299,35 +492,82 @@ std::optional<int> LineCommands::scan(const QStringList &arguments)
         m_err << tr("--from and --to must be addresses 1..255, from <= to") << Qt::endl;
         return 2;
     }
-    if (const auto stop = openLine(parser))
+    if (const auto stop = readStation(parser))
         return stop;
-    m_scanner = std::make_unique<DeviceScanner>(m_bus, m_registry.families());
-    connect(m_scanner.get(), &DeviceScanner::progress, this, [this](int address, int done, int total) {
-        m_err << '\r' << tr("scanning address %1 (%2 of %3)").arg(address).arg(done + 1).arg(total) << Qt::flush;
-    });
-    connect(m_scanner.get(), &DeviceScanner::found, this, [this](int address, std::shared_ptr<const RegisterMap> map) {
-        m_err << '\r' << QString(40, QLatin1Char(' ')) << '\r';
-        if (address == map->protocol.alwaysAnswersAddress) {
-            // Every device of the family answers there, whatever its own address.
-            m_err << tr("address %1 answers as %2, which every %2 does whatever its own address: not listed")
-                             .arg(address)
-                             .arg(map->family)
+    for (qsizetype i = 0; i < m_station.lines.size(); ++i)
+        prepareLine(i);
+    if (const auto stop = openLines(parser))
+        return stop;
+    for (qsizetype i = 0; i < m_station.lines.size(); ++i) {
+        Line &line = *m_lines[size_t(i)];
+        line.scanner = std::make_unique<DeviceScanner>(*line.bus, m_registry.families());
+        connect(line.scanner.get(), &DeviceScanner::progress, this, [this, i](int address, int done, int total) {
+            m_lines[size_t(i)]->progress = tr("address %1 (%2 of %3)").arg(address).arg(done + 1).arg(total);
+            showScanProgress();
+        });
+        connect(line.scanner.get(), &DeviceScanner::found, this,
+                [this, i](int address, std::shared_ptr<const RegisterMap> map) {
+                    clearScanProgress();
+                    if (address == map->protocol.alwaysAnswersAddress) {
+                        // Every device of the family answers there, whatever its own address.
+                        m_err << lineMessage(i, tr("address %1 answers as %2, which every %2 does whatever its own "
+                                                   "address: not listed")
+                                                        .arg(address)
+                                                        .arg(map->family))
+                              << Qt::endl;
+                        return;
+                    }
+                    const Target target{map, quint8(address), 0, 0, i};
+                    m_out << targetName(target) << '\t' << map->name << Qt::endl;
+                    ++m_lines[size_t(i)]->found;
+                });
+        connect(line.scanner.get(), &DeviceScanner::unknownDevice, this, [this, i](int address) {
+            clearScanProgress();
+            m_err << lineMessage(i, tr("address %1 answers, but matches no known family").arg(address))
                   << Qt::endl;
-            return;
-        }
-        m_out << deviceName(*map, quint8(address)) << '\t' << map->name << Qt::endl;
-        m_targets << Target{map, quint8(address), 0, 0};
-    });
-    connect(m_scanner.get(), &DeviceScanner::unknownDevice, this, [this](int address) {
-        m_err << '\r' << tr("address %1 answers, but matches no known family").arg(address) << Qt::endl;
-    });
-    connect(m_scanner.get(), &Job::finished, this, [this] {
-        m_err << '\r' << tr("%n device(s) found", nullptr, int(m_targets.size())) << QString(20, QLatin1Char(' '))
-              << Qt::endl;
-        finish(m_targets.isEmpty() ? 1 : 0);
-    });
-    m_scanner->start(from, to);
+        });
+        connect(line.scanner.get(), &Job::finished, this, [this, i] { scanFinished(i); });
+        line.scanner->start(from, to);
+    }
     return std::nullopt;
+}
+
+void LineCommands::showScanProgress()
+{
+    QStringList parts;
+    for (const std::unique_ptr<Line> &line : m_lines) {
+        if (!line->scanDone && !line->progress.isEmpty())
+            parts << (m_lines.size() > 1 ? QStringLiteral("%1 %2").arg(line->name, line->progress) : line->progress);
+    }
+    const QString text = tr("scanning %1").arg(parts.join(QStringLiteral(", ")));
+    m_err << '\r' << text.leftJustified(m_progressWidth) << Qt::flush;
+    m_progressWidth = int(text.size());
+}
+
+void LineCommands::clearScanProgress()
+{
+    m_err << '\r' << QString(m_progressWidth, QLatin1Char(' ')) << '\r';
+    m_progressWidth = 0;
+}
+
+void LineCommands::scanFinished(qsizetype index)
+{
+    Line &line = *m_lines[size_t(index)];
+    line.scanDone = true;
+    clearScanProgress();
+    if (m_lines.size() > 1)
+        m_err << tr("%1: %n device(s) found", nullptr, line.found).arg(line.name) << Qt::endl;
+    if (!std::all_of(m_lines.cbegin(), m_lines.cend(), [](const std::unique_ptr<Line> &l) { return l->scanDone; }))
+        return;
+    // A line without a device is worth a look (a wrong baud rate, a loose wire): a failure.
+    bool empty = false;
+    int found = 0;
+    for (const std::unique_ptr<Line> &l : m_lines) {
+        empty = empty || l->found == 0;
+        found += l->found;
+    }
+    m_err << tr("%n device(s) found", nullptr, found) << Qt::endl;
+    finish(empty || m_failed ? exitcode::Failed : exitcode::Ok);
 }
 
 void LineCommands::printValues(const Target &target, const QStringList &ids)
@@ -336,7 +576,7 @@ void LineCommands::printValues(const Target &target, const QStringList &ids)
         QJsonArray array;
         for (const QString &id : ids) {
             const RegisterEntry *e = target.map->entry(id);
-            const EntryState *s = m_bus.entryState(target.id, id);
+            const EntryState *s = busOf(target).entryState(target.id, id);
             if (isFailure(s))
                 m_failed = true;
             array.append(QJsonObject{{"family", target.map->family},
@@ -353,7 +593,7 @@ void LineCommands::printValues(const Target &target, const QStringList &ids)
     }
     for (const QString &id : ids) {
         const RegisterEntry *e = target.map->entry(id);
-        const EntryState *s = m_bus.entryState(target.id, id);
+        const EntryState *s = busOf(target).entryState(target.id, id);
         QString shown;
         if (isFailure(s)) {
             m_failed = true;
@@ -379,10 +619,13 @@ std::optional<int> LineCommands::read(const QStringList &arguments, bool dump)
     addLineOptions(parser);
     parser.addOption({QStringLiteral("json"),
                       tr("JSON array of {family, address, id, label, register, value, unit, status}.")});
-    parser.addPositionalArgument(QStringLiteral("device"), tr("FAMILY@ADDRESS, e.g. ipc300@1."));
+    parser.addPositionalArgument(QStringLiteral("device"),
+                                 tr("FAMILY@ADDRESS, e.g. ipc300@1; LINE/FAMILY@ADDRESS where there are several lines."));
     if (!dump)
         parser.addPositionalArgument(QStringLiteral("id"), tr("Entry ids."), QStringLiteral("id..."));
     if (const auto stop = parser.parseArguments(arguments, m_out, m_err, dump ? 1 : 2, dump ? 1 : -1))
+        return stop;
+    if (const auto stop = readStation(parser))
         return stop;
     QStringList args = parser.positionalArguments();
     Target target;
@@ -409,11 +652,12 @@ std::optional<int> LineCommands::read(const QStringList &arguments, bool dump)
         }
     }
     m_json = parser.isSet(QStringLiteral("json"));
-    if (const auto stop = openLine(parser))
-        return stop;
     m_targets = {target};
     m_ids = ids;
-    m_identity->pass(claims(), [this, dump] { readOnce(dump); }, [this](int code) { finish(code); },
+    prepareLine(target.line);
+    if (const auto stop = openLines(parser))
+        return stop;
+    identity().pass(claims(), [this, dump] { readOnce(dump); }, [this](int code) { finish(code); },
                      [this] {
                          // Nothing answers: report the entries as unread, read nothing.
                          printValues(m_targets.first(), m_ids);
@@ -426,10 +670,10 @@ std::optional<int> LineCommands::read(const QStringList &arguments, bool dump)
 void LineCommands::readOnce(bool dump)
 {
     Target &target = m_targets.first();
-    m_bus.setPolling(false);
-    target.id = m_bus.addDevice(target.map, target.address);
-    m_bus.setPollEntries(target.id, dump ? QStringList() : m_ids);
-    connect(&m_bus, &Bus::pollCycleFinished, this, [this](DeviceId id, double) {
+    bus().setPolling(false);
+    target.id = bus().addDevice(target.map, target.address);
+    bus().setPollEntries(target.id, dump ? QStringList() : m_ids);
+    connect(&bus(), &Bus::pollCycleFinished, this, [this](DeviceId id, double) {
         if (id != m_targets.first().id)
             return;
         printValues(m_targets.first(), m_ids);
@@ -437,7 +681,7 @@ void LineCommands::readOnce(bool dump)
             m_err << tr("some entries could not be read") << Qt::endl;
         finish(m_failed ? 1 : 0);
     });
-    m_bus.requestCycle(target.id);
+    bus().requestCycle(target.id);
 }
 
 std::optional<int> LineCommands::write(const QStringList &arguments)
@@ -460,19 +704,30 @@ std::optional<int> LineCommands::write(const QStringList &arguments)
                       tr("For a broadcast (FAMILY@0): the addresses to read it back from, e.g. 1,2,5."),
                       tr("addresses")});
     BroadcastGate::addOptions(parser);
-    parser.addPositionalArgument(QStringLiteral("device"), tr("FAMILY@ADDRESS, or FAMILY@0 for a broadcast."));
+    parser.addPositionalArgument(QStringLiteral("device"),
+                                 tr("FAMILY@ADDRESS, or FAMILY@0 for a broadcast; LINE/ before it where there are "
+                                    "several lines."));
     parser.addPositionalArgument(QStringLiteral("assignment"),
                                  tr("ID=VALUE, e.g. input_setpoint=42.5, or ID.BIT=0|1, e.g. "
                                     "binary_signal_write.digital_output=1."),
                                  QStringLiteral("id=value|id.bit=0|1..."));
     if (const auto stop = parser.parseArguments(arguments, m_out, m_err, 2))
         return stop;
+    if (const auto stop = readStation(parser))
+        return stop;
     QStringList args = parser.positionalArguments();
     const QString deviceText = args.takeFirst();
     Target target;
-    const bool broadcast = deviceText.endsWith(QLatin1String("@0"));
+    QString device;
+    QString lineError;
+    target.line = m_station.lineOfDevice(deviceText, &device, &lineError);
+    if (target.line < 0) {
+        m_err << lineError << Qt::endl;
+        return 2;
+    }
+    const bool broadcast = device.endsWith(QLatin1String("@0"));
     if (broadcast) {
-        target.map = m_registry.family(deviceText.chopped(2));
+        target.map = m_registry.family(device.chopped(2));
         if (!target.map) {
             m_err << tr("'%1' is not a device: use FAMILY@ADDRESS").arg(deviceText) << Qt::endl;
             return 2;
@@ -500,22 +755,25 @@ std::optional<int> LineCommands::write(const QStringList &arguments)
         return 2;
     }
     m_assignments = *assignments;
+    m_targets = {target};
+    Line &line = prepareLine(target.line);
     if (broadcast) {
+        m_broadcast = std::make_unique<BroadcastGate>(*line.bus, m_registry, m_err);
         if (const auto stop = m_broadcast->configure(parser, target.map, verifyAddresses))
             return stop;
     }
-    if (const QString note = readOnlyNote(parser); !note.isEmpty())
+    if (const QString note = readOnlyNote(parser, target); !note.isEmpty())
         m_err << note << Qt::endl;
-    if (const auto stop = openLine(parser))
+    if (const auto stop = openLines(parser))
         return stop;
-    m_identity->recordSkipsIn(m_audit);
+    identity().recordSkipsIn(m_audit);
     if (broadcast)
         m_broadcast->pass(
-                *m_identity, m_audit,
+                identity(), m_audit,
                 [this, target](const QList<quint8> &readBack) { startWrites(target, true, readBack); },
                 [this](int code) { finish(code); });
     else
-        m_identity->pass({{target.address, target.map}}, [this, target] { startWrites(target, false, {}); },
+        identity().pass({{target.address, target.map}}, [this, target] { startWrites(target, false, {}); },
                          [this](int code) { finish(code); });
     return std::nullopt;
 }
@@ -523,17 +781,17 @@ std::optional<int> LineCommands::write(const QStringList &arguments)
 void LineCommands::startWrites(Target target, bool broadcast, const QList<quint8> &verifyAddresses)
 {
     m_writesAsked = int(m_assignments.size());
-    m_bus.setPolling(false);
+    bus().setPolling(false);
     if (broadcast) {
         // The bus reads a broadcast back from every device of the family it knows.
         for (quint8 address : std::as_const(verifyAddresses))
-            m_bus.addDevice(target.map, address);
+            bus().addDevice(target.map, address);
         target.address = 0;
     } else {
-        target.id = m_bus.addDevice(target.map, target.address);
+        target.id = bus().addDevice(target.map, target.address);
     }
     m_targets = {target};
-    connect(&m_bus, &Bus::writeFinished, this, [this](int ticket, const WriteOutcome &outcome) {
+    connect(&bus(), &Bus::writeFinished, this, [this](int ticket, const WriteOutcome &outcome) {
         if (ticket != m_writeTicket)
             return;
         reportWrite(m_assignments.takeFirst().entryId, outcome);
@@ -549,10 +807,10 @@ void LineCommands::startWrites(Target target, bool broadcast, const QList<quint8
         writeNext();
         return;
     }
-    m_bus.setPollEntries(target.id, readable);
-    connect(&m_bus, &Bus::pollCycleFinished, this, [this](DeviceId, double) { writeNext(); },
+    bus().setPollEntries(target.id, readable);
+    connect(&bus(), &Bus::pollCycleFinished, this, [this](DeviceId, double) { writeNext(); },
             Qt::SingleShotConnection);
-    m_bus.requestCycle(target.id);
+    bus().requestCycle(target.id);
 }
 
 void LineCommands::reportWrite(const QString &id, const WriteOutcome &outcome)
@@ -565,7 +823,7 @@ void LineCommands::reportWrite(const QString &id, const WriteOutcome &outcome)
     else if (outcome.result == WriteOutcome::Result::Unverified)
         stream << tr("unverified: ");
     stream << outcome.message;
-    const EntryState *old = m_targets.first().address ? m_bus.entryState(m_targets.first().id, id) : nullptr;
+    const EntryState *old = m_targets.first().address ? bus().entryState(m_targets.first().id, id) : nullptr;
     if (outcome.succeeded() && old && old->hasValue())
         stream << ' ' << tr("(was %1)").arg(old->value.display);
     stream << Qt::endl;
@@ -587,25 +845,30 @@ void LineCommands::writeNext()
     const Target &target = m_targets.first();
     const WriteAssignment &next = m_assignments.first();
     if (next.isBitChange())
-        m_writeTicket = m_bus.writeBits(target.id, next.entryId, next.bits);
+        m_writeTicket = bus().writeBits(target.id, next.entryId, next.bits);
     else
-        m_writeTicket = target.address == 0 ? m_bus.writeBroadcast(target.map->family, next.entryId, next.value)
-                                            : m_bus.write(target.id, next.entryId, next.value);
+        m_writeTicket = target.address == 0 ? bus().writeBroadcast(target.map->family, next.entryId, next.value)
+                                            : bus().write(target.id, next.entryId, next.value);
 }
 
-QString LineCommands::readOnlyNote(const CommandParser &parser) const
+QString LineCommands::readOnlyNote(const CommandParser &parser, const Target &target) const
 {
     if (SystemSettings::readOnly())
         return tr("read-only mode is set by the system configuration (%1): nothing is written to the devices")
                 .arg(SystemSettings::fileName());
     if (parser.isSet(QStringLiteral("read-only")))
         return tr("read-only mode (--read-only): nothing is written to the devices");
+    if (m_station.lines.at(target.line).settings.readOnly)
+        return tr("the line %1 is read-only (station file): nothing is written to the devices")
+                .arg(m_station.lines.at(target.line).name);
     return {};
 }
 
 std::optional<int> LineCommands::monitor(const QStringList &arguments)
 {
-    CommandParser parser(QStringLiteral("monitor"), tr("Polls devices continuously and prints every poll cycle."));
+    CommandParser parser(QStringLiteral("monitor"),
+                         tr("Polls devices continuously and prints every poll cycle; devices of several lines are "
+                            "polled at once, each line on its own."));
     addLineOptions(parser);
     parser.addOption({QStringLiteral("interval"), tr("Poll interval per device in ms (default 0: as fast as the line allows)."),
                       tr("ms"), QStringLiteral("0")});
@@ -615,8 +878,11 @@ std::optional<int> LineCommands::monitor(const QStringList &arguments)
                       tr("ids")});
     parser.addOption({QStringLiteral("jsonl"), tr("One JSON object per completed poll cycle of a device.")});
     parser.addOption({QStringLiteral("csv"), tr("CSV rows: time,device,id,value,unit,status.")});
-    parser.addPositionalArgument(QStringLiteral("device"), tr("FAMILY@ADDRESS."), QStringLiteral("device..."));
-    if (const auto stop = parser.parseArguments(arguments, m_out, m_err, 1))
+    parser.addPositionalArgument(QStringLiteral("device"),
+                                 tr("FAMILY@ADDRESS; LINE/FAMILY@ADDRESS where there are several lines (default with "
+                                    "--station: every device of the station file)."),
+                                 QStringLiteral("device..."));
+    if (const auto stop = parser.parseArguments(arguments, m_out, m_err, 0))
         return stop;
     m_json = parser.isSet(QStringLiteral("jsonl"));
     m_csv = parser.isSet(QStringLiteral("csv"));
@@ -635,8 +901,19 @@ std::optional<int> LineCommands::monitor(const QStringList &arguments)
         m_err << tr("--cycles must be a number >= 0") << Qt::endl;
         return 2;
     }
+    if (const auto stop = readStation(parser))
+        return stop;
+    QStringList devices = parser.positionalArguments();
+    if (devices.isEmpty()) {
+        for (const StationDevice &d : m_station.devices())
+            devices << StationConfig::qualifiedName(m_station.lines.at(d.line).name, d.device);
+    }
+    if (devices.isEmpty()) {
+        m_err << tr("jumoctl monitor: name at least one device (or give a station file that lists them)") << Qt::endl;
+        return 2;
+    }
     const QStringList ids = parser.value(QStringLiteral("ids")).split(QLatin1Char(','), Qt::SkipEmptyParts);
-    for (const QString &text : parser.positionalArguments()) {
+    for (const QString &text : std::as_const(devices)) {
         Target target;
         if (!parseDevice(text, target))
             return 2;
@@ -648,75 +925,126 @@ std::optional<int> LineCommands::monitor(const QStringList &arguments)
             }
         }
         m_targets << target;
+        prepareLine(target.line);
     }
-    if (const auto stop = openLine(parser))
+    m_monitorIds = ids;
+    if (const auto stop = openLines(parser))
         return stop;
-    m_identity->pass(claims(), [this, ids, interval] { startMonitor(ids, interval); }, [this](int code) { finish(code); });
+    passIdentities([this, interval] { startMonitor(m_monitorIds, interval); });
     return std::nullopt;
+}
+
+void LineCommands::passIdentities(const std::function<void()> &next)
+{
+    // Every line checks its own devices, all at once; the command goes on when all passed.
+    auto waiting = std::make_shared<int>(0);
+    QHash<qsizetype, QList<IdentityCheck::Claim>> claimsByLine;
+    for (const Target &t : std::as_const(m_targets))
+        claimsByLine[t.line] << IdentityCheck::Claim{t.address, t.map};
+    *waiting = int(claimsByLine.size());
+    for (auto it = claimsByLine.cbegin(); it != claimsByLine.cend(); ++it) {
+        m_lines.at(size_t(it.key()))
+                ->identity->pass(
+                        it.value(),
+                        [this, waiting, next] {
+                            if (--*waiting == 0 && !m_finished)
+                                next();
+                        },
+                        [this](int code) { finish(code); });
+    }
+}
+
+QStringList LineCommands::monitorEntries(const Target &target) const
+{
+    if (!m_monitorIds.isEmpty())
+        return m_monitorIds;
+    QStringList entryIds;
+    for (const RegisterEntry &e : target.map->entries()) {
+        if (e.isReadable() && e.alias.isEmpty())
+            entryIds << e.id;
+    }
+    return entryIds;
 }
 
 void LineCommands::startMonitor(const QStringList &ids, int interval)
 {
+    m_monitoring = true;
     if (m_csv)
         m_out << "time,device,id,value,unit,status" << Qt::endl;
     for (Target &target : m_targets) {
-        target.id = m_bus.addDevice(target.map, target.address);
-        m_bus.setPollEntries(target.id, ids);
-        m_bus.setPollInterval(target.id, interval);
+        Bus &bus = busOf(target);
+        target.id = bus.addDevice(target.map, target.address);
+        bus.setPollEntries(target.id, ids);
+        bus.setPollInterval(target.id, interval);
     }
-    connect(&m_bus, &Bus::pollCycleFinished, this, [this, ids](DeviceId id, double cycleMs) {
-        auto target = std::find_if(m_targets.begin(), m_targets.end(), [id](const Target &t) { return t.id == id; });
-        if (target == m_targets.end())
-            return;
-        QStringList entryIds = ids;
-        if (entryIds.isEmpty()) {
-            for (const RegisterEntry &e : target->map->entries()) {
-                if (e.isReadable() && e.alias.isEmpty())
-                    entryIds << e.id;
+    for (size_t i = 0; i < m_lines.size(); ++i) {
+        if (!m_lines[i])
+            continue;
+        connect(m_lines[i]->bus.get(), &Bus::pollCycleFinished, this, [this](DeviceId id, double cycleMs) {
+            auto target = std::find_if(m_targets.begin(), m_targets.end(), [id](const Target &t) { return t.id == id; });
+            if (target == m_targets.end())
+                return;
+            printRecord(*target, monitorEntries(*target), cycleMs);
+            // Polling on into output that goes nowhere would only hide the failure.
+            const auto *output = qobject_cast<const QFileDevice *>(m_out.device());
+            if (m_out.status() == QTextStream::WriteFailed || (output && output->error() != QFileDevice::NoError)) {
+                finish(exitcode::Failed);
+                return;
             }
+            ++target->cycles;
+            checkMonitorDone();
+        });
+    }
+}
+
+void LineCommands::printRecord(const Target &target, const QStringList &entryIds, std::optional<double> cycleMs)
+{
+    Bus &bus = busOf(target);
+    const QString time = QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs);
+    const QString device = targetName(target);
+    if (m_json) {
+        QJsonObject values;
+        QJsonObject status;
+        for (const QString &e : entryIds) {
+            const EntryState *s = bus.entryState(target.id, e);
+            values.insert(e, s ? jsonValue(*s) : QJsonValue());
+            status.insert(e, s ? s->statusName() : QStringLiteral("timeout"));
+            m_failed |= isFailure(s);
         }
-        const QString time = QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs);
-        const QString device = deviceName(*target->map, target->address);
-        if (m_json) {
-            QJsonObject values;
-            QJsonObject status;
-            for (const QString &e : std::as_const(entryIds)) {
-                const EntryState *s = m_bus.entryState(id, e);
-                values.insert(e, s ? jsonValue(*s) : QJsonValue());
-                status.insert(e, s ? s->statusName() : QStringLiteral("timeout"));
-                m_failed |= isFailure(s);
-            }
-            m_out << QJsonDocument(QJsonObject{{"time", time}, {"device", device}, {"cycle_ms", cycleMs},
-                                               {"values", values}, {"status", status}})
-                             .toJson(QJsonDocument::Compact)
-                  << Qt::endl;
-        } else {
-            for (const QString &e : std::as_const(entryIds)) {
-                const EntryState *s = m_bus.entryState(id, e);
-                const RegisterEntry *entry = target->map->entry(e);
-                const QString value = csvField(s && s->isCurrent() && s->value.isOk() ? s->value.display : QString());
-                m_out << time << ',' << device << ',' << e << ',' << value << ',' << entry->unit << ','
-                      << (s ? s->statusName() : QStringLiteral("timeout")) << '\n';
-                m_failed |= isFailure(s);
-            }
-            m_out.flush();
-        }
-        // Polling on into output that goes nowhere would only hide the failure.
-        const auto *output = qobject_cast<const QFileDevice *>(m_out.device());
-        if (m_out.status() == QTextStream::WriteFailed || (output && output->error() != QFileDevice::NoError)) {
-            finish(exitcode::Failed);
-            return;
-        }
-        ++target->cycles;
-        if (m_cyclesWanted > 0
-            && std::all_of(m_targets.cbegin(), m_targets.cend(), [this](const Target &t) { return t.cycles >= m_cyclesWanted; }))
-            finish(m_failed ? 1 : 0);
-    });
+        m_out << QJsonDocument(QJsonObject{{"time", time},
+                                           {"line", m_station.lines.at(target.line).name},
+                                           {"device", device},
+                                           {"condition", conditionName(bus.condition(target.id).state)},
+                                           {"cycle_ms", cycleMs ? QJsonValue(*cycleMs) : QJsonValue()},
+                                           {"values", values},
+                                           {"status", status}})
+                         .toJson(QJsonDocument::Compact)
+              << Qt::endl;
+        return;
+    }
+    for (const QString &e : entryIds) {
+        const EntryState *s = bus.entryState(target.id, e);
+        const RegisterEntry *entry = target.map->entry(e);
+        const QString value = csvField(s && s->isCurrent() && s->value.isOk() ? s->value.display : QString());
+        m_out << time << ',' << device << ',' << e << ',' << value << ',' << entry->unit << ','
+              << (s ? s->statusName() : QStringLiteral("timeout")) << '\n';
+        m_failed |= isFailure(s);
+    }
+    m_out.flush();
+}
+
+void LineCommands::checkMonitorDone()
+{
+    // A device whose line is lost holds nobody up: its records said so.
+    if (m_cyclesWanted > 0 && std::all_of(m_targets.cbegin(), m_targets.cend(), [this](const Target &t) {
+            return t.cycles >= m_cyclesWanted || lineOf(t).lost;
+        }))
+        finish(m_failed ? 1 : 0);
 }
 
 void LineCommands::readParameters(const std::function<void(const ParameterSet &, const QStringList &)> &done)
 {
-    m_identity->pass(claims(), [this, done] { readParametersNow(done); }, [this](int code) { finish(code); });
+    identity().pass(claims(), [this, done] { readParametersNow(done); }, [this](int code) { finish(code); });
 }
 
 void LineCommands::readParametersNow(const std::function<void(const ParameterSet &, const QStringList &)> &done)
@@ -726,15 +1054,15 @@ void LineCommands::readParametersNow(const std::function<void(const ParameterSet
     if (target.map->entry(QStringLiteral("software_version")))
         ids << QStringLiteral("software_version");
     ids.removeDuplicates();
-    m_bus.setPolling(false);
-    target.id = m_bus.addDevice(target.map, target.address);
-    m_bus.setPollEntries(target.id, ids);
-    auto *transfer = new ParameterTransfer(&m_bus, target.id, this);
+    bus().setPolling(false);
+    target.id = bus().addDevice(target.map, target.address);
+    bus().setPollEntries(target.id, ids);
+    auto *transfer = new ParameterTransfer(&bus(), target.id, this);
     connect(transfer, &ParameterTransfer::readFinished, this,
             [this, done](const ParameterSet &set, const QStringList &failed) {
                 QStringList reasons;
                 for (const QString &id : failed) {
-                    const EntryState *s = m_bus.entryState(m_targets.first().id, id);
+                    const EntryState *s = bus().entryState(m_targets.first().id, id);
                     reasons << QStringLiteral("%1 (%2)").arg(id, s ? s->statusName() : QStringLiteral("timeout"));
                 }
                 done(set, reasons);
@@ -770,9 +1098,12 @@ std::optional<int> LineCommands::parameters(const QString &command, const QStrin
     addLineOptions(parser);
     if (restore)
         parser.addOption({QStringLiteral("yes"), tr("Write without asking.")});
-    parser.addPositionalArgument(QStringLiteral("device"), command == QLatin1String("diff")
-                                                                   ? tr("FAMILY@ADDRESS, or a first parameter file.")
-                                                                   : tr("FAMILY@ADDRESS, e.g. ipc300@1."));
+    parser.addPositionalArgument(QStringLiteral("device"),
+                                 command == QLatin1String("diff")
+                                         ? tr("FAMILY@ADDRESS (LINE/FAMILY@ADDRESS where there are several lines), "
+                                              "or a first parameter file.")
+                                         : tr("FAMILY@ADDRESS, e.g. ipc300@1; LINE/FAMILY@ADDRESS where there are "
+                                              "several lines."));
     parser.addPositionalArgument(QStringLiteral("file"), tr("Parameter file (JSON)."));
     if (const auto stop = parser.parseArguments(arguments, m_out, m_err, 2, 2))
         return stop;
@@ -815,6 +1146,8 @@ std::optional<int> LineCommands::parameters(const QString &command, const QStrin
         return d.isEmpty() ? 0 : 1;
     }
 
+    if (const auto stop = readStation(parser))
+        return stop;
     Target target;
     if (!parseDevice(first, target))
         return 2;
@@ -828,15 +1161,16 @@ std::optional<int> LineCommands::parameters(const QString &command, const QStrin
             return 1;
         }
     }
-    if (const QString note = restore ? readOnlyNote(parser) : QString(); !note.isEmpty()) {
+    if (const QString note = restore ? readOnlyNote(parser, target) : QString(); !note.isEmpty()) {
         m_err << note << Qt::endl << tr("read-only mode: nothing would be restored") << Qt::endl;
         return 1;
     }
-    if (const auto stop = openLine(parser))
-        return stop;
     m_targets = {target};
+    prepareLine(target.line);
+    if (const auto stop = openLines(parser))
+        return stop;
     if (restore)
-        m_identity->recordSkipsIn(m_audit);
+        identity().recordSkipsIn(m_audit);
     const bool yes = restore && parser.isSet(QStringLiteral("yes"));
     readParameters([this, backup, restore, path, file, yes, first](const ParameterSet &device, const QStringList &failed) {
         if (!failed.isEmpty()) {
@@ -904,7 +1238,7 @@ void LineCommands::startRestore(const QList<ParameterDifference> &differences)
     for (const ParameterDifference &d : differences)
         m_pendingWrites << qMakePair(d.id, d.newValue);
     m_writesAsked = int(m_pendingWrites.size());
-    connect(&m_bus, &Bus::writeFinished, this, [this](int ticket, const WriteOutcome &outcome) {
+    connect(&bus(), &Bus::writeFinished, this, [this](int ticket, const WriteOutcome &outcome) {
         if (ticket != m_writeTicket)
             return;
         m_writeTicket = -1;
@@ -931,39 +1265,43 @@ std::optional<int> LineCommands::report(const QStringList &arguments)
     parser.addOption({QStringLiteral("cabinet"), tr("Cabinet or panel the device is in."), tr("text")});
     parser.addOption({QStringLiteral("tag"), tr("The device's tag in the plant, e.g. TIC-101."), tr("text")});
     parser.addOption({QStringLiteral("engineer"), tr("Name of the commissioning engineer."), tr("name")});
-    parser.addPositionalArgument(QStringLiteral("device"), tr("FAMILY@ADDRESS, e.g. ipc300@1."));
+    parser.addPositionalArgument(QStringLiteral("device"),
+                                 tr("FAMILY@ADDRESS, e.g. ipc300@1; LINE/FAMILY@ADDRESS where there are several lines."));
     parser.addPositionalArgument(QStringLiteral("file"), tr("Report file (.pdf or .html)."));
     if (const auto stop = parser.parseArguments(arguments, m_out, m_err, 2, 2))
+        return stop;
+    if (const auto stop = readStation(parser))
         return stop;
     Target target;
     if (!parseDevice(parser.positionalArguments().at(0), target))
         return 2;
-    if (const auto stop = openLine(parser))
+    m_targets = {target};
+    prepareLine(target.line);
+    if (const auto stop = openLines(parser))
         return stop;
     const QString path = parser.positionalArguments().at(1);
     const ReportTitle title{parser.value(QStringLiteral("site")), parser.value(QStringLiteral("cabinet")),
                             parser.value(QStringLiteral("tag")), parser.value(QStringLiteral("engineer"))};
-    m_targets = {target};
-    m_identity->pass(claims(), [this, path, title] { startReport(path, title); }, [this](int code) { finish(code); });
+    identity().pass(claims(), [this, path, title] { startReport(path, title); }, [this](int code) { finish(code); });
     return std::nullopt;
 }
 
 void LineCommands::startReport(const QString &path, const ReportTitle &title)
 {
     Target &target = m_targets.first();
-    m_bus.setPolling(false);
-    target.id = m_bus.addDevice(target.map, target.address);
-    connect(&m_bus, &Bus::pollCycleFinished, this, [this, path, title](DeviceId id, double) {
+    bus().setPolling(false);
+    target.id = bus().addDevice(target.map, target.address);
+    connect(&bus(), &Bus::pollCycleFinished, this, [this, path, title](DeviceId id, double) {
         const Target &t = m_targets.first();
         if (id != t.id)
             return;
-        const DeviceStatistics *stats = m_bus.statistics(id);
+        const DeviceStatistics *stats = bus().statistics(id);
         if (stats->responses == 0) {
             m_err << tr("%1 did not answer: no report written").arg(deviceName(*t.map, t.address)) << Qt::endl;
             finish(1);
             return;
         }
-        CommissioningReport report(*t.map, t.address, [this, id](const QString &entry) { return m_bus.entryState(id, entry); });
+        CommissioningReport report(*t.map, t.address, [this, id](const QString &entry) { return bus().entryState(id, entry); });
         // The command line has no session: its writes of today stand in for one.
         // Read back from the newest to the first record before today, so that a large
         // log costs no more than its recent part.
@@ -985,7 +1323,7 @@ void LineCommands::startReport(const QString &path, const ReportTitle &title)
         }
         report.setWrites(writes, since);
         report.setTitle(title);
-        report.setLine(m_bus.settings());
+        report.setLine(bus().settings());
         report.setSoftware(QStringLiteral("jumoctl %1").arg(QStringLiteral(JUMO_VERSION)));
         QString error;
         const ReportWriter::Pages pages{tr("Commissioning report of %1").arg(device), report.pageHeader(), report.pageFooter()};
@@ -997,7 +1335,7 @@ void LineCommands::startReport(const QString &path, const ReportTitle &title)
         m_out << tr("report of %1 written to %2").arg(device, path) << Qt::endl;
         finish(0);
     });
-    m_bus.requestCycle(target.id);
+    bus().requestCycle(target.id);
 }
 
 QList<IdentityCheck::Claim> LineCommands::claims() const
@@ -1017,7 +1355,7 @@ void LineCommands::restoreNext()
         finish(m_failed ? 1 : 0);
         return;
     }
-    m_writeTicket = m_bus.write(m_targets.first().id, m_pendingWrites.first().first, m_pendingWrites.first().second);
+    m_writeTicket = bus().write(m_targets.first().id, m_pendingWrites.first().first, m_pendingWrites.first().second);
 }
 
 } // namespace jumo

@@ -1,9 +1,13 @@
-// The jumoctl commands that talk to devices on a serial line: scan, read, write, dump
-// and monitor. Each runs on the event loop and emits finished() with its exit code.
+// The jumoctl commands that talk to devices on lines: scan, read, write, dump, monitor,
+// backup, diff, restore and report. The lines come from --port, --line (repeatable) or
+// a station file; a command of one device opens only that device's line, monitor and
+// scan work on several lines at once, each its own Bus. Each command runs on the event
+// loop and emits finished() with its exit code.
 #pragma once
 
 #include "bus/bus.h"
 #include "bus/identitycheck.h"
+#include "bus/stationconfig.h"
 #include "commissioning/commissioningreport.h"
 #include "commissioning/parameterset.h"
 #include "writeassignment.h"
@@ -50,13 +54,50 @@ private:
         quint8 address = 0;
         DeviceId id = 0;
         int cycles = 0;
+        qsizetype line = 0;   // index into m_station.lines
+    };
+
+    // One line of the command at work. Declared after the bus, the gate and the scanner
+    // that use it are destroyed first.
+    struct Line
+    {
+        QString name;
+        std::unique_ptr<Bus> bus;
+        std::unique_ptr<IdentityGate> identity;
+        std::unique_ptr<DeviceScanner> scanner;
+        int found = 0;            // scan
+        QString progress;         // scan: "address 5 (5 of 247)"
+        bool scanDone = false;
+        bool lost = false;        // the line is lost now (it may come back)
     };
 
     void addLineOptions(CommandParser &parser, bool namesDevices = true);
-    std::optional<int> openLine(CommandParser &parser);
-    // FAMILY@ADDRESS as a whole; anything else (a file name with an '@') is not a device.
+    // The lines given by --port, --line or --station, into m_station; an exit code when
+    // they are missing, conflict or are bad.
+    std::optional<int> readStation(const CommandParser &parser);
+    std::optional<BusSettings> lineDefaults(const CommandParser &parser);
+    // The line of that index, created (not opened) on first use.
+    Line &prepareLine(qsizetype index);
+    // Opens every prepared line; an exit code when one cannot be opened.
+    std::optional<int> openLines(CommandParser &parser);
+    Line &lineOf(const Target &target) { return *m_lines.at(size_t(target.line)); }
+    Bus &busOf(const Target &target) { return *lineOf(target).bus; }
+    // The line of a command of one device.
+    Bus &bus() { return busOf(m_targets.first()); }
+    IdentityGate &identity() { return *lineOf(m_targets.first()).identity; }
+    // A line went away: monitor and scan go on with the others; other commands end.
+    void lineLost(qsizetype index, const QString &message);
+    QString lineMessage(qsizetype index, const QString &message) const;
+    // FAMILY@ADDRESS as a whole, LINE/ before it allowed; anything else (a file name with
+    // an '@') is not a device.
     static bool isDeviceName(const QString &text);
+    // LINE/FAMILY@ADDRESS, or FAMILY@ADDRESS on a station of one line; needs m_station.
     bool parseDevice(const QString &text, Target &target);
+    // As the command line names it: "LINE/FAMILY@ADDRESS" when there are several lines.
+    QString targetName(const Target &target) const;
+    void scanFinished(qsizetype index);
+    void showScanProgress();
+    void clearScanProgress();
     std::optional<int> scan(const QStringList &arguments);
     std::optional<int> read(const QStringList &arguments, bool dump);
     void readOnce(bool dump);
@@ -64,6 +105,12 @@ private:
     void startWrites(Target target, bool broadcast, const QList<quint8> &verifyAddresses);
     std::optional<int> monitor(const QStringList &arguments);
     void startMonitor(const QStringList &ids, int interval);
+    // One monitor record; without a cycle time when the line is lost.
+    void printRecord(const Target &target, const QStringList &entryIds, std::optional<double> cycleMs);
+    QStringList monitorEntries(const Target &target) const;
+    void checkMonitorDone();
+    // Runs the identity check of every line with targets, then next().
+    void passIdentities(const std::function<void()> &next);
     std::optional<int> report(const QStringList &arguments);
     void startReport(const QString &path, const ReportTitle &title);
     // The targets as claims for the identity check.
@@ -78,19 +125,21 @@ private:
     void printValues(const Target &target, const QStringList &ids);
     void writeNext();
     void reportWrite(const QString &id, const WriteOutcome &outcome);
-    // Why nothing will be written (the system configuration or --read-only), or empty.
-    QString readOnlyNote(const CommandParser &parser) const;
+    // Why nothing will be written on the target's line (the system configuration,
+    // --read-only or the station file), or empty.
+    QString readOnlyNote(const CommandParser &parser, const Target &target) const;
     void finish(int code);
     QString progressSummary() const;
 
     const FamilyRegistry &m_registry;
     QTextStream &m_out;
     QTextStream &m_err;
-    Bus m_bus;
-    std::unique_ptr<DeviceScanner> m_scanner;
+    StationConfig m_station;
+    bool m_stationRead = false;
+    std::vector<std::unique_ptr<Line>> m_lines;   // by index of m_station.lines; null: not used
     EventLog *m_audit = nullptr;
-    IdentityGate *m_identity = nullptr;
-    BroadcastGate *m_broadcast = nullptr;
+    std::unique_ptr<BroadcastGate> m_broadcast;   // declared after the lines: it goes before the bus it uses
+    QStringList m_monitorIds;
     QList<Target> m_targets;
     QStringList m_ids;
     QList<QPair<QString, QString>> m_pendingWrites;
@@ -102,6 +151,8 @@ private:
     bool m_uncertain = false;   // a write ended unknown or unverified
     bool m_json = false;
     bool m_csv = false;
+    bool m_monitoring = false;
+    int m_progressWidth = 0;   // of the scan's progress line on stderr
     int m_cyclesWanted = 0;
     bool m_finished = false;
     bool m_auditFailed = false;

@@ -175,7 +175,10 @@ void tst_JumoctlLine::monitorJsonl()
     QVERIFY2(lines.size() >= 4, qPrintable(ok.out));
     for (const QString &line : lines) {
         const QJsonObject o = QJsonDocument::fromJson(line.toUtf8()).object();
-        QCOMPARE(QStringList(o.keys()), QStringList({"cycle_ms", "device", "status", "time", "values"}));
+        QCOMPARE(QStringList(o.keys()),
+                 QStringList({"condition", "cycle_ms", "device", "line", "status", "time", "values"}));
+        QCOMPARE(o["line"].toString(), QString("line1"));
+        QCOMPARE(o["condition"].toString(), QString("online"));
         QVERIFY(o["device"].toString() == "quantrol@3" || o["device"].toString() == "dtron300@4");
         QCOMPARE(o["status"].toObject()["controller_status"].toString(), QString("ok"));
         QVERIFY(o["values"].toObject()["controller_status"].isDouble());
