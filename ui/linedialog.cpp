@@ -1,6 +1,7 @@
 #include "linedialog.h"
 
 #include "bus/serialportlist.h"
+#include "bus/stationconfig.h"
 #include "theme.h"
 
 #include <QComboBox>
@@ -8,7 +9,6 @@
 #include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
-#include <QRegularExpression>
 
 namespace jumo {
 
@@ -75,10 +75,9 @@ BusSettings LineDialog::settings() const
 
 QString LineDialog::nameProblem(const QString &name, const QStringList &takenNames)
 {
-    static const QRegularExpression allowed(QStringLiteral("^[A-Za-z0-9_.-]{1,32}$"));
     if (name.isEmpty())
         return tr("A line needs a name.");
-    if (!allowed.match(name).hasMatch())
+    if (!StationConfig::isLineName(name))
         return tr("A line's name has 1 to 32 letters (A-Z, a-z), digits, '_', '.' or '-'.");
     if (takenNames.contains(name))
         return tr("There is a line named %1 already.").arg(name);

@@ -158,6 +158,7 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
                                     m_navigation->fontMetrics().horizontalAdvance(QStringLiteral("dTRON 300 @ 247")) + 16 + 12})
             + 2 * m_navigation->frameWidth() + 8;
     side->setMinimumWidth(std::max(listWidth, sideButtons->minimumSize().width()));
+    m_listMinimumWidth = side->minimumWidth();
     split->setSizes({side->minimumWidth(), 1280 - side->minimumWidth()});
     setCentralWidget(split);
 
@@ -207,10 +208,19 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
     buildMenus();
     m_navigation->setCurrentRow(overviewRow);
     resize(1280, 800);
-    if (options.demo)
+    if (options.demo) {
         startDemo();
-    else
+    } else if (!options.lines.isEmpty()) {
+        restoreGeometry(settings().value(QStringLiteral("window/geometry")).toByteArray());
+        for (const LineConfig &config : options.lines) {
+            if (StationLine *line = addLine(config.name, config.settings)) {
+                for (const DeviceSpec &device : config.devices)
+                    addDevice(line, m_registry.family(device.family), device.address);
+            }
+        }
+    } else {
         restoreSettings();
+    }
     // A window has a line to connect at least: the first one, named as such.
     if (m_lines.isEmpty())
         addLine(QStringLiteral("line1"), BusSettings{});
@@ -251,7 +261,7 @@ void MainWindow::buildMenus()
     m_disconnectAction = line->addAction(tr("&Disconnect"), QKeySequence(Qt::SHIFT | Qt::Key_F5), this,
                                          &MainWindow::disconnectLine);
     m_disconnectAction->setEnabled(false);
-    line->addAction(tr("Connect &all lines"), this, &MainWindow::connectAllLines)
+    line->addAction(tr("Connect &all lines"), this, &MainWindow::connectAllInteractively)
             ->setObjectName(QStringLiteral("connectAllLines"));
     line->addAction(tr("Disc&onnect all lines"), this, &MainWindow::disconnectAllLines)
             ->setObjectName(QStringLiteral("disconnectAllLines"));
@@ -685,7 +695,7 @@ void MainWindow::disconnectLine()
         m_currentLine->close();
 }
 
-void MainWindow::connectAllLines()
+QStringList MainWindow::connectAllLines()
 {
     QStringList failed;
     for (StationLine *line : std::as_const(m_lines)) {
@@ -693,6 +703,12 @@ void MainWindow::connectAllLines()
             failed << QStringLiteral("%1: %2").arg(line->name(),
                                                    line->lastError().isEmpty() ? tr("no address") : line->lastError());
     }
+    return failed;
+}
+
+void MainWindow::connectAllInteractively()
+{
+    const QStringList failed = connectAllLines();
     if (!failed.isEmpty())
         QMessageBox::warning(this, tr("Connect"), tr("Not connected:\n%1").arg(failed.join(QLatin1Char('\n'))));
 }
@@ -791,6 +807,25 @@ void MainWindow::rebuildNavigation()
         groups << g;
     }
     m_navigation->setGroups(groups, m_lines.size() > 1);
+    // A line's row says its name and state ("cabinet-a (connected)"): the list is as wide
+    // as the widest, within reason; longer ones end in "..." with the whole in the tooltip.
+    int width = m_listMinimumWidth;
+    if (m_lines.size() > 1) {
+        QFont bold = m_navigation->font();
+        bold.setBold(true);
+        const QFontMetrics metrics(bold);
+        for (int row = m_navigation->pageCount(); row < m_navigation->count(); ++row) {
+            if (m_navigation->isLineRow(row))
+                width = std::max(width, metrics.horizontalAdvance(m_navigation->item(row)->text() + QStringLiteral("dis")) + 16 + 12
+                                                + 2 * m_navigation->frameWidth() + 8);
+        }
+        width = std::min(width, m_listMinimumWidth * 3 / 2);
+    }
+    if (QWidget *side = m_navigation->parentWidget(); side && side->minimumWidth() != width) {
+        side->setMinimumWidth(width);
+        if (auto *split = findChild<QSplitter *>(QStringLiteral("mainSplitter")); split && split->sizes().value(0) < width)
+            split->setSizes({width, split->width() - width});
+    }
     for (const DeviceEntry &d : std::as_const(m_devices))
         updateNavigationItem(d.id);
 }
@@ -870,6 +905,9 @@ void MainWindow::updateStatus()
         m_lineStatus->setFullText(line->state() == LineState::Connected
                                           ? tr("Line: %1").arg(line->settings().portName)
                                           : m_connectionBar->findChild<QLabel *>(QStringLiteral("lineState"))->text());
+    // The status bar's layout gave the label no room for a text that came after it was
+    // laid out (the line's state was never seen): room for the text, up to a third.
+    m_lineStatus->setMinimumWidth(std::min(m_lineStatus->sizeHint().width() + 8, std::max(120, width() / 3)));
     m_loadStatus->setText(tr("%1 requests/s").arg(perSecond));
     // Repeated errors are throttled: the newest one, at most once every 5 s.
     const qint64 now = m_lines.isEmpty() ? 0 : m_lines.first()->bus()->clockMs();
@@ -1226,6 +1264,9 @@ void MainWindow::saveSettings()
     QSettings &s = settings();
     s.setValue(QStringLiteral("window/geometry"), saveGeometry());
     s.setValue(QStringLiteral("window/state"), saveState());
+    // Lines from the command line are for this run: the kept ones stay as they were.
+    if (!m_options.lines.isEmpty())
+        return;
     takeSettingsFromBar();
     QList<StationSettings::Line> lines;
     for (const StationLine *line : std::as_const(m_lines)) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "bus/bus.h"
+#include "bus/stationconfig.h"
 #include "commissioning/commissioningreport.h"
 
 #include <QDateTime>
@@ -54,6 +55,9 @@ public:
         QString settingsFile;   // empty: the user's settings
         QString logFolder;      // empty: EventLog::defaultFolder()
         QString theme;          // a Theme name for this run; empty: the one last chosen in the View menu
+        // Lines given on the command line (--line, --station): used instead of the kept
+        // ones, and not kept.
+        QList<LineConfig> lines;
     };
 
     MainWindow(const FamilyRegistry &registry, const Options &options, QWidget *parent = nullptr);
@@ -85,7 +89,8 @@ public:
     QString linesSummary() const;
     // Opens a line with its own settings; false with the reason in its lastError().
     bool connectLine(StationLine *line);
-    void connectAllLines();
+    // Connects every disconnected line; the lines that could not be, with the reason.
+    QStringList connectAllLines();
     void disconnectAllLines();
     DemoLine *demoLine() const { return m_demo.get(); }
     EventLog *alarmJournal() const { return m_journalLog; }
@@ -152,6 +157,7 @@ private:
     void showLineInBar();
     void takeSettingsFromBar();
     void addLineInteractively();
+    void connectAllInteractively();
     void editCurrentLine();
     void removeCurrentLineInteractively();
     // "ipc300@1", or "line2/ipc300@1" where lines must be told apart.
@@ -190,6 +196,7 @@ private:
     StationLine *m_currentLine = nullptr;
     QHash<StationLine *, LineHeader *> m_headers;
     bool m_fillingBar = false;
+    int m_listMinimumWidth = 0;   // of the page list with one line
     std::unique_ptr<DemoLine> m_demo;
     std::unique_ptr<QSettings> m_settings;
     ConnectionBar *m_connectionBar;

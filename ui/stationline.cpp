@@ -3,6 +3,8 @@
 #include "logs/alarmjournal.h"
 #include "logs/writeaudit.h"
 
+#include <QLocale>
+
 namespace jumo {
 
 StationLine::StationLine(const QString &name, const BusSettings &settings, QObject *parent)
@@ -15,7 +17,11 @@ StationLine::StationLine(const QString &name, const BusSettings &settings, QObje
             m_lastError.clear();
         emit stateChanged(state);
     });
-    connect(&m_bus, &Bus::lineError, this, [this](const QString &message) { m_lastError = message; });
+    connect(&m_bus, &Bus::lineError, this, [this](const QString &message) {
+        // The loss is told before its reason: the state in words again, with it.
+        m_lastError = message;
+        emit stateChanged(state());
+    });
 }
 
 StationLine::~StationLine()
@@ -67,8 +73,15 @@ QString StationLine::stateText() const
     switch (state()) {
     case LineState::Connected:
         return tr("Connected");
-    case LineState::Lost:
-        return m_lastError.isEmpty() ? tr("Line lost") : tr("Line lost: %1").arg(m_lastError);
+    case LineState::Lost: {
+        // The connection's reason says "line lost: ..." itself.
+        QString reason = m_lastError;
+        const QString said = LineConnection::tr("line lost: %1").arg(QString());
+        if (reason.startsWith(said))
+            reason = reason.mid(said.size());
+        const QString since = QLocale().toString(m_since.time(), QStringLiteral("HH:mm:ss"));
+        return reason.isEmpty() ? tr("Line lost since %1").arg(since) : tr("Line lost since %1: %2").arg(since, reason);
+    }
     case LineState::Disconnected:
         break;
     }

@@ -169,7 +169,10 @@ void tst_StationLines::bothLinesLiveGroupedUnderTheirHeaders()
     QCOMPARE(window->currentLine()->name(), QString("cabinet-b"));
     QVERIFY(window->findChild<QLabel *>("lineState")->text().contains(m_lineB.masterEnd()));
     // The status bar says the lines' states in short.
-    QTRY_COMPARE(window->findChild<ElidedLabel *>("lineStatus")->fullText(), QString("Lines: 2 connected"));
+    auto *status = window->findChild<ElidedLabel *>("lineStatus");
+    QTRY_COMPARE(status->fullText(), QString("Lines: 2 connected"));
+    QTRY_COMPARE(status->text(), status->fullText());
+    QVERIFY2(status->isVisible(), qPrintable(QStringLiteral("%1x%2").arg(status->width()).arg(status->height())));
 }
 
 void tst_StationLines::aLostLineShowsOnItsHeaderOnly()
