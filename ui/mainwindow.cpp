@@ -36,6 +36,7 @@
 #include <QRegularExpression>
 #include <QCloseEvent>
 #include <QGridLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QKeyEvent>
 #include <QLineEdit>
@@ -165,6 +166,9 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
     m_lineStatus->setObjectName(QStringLiteral("lineStatus"));
     m_loadStatus->setObjectName(QStringLiteral("loadStatus"));
     m_errorStatus->setObjectName(QStringLiteral("errorStatus"));
+    // The lines' state as wide as it needs (an elided label takes no room of itself and
+    // had none: the line's state was never seen); the newest error gets the rest.
+    m_lineStatus->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Preferred);
     statusBar()->addWidget(m_lineStatus);
     statusBar()->addWidget(m_loadStatus);
     statusBar()->addWidget(m_errorStatus, 1);
@@ -905,9 +909,6 @@ void MainWindow::updateStatus()
         m_lineStatus->setFullText(line->state() == LineState::Connected
                                           ? tr("Line: %1").arg(line->settings().portName)
                                           : m_connectionBar->findChild<QLabel *>(QStringLiteral("lineState"))->text());
-    // The status bar's layout gave the label no room for a text that came after it was
-    // laid out (the line's state was never seen): room for the text, up to a third.
-    m_lineStatus->setMinimumWidth(std::min(m_lineStatus->sizeHint().width() + 8, std::max(120, width() / 3)));
     m_loadStatus->setText(tr("%1 requests/s").arg(perSecond));
     // Repeated errors are throttled: the newest one, at most once every 5 s.
     const qint64 now = m_lines.isEmpty() ? 0 : m_lines.first()->bus()->clockMs();
