@@ -1,5 +1,6 @@
 // jumo-hmi: the desktop HMI. Parses the command line and opens the main window.
 #include "protocol/familyregistry.h"
+#include "bus/stationconfig.h"
 #include "connectionbar.h"
 #include "devicepage.h"
 #include "mainwindow.h"
@@ -41,7 +42,8 @@ int main(int argc, char *argv[])
     parser.addOption({QStringLiteral("read-only"),
                       QApplication::translate("main", "Control-room mode: nothing is ever written to the devices.")});
     parser.addOption({QStringLiteral("show"),
-                      QApplication::translate("main", "Open the page of this device, e.g. ipc300@1."),
+                      QApplication::translate("main", "Open the page of this device, e.g. ipc300@1 (line2/ipc300@1 "
+                                                      "with several lines)."),
                       QStringLiteral("device")});
     parser.addOption({QStringLiteral("tab"),
                       QApplication::translate("main", "With --show: open this tab of the device page (0 = live values)."),
@@ -55,8 +57,20 @@ int main(int argc, char *argv[])
                       QStringLiteral("rate"), QStringLiteral("9600")});
     parser.addOption({QStringLiteral("format"), QApplication::translate("main", "Data format for --port (default 8N1)."),
                       QStringLiteral("format"), QStringLiteral("8N1")});
+    parser.addOption({QStringLiteral("line"),
+                      QApplication::translate("main", "A line of this run, repeatable: ADDRESS[,name=NAME][,baud=N]"
+                                                      "[,format=8N1][,timeout=MS][,min-response=MS][,retries=N]"
+                                                      "[,read-only]; ADDRESS is a serial port, tcp://HOST:PORT or "
+                                                      "rtu+tcp://HOST:PORT. The lines kept in the settings are left "
+                                                      "as they are."),
+                      QStringLiteral("spec")});
+    parser.addOption({QStringLiteral("station"),
+                      QApplication::translate("main", "The lines and devices of this run from a station file "
+                                                      "(JSON, see README); the kept lines are left as they are."),
+                      QStringLiteral("file")});
     parser.addOption({QStringLiteral("device"),
-                      QApplication::translate("main", "A device to monitor, e.g. ipc300@1 (repeatable)."),
+                      QApplication::translate("main", "A device to monitor, e.g. ipc300@1, or line2/ipc300@1 with "
+                                                      "several lines (repeatable)."),
                       QStringLiteral("device")});
     parser.addOption({QStringLiteral("no-identify"),
                       QApplication::translate("main", "Trust the named families without checking the devices' identity "
@@ -87,7 +101,53 @@ int main(int argc, char *argv[])
                             << Qt::endl;
         return 2;
     }
+    // --line and --station make the station of this run; --port stays one line as before.
+    if (parser.isSet(QStringLiteral("line")) || parser.isSet(QStringLiteral("station"))) {
+        auto usage = [](const QString &message) {
+            QTextStream(stderr) << QStringLiteral("jumo-hmi: ") << message << Qt::endl;
+            return 2;
+        };
+        if (parser.isSet(QStringLiteral("port")) || options.demo
+            || (parser.isSet(QStringLiteral("line")) && parser.isSet(QStringLiteral("station"))))
+            return usage(QApplication::translate("main", "give the lines one way: --port, --line (repeatable), "
+                                                         "--station or --demo"));
+        QString error;
+        std::optional<jumo::StationConfig> station;
+        if (parser.isSet(QStringLiteral("station"))) {
+            station = jumo::StationConfig::load(parser.value(QStringLiteral("station")), registry, &error);
+        } else {
+            jumo::BusSettings defaults;
+            defaults.format = jumo::LineFormat::parse(parser.value(QStringLiteral("baud")).toInt(),
+                                                      parser.value(QStringLiteral("format")))
+                                      .value_or(defaults.format);
+            QList<jumo::LineConfig> lines;
+            for (const QString &spec : parser.values(QStringLiteral("line"))) {
+                std::optional<jumo::LineConfig> line = jumo::StationConfig::parseLineSpec(spec, defaults, &error);
+                if (!line)
+                    return usage(error);
+                lines << *line;
+            }
+            station = jumo::StationConfig::fromLines(lines, &error);
+        }
+        if (!station)
+            return usage(error);
+        if (station->lines.isEmpty())
+            return usage(QApplication::translate("main", "the station has no lines"));
+        for (const QString &text : parser.values(QStringLiteral("device"))) {
+            const std::optional<jumo::StationDevice> device = station->resolveDevice(text, registry, &error);
+            if (!device)
+                return usage(error);
+            QList<jumo::DeviceSpec> &devices = station->lines[device->line].devices;
+            if (!devices.contains(device->device))
+                devices << device->device;
+        }
+        options.lines = station->lines;
+    }
     jumo::MainWindow window(registry, options);
+    if (!options.lines.isEmpty()) {
+        for (const QString &failure : window.connectAllLines())
+            QTextStream(stderr) << failure << Qt::endl;
+    }
     if (!registry.errors().isEmpty())
         window.statusBar()->showMessage(QApplication::translate("main", "Map files refused: %1")
                                                 .arg(registry.errors().join(QStringLiteral("; "))));
@@ -121,8 +181,13 @@ int main(int argc, char *argv[])
     const QString show = parser.value(QStringLiteral("show"));
     auto showPage = [&window, show, tab = parser.value(QStringLiteral("tab")).toInt()] {
         bool ok = false;
-        const quint8 address = quint8(show.section(QLatin1Char('@'), 1).toInt(&ok));
-        if (jumo::DevicePage *page = window.devicePage(show.section(QLatin1Char('@'), 0, 0), address)) {
+        // "ipc300@1", or "line2/ipc300@1" for a device of that line.
+        const QString line = show.contains(QLatin1Char('/')) ? show.section(QLatin1Char('/'), 0, 0) : QString();
+        const QString device = show.section(QLatin1Char('/'), -1);
+        const quint8 address = quint8(device.section(QLatin1Char('@'), 1).toInt(&ok));
+        const QString family = device.section(QLatin1Char('@'), 0, 0);
+        if (jumo::DevicePage *page = line.isEmpty() ? window.devicePage(family, address)
+                                                    : window.devicePage(line, family, address)) {
             window.showDevice(page);
             page->tabs()->setCurrentIndex(tab);
         }

@@ -10,9 +10,10 @@
 namespace jumo {
 
 AddDeviceDialog::AddDeviceDialog(const FamilyRegistry &registry, QWidget *parent)
-    : QDialog(parent), m_registry(registry), m_family(new QComboBox(this)), m_address(new QSpinBox(this))
+    : QDialog(parent), m_registry(registry), m_line(new QComboBox(this)), m_family(new QComboBox(this)), m_address(new QSpinBox(this))
 {
     setWindowTitle(tr("Add device"));
+    m_line->setObjectName(QStringLiteral("addToLineBox"));
     m_family->setObjectName(QStringLiteral("familyBox"));
     m_address->setObjectName(QStringLiteral("addressBox"));
     for (const auto &map : registry.families())
@@ -27,6 +28,7 @@ AddDeviceDialog::AddDeviceDialog(const FamilyRegistry &registry, QWidget *parent
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto *form = new QFormLayout(this);
+    form->addRow(tr("&Line:"), m_line);
     form->addRow(tr("&Family:"), m_family);
     form->addRow(tr("&Address:"), m_address);
     form->addRow(buttons);
@@ -35,6 +37,20 @@ AddDeviceDialog::AddDeviceDialog(const FamilyRegistry &registry, QWidget *parent
 std::shared_ptr<const RegisterMap> AddDeviceDialog::family() const
 {
     return m_registry.family(m_family->currentData().toString());
+}
+
+void AddDeviceDialog::setLines(const QStringList &names, int current)
+{
+    m_line->clear();
+    m_line->addItems(names);
+    m_line->setCurrentIndex(current);
+    auto *form = static_cast<QFormLayout *>(layout());
+    form->setRowVisible(m_line, names.size() > 1);
+}
+
+int AddDeviceDialog::line() const
+{
+    return m_line->currentIndex();
 }
 
 quint8 AddDeviceDialog::address() const

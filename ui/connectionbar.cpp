@@ -17,9 +17,14 @@ constexpr int DeviceRole = Qt::UserRole + 1;   // the device a listed port is no
 }
 
 ConnectionBar::ConnectionBar(QWidget *parent)
-    : QWidget(parent), m_port(new QComboBox(this)), m_baud(new QComboBox(this)), m_format(new QComboBox(this)),
+    : QWidget(parent), m_line(new QComboBox(this)), m_lineLabel(new QLabel(tr("L&ine:"), this)),
+      m_port(new QComboBox(this)), m_baud(new QComboBox(this)), m_format(new QComboBox(this)),
       m_button(new QPushButton(tr("Connect"), this)), m_state(new QLabel(this))
 {
+    m_line->setObjectName(QStringLiteral("lineBox"));
+    m_line->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    m_lineLabel->setBuddy(m_line);
+    connect(m_line, &QComboBox::activated, this, &ConnectionBar::lineChosen);
     m_port->setObjectName(QStringLiteral("portBox"));
     m_baud->setObjectName(QStringLiteral("baudBox"));
     m_format->setObjectName(QStringLiteral("formatBox"));
@@ -57,6 +62,8 @@ ConnectionBar::ConnectionBar(QWidget *parent)
         label->setBuddy(field);
         return label;
     };
+    layout->addWidget(m_lineLabel);
+    layout->addWidget(m_line);
     layout->addWidget(buddy(tr("&Port:"), m_port));
     layout->addWidget(m_port);
     layout->addWidget(refresh);
@@ -68,6 +75,25 @@ ConnectionBar::ConnectionBar(QWidget *parent)
     layout->addWidget(m_state, 1);
     refreshPorts();
     setConnected(false, tr("Disconnected"));
+    setLines({}, -1);
+    connect(m_port, &QComboBox::currentTextChanged, this, &ConnectionBar::settingsEdited);
+    connect(m_baud, &QComboBox::activated, this, &ConnectionBar::settingsEdited);
+    connect(m_format, &QComboBox::activated, this, &ConnectionBar::settingsEdited);
+}
+
+void ConnectionBar::setLines(const QStringList &names, int current)
+{
+    const QSignalBlocker blocker(m_line);
+    m_line->clear();
+    m_line->addItems(names);
+    m_line->setCurrentIndex(current);
+    m_line->setVisible(names.size() > 1);
+    m_lineLabel->setVisible(names.size() > 1);
+}
+
+int ConnectionBar::currentLine() const
+{
+    return m_line->currentIndex();
 }
 
 void ConnectionBar::refreshPorts()

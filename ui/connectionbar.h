@@ -1,6 +1,6 @@
-// The connection bar: serial port (listed adapters under their stable by-id names, or a
-// typed path or tcp:// / rtu+tcp:// gateway address), baud rate, data format,
-// connect/disconnect, and the line's state.
+// The connection bar: the line it acts on (a chooser while there are several), its
+// address (listed adapters under their stable by-id names, a typed path or a gateway's
+// URL), baud rate, data format, connect/disconnect, and the line's state.
 #pragma once
 
 #include "bus/bussettings.h"
@@ -28,14 +28,23 @@ public:
     // Connected: the fields lock and the button disconnects.
     void setConnected(bool connected, const QString &stateText);
     void refreshPorts();
+    // The lines to choose from, the current one chosen; the chooser shows with two or more.
+    void setLines(const QStringList &names, int current);
+    int currentLine() const;
 
 signals:
     void connectRequested();
     void disconnectRequested();
+    // The user chose another line.
+    void lineChosen(int index);
+    // The user changed the address, baud or format.
+    void settingsEdited();
 
 private:
     void setPort(const QString &port);
 
+    QComboBox *m_line;
+    QLabel *m_lineLabel;
     QComboBox *m_port;
     QComboBox *m_baud;
     QComboBox *m_format;

@@ -26,7 +26,8 @@ QSize ElidedLabel::minimumSizeHint() const
 QSize ElidedLabel::sizeHint() const
 {
     const QMargins m = contentsMargins();
-    return {fontMetrics().horizontalAdvance(m_full) + 2 * margin() + m.left() + m.right(),
+    // A pixel or two over the advance: elidedText() cuts a text given exactly its width.
+    return {fontMetrics().horizontalAdvance(m_full) + 2 + 2 * margin() + m.left() + m.right(),
             QLabel::sizeHint().height()};
 }
 

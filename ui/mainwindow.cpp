@@ -13,6 +13,11 @@
 #include "devicestateicon.h"
 #include "devicetile.h"
 #include "elidedlabel.h"
+#include "linedialog.h"
+#include "lineheader.h"
+#include "navigationlist.h"
+#include "stationline.h"
+#include "stationsettings.h"
 #include "logs/alarmjournal.h"
 #include "logs/eventlog.h"
 #include "eventlogview.h"
@@ -31,6 +36,7 @@
 #include <QRegularExpression>
 #include <QCloseEvent>
 #include <QGridLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QKeyEvent>
 #include <QLineEdit>
@@ -39,6 +45,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPlainTextEdit>
+#include <QPointer>
 #include <QPushButton>
 #include <QSplitter>
 #include <QStackedWidget>
@@ -56,14 +63,15 @@ constexpr int overviewRow = 0;
 constexpr int trafficRow = 1;
 constexpr int journalRow = 2;
 constexpr int auditRow = 3;
-constexpr int firstDeviceRow = 4;
 
 } // namespace
 
 MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, QWidget *parent)
     : QMainWindow(parent), m_registry(registry), m_options(options), m_connectionBar(new ConnectionBar(this)),
-      m_navigation(new QListWidget(this)), m_pages(new QStackedWidget(this)), m_overview(new OverviewPage(this)),
-      m_traffic(new TrafficView(&m_bus, this)),
+      m_navigation(new NavigationList({tr("Overview"), tr("Traffic and statistics"), tr("Alarm journal"),
+                                       tr("Write audit log")},
+                                      this)),
+      m_pages(new QStackedWidget(this)), m_overview(new OverviewPage(this)), m_traffic(new TrafficView(this)),
       m_journalLog(new EventLog((options.logFolder.isEmpty() ? EventLog::defaultFolder() : options.logFolder)
                                         + QStringLiteral("/alarm-journal.jsonl"),
                                 this)),
@@ -93,9 +101,6 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
     // configuration; the command line cannot lift it.
     const QSettings system(QSettings::SystemScope, QStringLiteral("jumo"), QStringLiteral("jumo-hmi"));
     m_readOnly = options.readOnly || system.value(QStringLiteral("readOnly"), false).toBool();
-    m_bus.setReadOnly(m_readOnly);
-    if (options.identify)
-        m_bus.setIdentityCheck(m_registry.families());
     setWindowTitle(m_readOnly ? tr("JUMO HMI [read-only]") : tr("JUMO HMI"));
 
     auto *toolbar = addToolBar(tr("Connection"));
@@ -104,24 +109,23 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
     toolbar->addWidget(m_connectionBar);
     connect(m_connectionBar, &ConnectionBar::connectRequested, this, &MainWindow::requestConnect);
     connect(m_connectionBar, &ConnectionBar::disconnectRequested, this, &MainWindow::disconnectLine);
+    connect(m_connectionBar, &ConnectionBar::lineChosen, this, [this](int index) {
+        if (index >= 0 && index < m_lines.size())
+            setCurrentLine(m_lines[index]);
+    });
+    connect(m_connectionBar, &ConnectionBar::settingsEdited, this, &MainWindow::takeSettingsFromBar);
 
     m_navigation->setObjectName(QStringLiteral("navigation"));
     // Short names with a state icon; what does not fit ends in "…" and is in the tooltip.
     m_navigation->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_navigation->setTextElideMode(Qt::ElideRight);
     m_navigation->setIconSize(QSize(16, 16));
-    for (const QString &page : {tr("Overview"), tr("Traffic and statistics"), tr("Alarm journal"), tr("Write audit log")}) {
-        auto *item = new QListWidgetItem(page, m_navigation);
-        item->setToolTip(page);
-    }
     m_pages->addWidget(m_overview);
     m_pages->addWidget(m_traffic);
     m_pages->addWidget(m_journalView);
     m_pages->addWidget(m_auditView);
     m_journalView->setObjectName(QStringLiteral("alarmJournal"));
     m_auditView->setObjectName(QStringLiteral("auditLog"));
-    new AlarmJournal(&m_bus, m_journalLog, this);
-    new WriteAudit(&m_bus, m_auditLog, this);
     connect(m_navigation, &QListWidget::currentRowChanged, this, &MainWindow::onNavigation);
     auto *addButton = new QPushButton(tr("Add..."), this);
     auto *scanButton = new QPushButton(tr("Scan..."), this);
@@ -155,12 +159,16 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
                                     m_navigation->fontMetrics().horizontalAdvance(QStringLiteral("dTRON 300 @ 247")) + 16 + 12})
             + 2 * m_navigation->frameWidth() + 8;
     side->setMinimumWidth(std::max(listWidth, sideButtons->minimumSize().width()));
+    m_listMinimumWidth = side->minimumWidth();
     split->setSizes({side->minimumWidth(), 1280 - side->minimumWidth()});
     setCentralWidget(split);
 
     m_lineStatus->setObjectName(QStringLiteral("lineStatus"));
     m_loadStatus->setObjectName(QStringLiteral("loadStatus"));
     m_errorStatus->setObjectName(QStringLiteral("errorStatus"));
+    // The lines' state as wide as it needs (an elided label takes no room of itself and
+    // had none: the line's state was never seen); the newest error gets the rest.
+    m_lineStatus->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Preferred);
     statusBar()->addWidget(m_lineStatus);
     statusBar()->addWidget(m_loadStatus);
     statusBar()->addWidget(m_errorStatus, 1);
@@ -197,38 +205,43 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
     });
     // The report lists the writes of the session: kept here, the log may be large.
     connect(m_auditLog, &EventLog::appended, this, [this](const QJsonObject &record) { m_sessionWrites << record; });
-    connect(&m_bus, &Bus::stateChanged, this, &MainWindow::onStateChanged);
-    connect(&m_bus, &Bus::lineError, this, [this](const QString &message) { m_lastError = message; });
-    connect(&m_bus, &Bus::traffic, this, [this](const TrafficRecord &record) {
-        if (!record.error.isEmpty())
-            m_lastError = tr("address %1: %2").arg(record.slave).arg(record.error);
-    });
-    connect(&m_bus, &Bus::conditionChanged, this, [this](DeviceId id, const DeviceCondition &condition) {
-        if (const int index = indexOf(id); index >= 0) {
-            m_devices[index].tile->setCondition(condition);
-            if (m_devices[index].page)
-                m_devices[index].page->setCondition(condition);
-        }
-        updateNavigationItem(id);
-    });
     auto *statusTimer = new QTimer(this);
     connect(statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
     statusTimer->start(1000);
 
     buildMenus();
-    onStateChanged(LineState::Disconnected);
     m_navigation->setCurrentRow(overviewRow);
     resize(1280, 800);
-    if (options.demo)
+    if (options.demo) {
         startDemo();
-    else
+    } else if (!options.lines.isEmpty()) {
+        restoreGeometry(settings().value(QStringLiteral("window/geometry")).toByteArray());
+        for (const LineConfig &config : options.lines) {
+            if (StationLine *line = addLine(config.name, config.settings)) {
+                for (const DeviceSpec &device : config.devices)
+                    addDevice(line, m_registry.family(device.family), device.address);
+            }
+        }
+    } else {
         restoreSettings();
+    }
+    // A window has a line to connect at least: the first one, named as such.
+    if (m_lines.isEmpty())
+        addLine(QStringLiteral("line1"), BusSettings{});
+    showLineInBar();
+    updateStatus();
 }
 
 MainWindow::~MainWindow()
 {
-    // The client goes first, then the simulator, then socat.
-    m_bus.close();
+    // The clients go first, then the simulator, then socat.
+    for (StationLine *line : std::as_const(m_lines))
+        line->close();
+}
+
+Bus *MainWindow::bus()
+{
+    return m_lines.isEmpty() ? nullptr : m_lines.first()->bus();
 }
 
 QSettings &MainWindow::settings()
@@ -247,10 +260,20 @@ void MainWindow::buildMenus()
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
     QMenu *line = menuBar()->addMenu(tr("&Line"));
+    line->setObjectName(QStringLiteral("lineMenu"));
     m_connectAction = line->addAction(tr("&Connect"), QKeySequence(Qt::Key_F5), this, &MainWindow::requestConnect);
     m_disconnectAction = line->addAction(tr("&Disconnect"), QKeySequence(Qt::SHIFT | Qt::Key_F5), this,
                                          &MainWindow::disconnectLine);
     m_disconnectAction->setEnabled(false);
+    line->addAction(tr("Connect &all lines"), this, &MainWindow::connectAllInteractively)
+            ->setObjectName(QStringLiteral("connectAllLines"));
+    line->addAction(tr("Disc&onnect all lines"), this, &MainWindow::disconnectAllLines)
+            ->setObjectName(QStringLiteral("disconnectAllLines"));
+    line->addSeparator();
+    line->addAction(tr("&New line..."), this, &MainWindow::addLineInteractively)->setObjectName(QStringLiteral("addLine"));
+    line->addAction(tr("&Edit the line..."), this, &MainWindow::editCurrentLine)->setObjectName(QStringLiteral("editLine"));
+    line->addAction(tr("&Remove the line..."), this, &MainWindow::removeCurrentLineInteractively)
+            ->setObjectName(QStringLiteral("removeLine"));
 
     QMenu *devices = menuBar()->addMenu(tr("&Devices"));
     devices->addAction(tr("&Add a device..."), QKeySequence::New, this, &MainWindow::addDeviceInteractively);
@@ -266,7 +289,7 @@ void MainWindow::buildMenus()
             QMessageBox::information(this, tr("Parameters"), tr("Open the page of a device first."));
             return;
         }
-        ParametersDialog dialog(&m_bus, m_devices[index].id, this);
+        ParametersDialog dialog(m_devices[index].line->bus(), m_devices[index].id, this);
         dialog.exec();
     });
     devices->addAction(tr("&Data logging of the shown device..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L),
@@ -277,7 +300,7 @@ void MainWindow::buildMenus()
             return;
         }
         const DeviceId id = m_devices[index].id;
-        DataLoggingDialog dialog(&m_bus, id, dataLogger(id), this);
+        DataLoggingDialog dialog(m_devices[index].line->bus(), id, dataLogger(id), this);
         dialog.exec();
     });
     devices->addAction(tr("&Commissioning report of the shown device..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R),
@@ -288,9 +311,12 @@ void MainWindow::buildMenus()
             return;
         }
         const DeviceId id = m_devices[index].id;
-        const QString family = m_bus.deviceMap(id)->family;
-        const quint8 address = m_bus.deviceAddress(id);
-        ReportDetailsDialog details(QStringLiteral("%1 @ %2").arg(m_bus.deviceMap(id)->shortName).arg(address),
+        const Bus *bus = m_devices[index].line->bus();
+        const QString family = bus->deviceMap(id)->family;
+        const quint8 address = bus->deviceAddress(id);
+        // Reports of devices on other lines than the current one are not offered here.
+        setCurrentLine(m_devices[index].line);
+        ReportDetailsDialog details(QStringLiteral("%1 @ %2").arg(bus->deviceMap(id)->shortName).arg(address),
                                     reportTitle(family, address), this);
         details.setObjectName(QStringLiteral("reportDetailsDialog"));
         if (details.exec() != QDialog::Accepted)
@@ -345,7 +371,7 @@ void MainWindow::buildPageShortcuts(QMenu *view)
     for (int n = 1; n <= 9; ++n) {
         QAction *action = devicePages->addAction(tr("Device %1 in the list").arg(n),
                                                  QKeySequence(Qt::CTRL | Qt::Key(Qt::Key_0 + n)), this,
-                                                 [this, n] { showNavigationRow(firstDeviceRow + n - 1); });
+                                                 [this, n] { showNavigationRow(m_navigation->deviceRow(n)); });
         action->setObjectName(QStringLiteral("showDevice%1").arg(n));
     }
     view->addAction(tr("&Next page"), QKeySequence(Qt::CTRL | Qt::Key_PageDown), this, [this] {
@@ -405,15 +431,19 @@ void MainWindow::setTheme(int kind)
     for (const DeviceEntry &d : std::as_const(m_devices)) {
         d.tile->restyle();
         if (d.page)
-            d.page->restyle(m_bus.condition(d.id));
+            d.page->restyle(d.line->bus()->condition(d.id));
     }
+    for (LineHeader *header : std::as_const(m_headers))
+        header->refresh();
     // Texts coloured by meaning (write states, hints) and the state icons of the list.
     Theme::restyleWidgets();
-    for (int i = 0; i < m_devices.size(); ++i) {
-        if (QListWidgetItem *item = m_navigation->item(firstDeviceRow + i))
+    for (const DeviceEntry &d : std::as_const(m_devices)) {
+        if (QListWidgetItem *item = m_navigation->item(m_navigation->rowOf(d.id)))
             item->setData(Qt::UserRole, 0);   // drawn again in the theme's colours
-        updateNavigationItem(m_devices[i].id);
+        updateNavigationItem(d.id);
     }
+    for (StationLine *line : std::as_const(m_lines))
+        m_navigation->updateLine(line);
 }
 
 void MainWindow::showNavigationRow(int row)
@@ -437,84 +467,421 @@ void MainWindow::showNavigationRow(int row)
 
 void MainWindow::requestConnect()
 {
-    if (m_bus.state() != LineState::Disconnected)
+    StationLine *line = m_currentLine;
+    if (!line || line->state() != LineState::Disconnected)
         return;
     if (!connectLine())
-        QMessageBox::warning(this, tr("Connect"), m_bus.lastError());
+        QMessageBox::warning(this, tr("Connect"), line->lastError());
 }
 
 void MainWindow::addDeviceInteractively()
 {
     AddDeviceDialog dialog(m_registry, this);
-    if (dialog.exec() == QDialog::Accepted && dialog.family()) {
-        addDevice(dialog.family(), dialog.address());
-        showDevice(dialog.family()->family, dialog.address());
+    QStringList names;
+    for (const StationLine *line : std::as_const(m_lines))
+        names << line->name();
+    dialog.setLines(names, int(m_lines.indexOf(m_currentLine)));
+    if (dialog.exec() != QDialog::Accepted || !dialog.family())
+        return;
+    StationLine *line = m_lines.value(dialog.line(), m_currentLine);
+    if (!addDevice(line, dialog.family(), dialog.address())) {
+        QMessageBox::information(this, tr("Add device"),
+                                 tr("%1 @ %2 is on line %3 already.")
+                                         .arg(dialog.family()->shortName)
+                                         .arg(dialog.address())
+                                         .arg(line->name()));
+        return;
     }
+    const int index = indexOf(line, dialog.family()->family, dialog.address());
+    showDevice(ensurePage(index));
 }
 
 int MainWindow::currentDeviceIndex() const
 {
-    const int index = m_navigation->currentRow() - firstDeviceRow;
-    return index >= 0 && index < m_devices.size() ? index : -1;
+    return indexOf(m_navigation->deviceAt(m_navigation->currentRow()));
 }
 
 void MainWindow::startDemo()
 {
     m_demo = std::make_unique<DemoLine>(m_registry);
+    StationLine *line = addLine(QStringLiteral("line1"), BusSettings{});
     connect(m_demo.get(), &DemoLine::failed, this, [this](const QString &reason) {
         m_lineStatus->setFullText(tr("Demo line failed: %1").arg(reason));
     });
-    connect(m_demo.get(), &DemoLine::ready, this, [this](const QString &port) {
+    connect(m_demo.get(), &DemoLine::ready, this, [this, line](const QString &port) {
         const LineFormat f = m_demo->format();
-        m_connectionBar->setSettings(port, f.baudRate, f.formatName());
-        if (!connectLine()) {
-            m_lineStatus->setFullText(m_bus.lastError());
+        BusSettings s = line->settings();
+        s.portName = port;
+        s.format = f;
+        line->setSettings(s);
+        showLineInBar();
+        if (!connectLine(line)) {
+            m_lineStatus->setFullText(line->lastError());
             return;
         }
         for (const auto &[family, address] : m_demo->devices())
-            addDevice(m_registry.family(family), address);
+            addDevice(line, m_registry.family(family), address);
         emit demoReady();
     });
     m_lineStatus->setFullText(tr("Starting the simulated demo line..."));
     m_demo->start();
 }
 
+StationLine *MainWindow::line(const QString &name) const
+{
+    for (StationLine *line : m_lines) {
+        if (line->name() == name)
+            return line;
+    }
+    return nullptr;
+}
+
+LineHeader *MainWindow::lineHeader(const QString &name) const
+{
+    return m_headers.value(line(name));
+}
+
+StationLine *MainWindow::addLine(const QString &name, const BusSettings &settings, QString *error)
+{
+    QStringList taken;
+    for (const StationLine *line : std::as_const(m_lines))
+        taken << line->name();
+    if (const QString problem = LineDialog::nameProblem(name, taken); !problem.isEmpty()) {
+        if (error)
+            *error = problem;
+        return nullptr;
+    }
+    auto *line = new StationLine(name, settings, this);
+    Bus *bus = line->bus();
+    bus->setReadOnly(m_readOnly);
+    if (m_options.identify)
+        bus->setIdentityCheck(m_registry.families());
+    line->attachLogs(m_journalLog, m_auditLog);
+    connect(line, &StationLine::stateChanged, this, [this, line] { onLineStateChanged(line); });
+    connect(line, &StationLine::changed, this, [this, line] {
+        m_navigation->updateLine(line);
+        if (line == m_currentLine && !m_fillingBar)
+            showLineInBar();
+        updateLineGrouping();
+    });
+    connect(bus, &Bus::lineError, this, [this, line](const QString &message) {
+        m_lastError = m_lines.size() > 1 ? QStringLiteral("%1: %2").arg(line->name(), message) : message;
+    });
+    connect(bus, &Bus::traffic, this, [this, line](const TrafficRecord &record) {
+        if (record.error.isEmpty())
+            return;
+        m_lastError = tr("address %1: %2").arg(record.slave).arg(record.error);
+        if (m_lines.size() > 1)
+            m_lastError = QStringLiteral("%1: %2").arg(line->name(), m_lastError);
+    });
+    connect(bus, &Bus::conditionChanged, this, [this](DeviceId id, const DeviceCondition &condition) {
+        if (const int index = indexOf(id); index >= 0) {
+            m_devices[index].tile->setCondition(condition);
+            if (m_devices[index].page)
+                m_devices[index].page->setCondition(condition);
+        }
+        updateNavigationItem(id);
+    });
+    m_lines << line;
+    auto *header = new LineHeader(line);
+    connect(header, &LineHeader::activated, this, &MainWindow::setCurrentLine);
+    m_headers.insert(line, header);
+    m_overview->addGroup(header);
+    m_traffic->addLine(line);
+    if (!m_currentLine)
+        m_currentLine = line;
+    updateLineGrouping();
+    rebuildNavigation();
+    showLineInBar();
+    return line;
+}
+
+bool MainWindow::removeLine(StationLine *line)
+{
+    if (!m_lines.contains(line) || m_lines.size() < 2)
+        return false;
+    line->close();
+    for (qsizetype i = m_devices.size() - 1; i >= 0; --i) {
+        if (m_devices[i].line != line)
+            continue;
+        const DeviceEntry d = m_devices.takeAt(i);
+        line->bus()->removeDevice(d.id);
+        m_overview->removeTile(d.tile);
+        if (d.page) {
+            m_pages->removeWidget(d.page);
+            d.page->deleteLater();
+        }
+        d.values->deleteLater();
+        d.alarms->deleteLater();
+        if (d.logger)
+            d.logger->deleteLater();
+    }
+    m_traffic->removeLine(line);
+    m_overview->removeGroup(m_headers.take(line));
+    m_lines.removeAll(line);
+    m_requestsAtLastStatus.remove(line);
+    if (m_currentLine == line)
+        m_currentLine = m_lines.first();
+    line->disconnect(this);
+    line->deleteLater();
+    updateLineGrouping();
+    rebuildNavigation();
+    showLineInBar();
+    updateStatus();
+    return true;
+}
+
+void MainWindow::setCurrentLine(StationLine *line)
+{
+    if (!line || !m_lines.contains(line) || line == m_currentLine)
+        return;
+    m_currentLine = line;
+    showLineInBar();
+}
+
+void MainWindow::showLineInBar()
+{
+    if (!m_currentLine)
+        return;
+    QStringList names;
+    for (const StationLine *line : std::as_const(m_lines))
+        names << line->name();
+    m_fillingBar = true;
+    m_connectionBar->setLines(names, int(m_lines.indexOf(m_currentLine)));
+    const BusSettings &s = m_currentLine->settings();
+    m_connectionBar->setSettings(s.portName, s.format.baudRate, s.format.formatName());
+    m_fillingBar = false;
+    // The bar names a listed adapter by its stable by-id name: that is what is kept.
+    if (m_currentLine->state() == LineState::Disconnected)
+        takeSettingsFromBar();
+    onLineStateChanged(m_currentLine);
+}
+
+void MainWindow::takeSettingsFromBar()
+{
+    if (m_fillingBar || !m_currentLine || m_currentLine->state() != LineState::Disconnected)
+        return;
+    BusSettings s = m_currentLine->settings();
+    s.portName = m_connectionBar->port();
+    if (const auto format = LineFormat::parse(m_connectionBar->baud(), m_connectionBar->format()))
+        s.format = *format;
+    if (s.portName == m_currentLine->settings().portName && s.format.baudRate == m_currentLine->settings().format.baudRate
+        && s.format.formatName() == m_currentLine->settings().format.formatName())
+        return;
+    m_fillingBar = true;
+    m_currentLine->setSettings(s);
+    m_fillingBar = false;
+}
+
 bool MainWindow::connectLine()
 {
-    BusSettings s = m_bus.settings();
-    s.portName = m_connectionBar->port();
+    if (!m_currentLine)
+        return false;
+    takeSettingsFromBar();
     const std::optional<LineFormat> format = LineFormat::parse(m_connectionBar->baud(), m_connectionBar->format());
-    if (!format || s.portName.isEmpty()) {
-        QMessageBox::warning(this, tr("Connect"), tr("Choose or type a serial port first."));
+    if (!format || m_connectionBar->port().isEmpty()) {
+        QMessageBox::warning(this, tr("Connect"), tr("Choose or type the line's address first: a serial port, tcp://HOST[:PORT] or rtu+tcp://HOST:PORT."));
         return false;
     }
-    s.format = *format;
-    s.readOnly = m_readOnly;
-    m_bus.setSettings(s);
-    return m_bus.open();
+    return connectLine(m_currentLine);
+}
+
+bool MainWindow::connectLine(StationLine *line)
+{
+    if (!line || line->settings().portName.isEmpty())
+        return false;
+    return line->open();
 }
 
 void MainWindow::disconnectLine()
 {
-    m_bus.close();
+    if (m_currentLine)
+        m_currentLine->close();
 }
 
-void MainWindow::onStateChanged(LineState state)
+QStringList MainWindow::connectAllLines()
 {
-    switch (state) {
-    case LineState::Connected:
-        m_connectionBar->setConnected(true, tr("Connected to %1").arg(m_bus.settings().portName));
-        break;
-    case LineState::Lost:
-        m_connectionBar->setConnected(true, tr("Line lost, waiting for the port to come back..."));
-        break;
-    case LineState::Disconnected:
-        m_connectionBar->setConnected(false, tr("Disconnected"));
-        break;
+    QStringList failed;
+    for (StationLine *line : std::as_const(m_lines)) {
+        if (line->state() == LineState::Disconnected && !connectLine(line))
+            failed << QStringLiteral("%1: %2").arg(line->name(),
+                                                   line->lastError().isEmpty() ? tr("no address") : line->lastError());
     }
-    if (m_connectAction) {
-        m_connectAction->setEnabled(state == LineState::Disconnected);
-        m_disconnectAction->setEnabled(state != LineState::Disconnected);
+    return failed;
+}
+
+void MainWindow::connectAllInteractively()
+{
+    const QStringList failed = connectAllLines();
+    if (!failed.isEmpty())
+        QMessageBox::warning(this, tr("Connect"), tr("Not connected:\n%1").arg(failed.join(QLatin1Char('\n'))));
+}
+
+void MainWindow::disconnectAllLines()
+{
+    for (StationLine *line : std::as_const(m_lines))
+        line->close();
+}
+
+void MainWindow::addLineInteractively()
+{
+    QStringList taken;
+    for (const StationLine *line : std::as_const(m_lines))
+        taken << line->name();
+    QString name;
+    for (int n = 1; name.isEmpty() || taken.contains(name); ++n)
+        name = QStringLiteral("line%1").arg(n);
+    BusSettings settings;
+    if (m_currentLine)
+        settings.format = m_currentLine->settings().format;
+    LineDialog dialog(name, settings, taken, this);
+    dialog.setWindowTitle(tr("New line"));
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    if (StationLine *line = addLine(dialog.name(), dialog.settings()))
+        setCurrentLine(line);
+}
+
+void MainWindow::editCurrentLine()
+{
+    StationLine *line = m_currentLine;
+    if (!line)
+        return;
+    if (line->state() != LineState::Disconnected) {
+        QMessageBox::information(this, tr("Edit line"), tr("Disconnect line %1 first.").arg(line->name()));
+        return;
+    }
+    QStringList taken;
+    for (const StationLine *other : std::as_const(m_lines)) {
+        if (other != line)
+            taken << other->name();
+    }
+    LineDialog dialog(line->name(), line->settings(), taken, this);
+    dialog.setWindowTitle(tr("Edit line %1").arg(line->name()));
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    line->setSettings(dialog.settings());
+    line->setName(dialog.name());
+    showLineInBar();
+    rebuildNavigation();
+}
+
+void MainWindow::removeCurrentLineInteractively()
+{
+    StationLine *line = m_currentLine;
+    if (!line)
+        return;
+    if (m_lines.size() < 2) {
+        QMessageBox::information(this, tr("Remove line"),
+                                 tr("%1 is the only line; change its address with Edit instead.").arg(line->name()));
+        return;
+    }
+    QStringList devices;
+    for (const DeviceEntry &d : std::as_const(m_devices)) {
+        if (d.line == line)
+            devices << QStringLiteral("%1 @ %2").arg(line->bus()->deviceMap(d.id)->shortName).arg(line->bus()->deviceAddress(d.id));
+    }
+    QString question = tr("Remove line %1 from the station?").arg(line->name());
+    if (!devices.isEmpty())
+        question += QLatin1Char('\n')
+                + tr("Devices removed with it: %1 (%2).").arg(devices.size()).arg(devices.join(QStringLiteral(", ")));
+    if (QMessageBox::question(this, tr("Remove line"), question) == QMessageBox::Yes)
+        removeLine(line);
+}
+
+void MainWindow::updateLineGrouping()
+{
+    const bool several = m_lines.size() > 1;
+    m_overview->setHeadersShown(several);
+    for (StationLine *line : std::as_const(m_lines))
+        line->setNamedInLogs(several);
+}
+
+void MainWindow::rebuildNavigation()
+{
+    QList<NavigationList::Group> groups;
+    for (StationLine *line : std::as_const(m_lines)) {
+        NavigationList::Group g{line, {}};
+        for (const DeviceEntry &d : std::as_const(m_devices)) {
+            if (d.line == line) {
+                const auto map = line->bus()->deviceMap(d.id);
+                g.devices << NavigationList::Device{d.id, QStringLiteral("%1 @ %2").arg(map->shortName).arg(line->bus()->deviceAddress(d.id))};
+            }
+        }
+        groups << g;
+    }
+    m_navigation->setGroups(groups, m_lines.size() > 1);
+    // A line's row says its name and state ("cabinet-a (connected)"): the list is as wide
+    // as the widest, within reason; longer ones end in "..." with the whole in the tooltip.
+    int width = m_listMinimumWidth;
+    if (m_lines.size() > 1) {
+        QFont bold = m_navigation->font();
+        bold.setBold(true);
+        const QFontMetrics metrics(bold);
+        for (int row = m_navigation->pageCount(); row < m_navigation->count(); ++row) {
+            if (m_navigation->isLineRow(row))
+                width = std::max(width, metrics.horizontalAdvance(m_navigation->item(row)->text() + QStringLiteral("dis")) + 16 + 12
+                                                + 2 * m_navigation->frameWidth() + 8);
+        }
+        width = std::min(width, m_listMinimumWidth * 3 / 2);
+    }
+    if (QWidget *side = m_navigation->parentWidget(); side && side->minimumWidth() != width) {
+        side->setMinimumWidth(width);
+        if (auto *split = findChild<QSplitter *>(QStringLiteral("mainSplitter")); split && split->sizes().value(0) < width)
+            split->setSizes({width, split->width() - width});
+    }
+    for (const DeviceEntry &d : std::as_const(m_devices))
+        updateNavigationItem(d.id);
+}
+
+QString MainWindow::linesSummary() const
+{
+    int connected = 0;
+    int lost = 0;
+    int disconnected = 0;
+    for (const StationLine *line : m_lines) {
+        switch (line->state()) {
+        case LineState::Connected:
+            ++connected;
+            break;
+        case LineState::Lost:
+            ++lost;
+            break;
+        case LineState::Disconnected:
+            ++disconnected;
+            break;
+        }
+    }
+    QStringList parts;
+    if (connected)
+        parts << tr("%1 connected").arg(connected);
+    if (lost)
+        parts << tr("%1 lost").arg(lost);
+    if (disconnected)
+        parts << tr("%1 disconnected").arg(disconnected);
+    return tr("Lines: %1").arg(parts.join(QStringLiteral(", ")));
+}
+
+void MainWindow::onLineStateChanged(StationLine *line)
+{
+    m_navigation->updateLine(line);
+    if (line == m_currentLine) {
+        const QString address = line->settings().portName;
+        switch (line->state()) {
+        case LineState::Connected:
+            m_connectionBar->setConnected(true, tr("Connected to %1").arg(address));
+            break;
+        case LineState::Lost:
+            m_connectionBar->setConnected(true, tr("Line lost, waiting for the port to come back..."));
+            break;
+        case LineState::Disconnected:
+            m_connectionBar->setConnected(false, tr("Disconnected"));
+            break;
+        }
+        if (m_connectAction) {
+            m_connectAction->setEnabled(line->state() == LineState::Disconnected);
+            m_disconnectAction->setEnabled(line->state() != LineState::Disconnected);
+        }
     }
     updateStatus();
 }
@@ -523,21 +890,28 @@ void MainWindow::updateStatus()
 {
     int requests = 0;
     int errors = 0;
-    for (DeviceId id : m_bus.devices()) {
-        const DeviceStatistics *s = m_bus.statistics(id);
-        requests += s->requests;
-        errors += s->timeouts + s->crcErrors + s->mismatches;
-        for (int n : s->exceptions)
-            errors += n;
+    for (StationLine *line : std::as_const(m_lines)) {
+        int lineRequests = 0;
+        for (DeviceId id : line->bus()->devices()) {
+            const DeviceStatistics *s = line->bus()->statistics(id);
+            lineRequests += s->requests;
+            errors += s->timeouts + s->crcErrors + s->mismatches;
+            for (int n : s->exceptions)
+                errors += n;
+        }
+        requests += lineRequests - m_requestsAtLastStatus.value(line);
+        m_requestsAtLastStatus.insert(line, lineRequests);
     }
-    const int perSecond = requests - m_requestsAtLastStatus;
-    m_requestsAtLastStatus = requests;
-    m_lineStatus->setFullText(m_bus.state() == LineState::Connected
-                                      ? tr("Line: %1").arg(m_bus.settings().portName)
-                                      : m_connectionBar->findChild<QLabel *>(QStringLiteral("lineState"))->text());
+    const int perSecond = requests;
+    if (m_lines.size() > 1)
+        m_lineStatus->setFullText(linesSummary());
+    else if (StationLine *line = m_lines.value(0))
+        m_lineStatus->setFullText(line->state() == LineState::Connected
+                                          ? tr("Line: %1").arg(line->settings().portName)
+                                          : m_connectionBar->findChild<QLabel *>(QStringLiteral("lineState"))->text());
     m_loadStatus->setText(tr("%1 requests/s").arg(perSecond));
     // Repeated errors are throttled: the newest one, at most once every 5 s.
-    const qint64 now = m_bus.clockMs();
+    const qint64 now = m_lines.isEmpty() ? 0 : m_lines.first()->bus()->clockMs();
     if (!m_lastError.isEmpty() && (m_lastErrorShownMs < 0 || now - m_lastErrorShownMs >= 5000)) {
         m_errorStatus->setFullText(tr("%n error(s); last: %1", nullptr, errors).arg(m_lastError));
         m_lastErrorShownMs = now;
@@ -549,29 +923,36 @@ void MainWindow::updateStatus()
 
 bool MainWindow::addDevice(std::shared_ptr<const RegisterMap> map, quint8 address)
 {
-    if (!map || deviceTile(map->family, address))
+    return addDevice(m_currentLine, std::move(map), address);
+}
+
+bool MainWindow::addDevice(StationLine *line, std::shared_ptr<const RegisterMap> map, quint8 address)
+{
+    if (!map || !line || indexOf(line, map->family, address) >= 0)
         return false;
-    const DeviceId id = m_bus.addDevice(map, address);
+    Bus *bus = line->bus();
+    const DeviceId id = bus->addDevice(map, address);
     if (!m_options.identify)
-        m_auditLog->append(QJsonObject{{"device", QStringLiteral("%1@%2").arg(map->family).arg(address)},
+        m_auditLog->append(QJsonObject{{"device", line->deviceName(id)},
                                        {"entry", QString()},
                                        {"result", QStringLiteral("identity_not_checked")},
                                        {"message", tr("the family is not checked against the device (--no-identify)")}});
-    auto *values = new LiveValuesModel(&m_bus, id, this);
-    auto *alarms = new AlarmBitsModel(&m_bus, id, this);
+    auto *values = new LiveValuesModel(bus, id, this);
+    auto *alarms = new AlarmBitsModel(bus, id, this);
     auto *tile = new DeviceTile(id, *map, address, values, alarms, m_overview);
-    tile->setCondition(m_bus.condition(id));
-    m_overview->addTile(tile);
-    m_navigation->addItem(QStringLiteral("%1 @ %2").arg(map->shortName).arg(address));
-    m_devices << DeviceEntry{id, values, alarms, tile, nullptr, nullptr};
+    tile->setCondition(bus->condition(id));
+    m_overview->addTile(tile, m_headers.value(line));
+    m_devices << DeviceEntry{id, line, values, alarms, tile, nullptr, nullptr};
     auto update = [this, id] { updateNavigationItem(id); };
     connect(alarms, &AlarmBitsModel::activeAlarmsChanged, this, update);
     connect(alarms, &AlarmBitsModel::alarmsKnownChanged, this, update);
     connect(alarms, &QAbstractItemModel::dataChanged, this, update);
-    updateNavigationItem(id);
+    rebuildNavigation();
+    if (LineHeader *header = m_headers.value(line))
+        header->refresh();
     connect(tile, &DeviceTile::activated, this, [this](DeviceId device) {
-        if (const int index = indexOf(device); index >= 0)
-            m_navigation->setCurrentRow(firstDeviceRow + index);
+        if (const int row = m_navigation->rowOf(device); row >= 0)
+            m_navigation->setCurrentRow(row);
     });
     return true;
 }
@@ -579,10 +960,11 @@ bool MainWindow::addDevice(std::shared_ptr<const RegisterMap> map, quint8 addres
 void MainWindow::updateNavigationItem(DeviceId id)
 {
     const int index = indexOf(id);
-    QListWidgetItem *item = index >= 0 ? m_navigation->item(firstDeviceRow + index) : nullptr;
+    QListWidgetItem *item = index >= 0 ? m_navigation->item(m_navigation->rowOf(id)) : nullptr;
     if (!item)
         return;
-    const DeviceCondition condition = m_bus.condition(id);
+    const Bus *bus = m_devices[index].line->bus();
+    const DeviceCondition condition = bus->condition(id);
     const AlarmBitsModel &alarms = *m_devices[index].alarms;
     const auto kind = DeviceStateIcon::kindOf(condition, alarms.activeAlarms(), alarms.alarmsKnown());
     // Repainting an icon for every poll block would cost; only a change is drawn.
@@ -590,9 +972,12 @@ void MainWindow::updateNavigationItem(DeviceId id)
         item->setData(Qt::UserRole, int(kind) + 1);
         item->setIcon(DeviceStateIcon::icon(kind));
     }
-    const std::shared_ptr<const RegisterMap> map = m_bus.deviceMap(id);
+    const std::shared_ptr<const RegisterMap> map = bus->deviceMap(id);
+    QString title = item->text().trimmed();
+    if (m_lines.size() > 1)
+        title = tr("%1 on line %2").arg(title, m_devices[index].line->name());
     const QString tip = QStringLiteral("%1\n%2\n%3\n%4")
-                                .arg(item->text(), map->name, DeviceTile::conditionText(condition),
+                                .arg(title, map->name, DeviceTile::conditionText(condition),
                                      DeviceTile::alarmsText(condition, alarms));
     if (item->toolTip() != tip)
         item->setToolTip(tip);
@@ -612,6 +997,22 @@ int MainWindow::indexOf(DeviceId id) const
     return -1;
 }
 
+int MainWindow::indexOf(const StationLine *line, const QString &family, quint8 address) const
+{
+    for (int i = 0; i < m_devices.size(); ++i) {
+        const DeviceEntry &d = m_devices[i];
+        if ((!line || d.line == line) && d.line->bus()->deviceMap(d.id)->family == family
+            && d.line->bus()->deviceAddress(d.id) == address)
+            return i;
+    }
+    return -1;
+}
+
+QString MainWindow::deviceName(const DeviceEntry &d) const
+{
+    return d.line->deviceName(d.id);
+}
+
 void MainWindow::showDevice(const QString &family, quint8 address)
 {
     showDevice(devicePage(family, address));
@@ -619,11 +1020,13 @@ void MainWindow::showDevice(const QString &family, quint8 address)
 
 DevicePage *MainWindow::ensurePage(int index) const
 {
+    if (index < 0 || index >= m_devices.size())
+        return nullptr;
     DeviceEntry &d = m_devices[index];
     if (!d.page) {
-        d.page = new DevicePage(const_cast<Bus *>(&m_bus), d.id, d.values, d.alarms, m_pages);
+        d.page = new DevicePage(d.line->bus(), d.id, d.values, d.alarms, m_pages);
         d.page->setReadOnly(m_readOnly);
-        d.page->setCondition(m_bus.condition(d.id));
+        d.page->setCondition(d.line->bus()->condition(d.id));
         m_pages->addWidget(d.page);
     }
     return d.page;
@@ -631,53 +1034,66 @@ DevicePage *MainWindow::ensurePage(int index) const
 
 void MainWindow::onNavigation(int row)
 {
-    if (row == overviewRow)
+    if (row == overviewRow) {
         m_pages->setCurrentWidget(m_overview);
-    else if (row == trafficRow)
+    } else if (row == trafficRow) {
         m_pages->setCurrentWidget(m_traffic);
-    else if (row == journalRow)
+    } else if (row == journalRow) {
         m_pages->setCurrentWidget(m_journalView);
-    else if (row == auditRow)
+    } else if (row == auditRow) {
         m_pages->setCurrentWidget(m_auditView);
-    else if (row >= firstDeviceRow && row - firstDeviceRow < m_devices.size())
-        m_pages->setCurrentWidget(ensurePage(row - firstDeviceRow));
+    } else if (m_navigation->isLineRow(row)) {
+        // A line's row: the overview at its group, and the line is the current one.
+        StationLine *line = m_navigation->lineAt(row);
+        setCurrentLine(line);
+        m_pages->setCurrentWidget(m_overview);
+        m_overview->showGroup(m_headers.value(line));
+    } else if (const int index = indexOf(m_navigation->deviceAt(row)); index >= 0) {
+        setCurrentLine(m_devices[index].line);
+        m_pages->setCurrentWidget(ensurePage(index));
+    }
 }
 
 void MainWindow::showDevice(DevicePage *page)
 {
-    for (int i = 0; i < m_devices.size(); ++i) {
-        if (m_devices[i].page == page)
-            m_navigation->setCurrentRow(firstDeviceRow + i);
+    for (const DeviceEntry &d : std::as_const(m_devices)) {
+        if (page && d.page == page)
+            m_navigation->setCurrentRow(m_navigation->rowOf(d.id));
     }
 }
 
 DevicePage *MainWindow::devicePage(const QString &family, quint8 address) const
 {
-    for (int i = 0; i < m_devices.size(); ++i) {
-        const DeviceEntry &d = m_devices[i];
-        if (m_bus.deviceMap(d.id)->family == family && m_bus.deviceAddress(d.id) == address)
-            return ensurePage(i);
-    }
-    return nullptr;
+    return ensurePage(indexOf(nullptr, family, address));
 }
 
 DeviceTile *MainWindow::deviceTile(const QString &family, quint8 address) const
 {
-    for (const DeviceEntry &d : m_devices) {
-        if (m_bus.deviceMap(d.id)->family == family && m_bus.deviceAddress(d.id) == address)
-            return d.tile;
-    }
-    return nullptr;
+    const int index = indexOf(nullptr, family, address);
+    return index >= 0 ? m_devices[index].tile : nullptr;
+}
+
+DevicePage *MainWindow::devicePage(const QString &lineName, const QString &family, quint8 address) const
+{
+    const StationLine *l = line(lineName);
+    return l ? ensurePage(indexOf(l, family, address)) : nullptr;
+}
+
+DeviceTile *MainWindow::deviceTile(const QString &lineName, const QString &family, quint8 address) const
+{
+    const StationLine *l = line(lineName);
+    const int index = l ? indexOf(l, family, address) : -1;
+    return index >= 0 ? m_devices[index].tile : nullptr;
 }
 
 void MainWindow::removeCurrentDevice()
 {
-    const int index = m_navigation->currentRow() - firstDeviceRow;
-    if (index < 0 || index >= m_devices.size())
+    const int index = currentDeviceIndex();
+    if (index < 0)
         return;
     m_navigation->setCurrentRow(overviewRow);
     const DeviceEntry d = m_devices.takeAt(index);
-    m_bus.removeDevice(d.id);
+    d.line->bus()->removeDevice(d.id);
     m_overview->removeTile(d.tile);
     if (d.page) {
         m_pages->removeWidget(d.page);
@@ -687,67 +1103,99 @@ void MainWindow::removeCurrentDevice()
     d.alarms->deleteLater();
     if (d.logger)
         d.logger->deleteLater();
-    delete m_navigation->takeItem(firstDeviceRow + index);
+    rebuildNavigation();
+    if (LineHeader *header = m_headers.value(d.line))
+        header->refresh();
 }
 
 void MainWindow::openScanDialog()
 {
-    if (m_bus.state() != LineState::Connected) {
-        QMessageBox::information(this, tr("Scan"), tr("Connect to a line first."));
+    StationLine *line = m_currentLine;
+    if (!line || line->state() != LineState::Connected) {
+        QMessageBox::information(this, tr("Scan"),
+                                 m_lines.size() > 1 ? tr("Connect line %1 first, or choose a connected line.")
+                                                              .arg(line ? line->name() : QString())
+                                                    : tr("Connect to a line first."));
         return;
     }
-    auto *dialog = new ScanDialog(&m_bus, m_registry, this);
+    auto *dialog = new ScanDialog(line->bus(), m_registry, this);
     dialog->setObjectName(QStringLiteral("scanDialog"));
+    if (m_lines.size() > 1)
+        dialog->setWindowTitle(tr("Scan line %1").arg(line->name()));
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+    connect(dialog, &QDialog::accepted, this, [this, dialog, line = QPointer<StationLine>(line)] {
+        if (!line)
+            return;
         for (const auto &[map, address] : dialog->chosen())
-            addDevice(map, address);
+            addDevice(line, map, address);
     });
     dialog->show();
+}
+
+namespace {
+
+// The settings key of a device's report tag: "ipc300@1", "line2/ipc300@1" with several lines.
+QString tagKey(const QString &device)
+{
+    return QStringLiteral("report/tags/") + device;
+}
+
+} // namespace
+
+int MainWindow::reportDevice(const QString &family, quint8 address) const
+{
+    // The device of the current line first: the same address may be used on two lines.
+    const int index = indexOf(m_currentLine, family, address);
+    return index >= 0 ? index : indexOf(nullptr, family, address);
 }
 
 ReportTitle MainWindow::reportTitle(const QString &family, quint8 address)
 {
     QSettings &s = settings();
+    const int index = reportDevice(family, address);
+    const QString device = index >= 0 ? deviceName(m_devices[index]) : QStringLiteral("%1@%2").arg(family).arg(address);
     return {s.value(QStringLiteral("report/site")).toString(), s.value(QStringLiteral("report/cabinet")).toString(),
-            s.value(QStringLiteral("report/tags/%1@%2").arg(family).arg(address)).toString(),
-            s.value(QStringLiteral("report/engineer")).toString()};
+            s.value(tagKey(device)).toString(), s.value(QStringLiteral("report/engineer")).toString()};
 }
 
 void MainWindow::rememberReportTitle(const QString &family, quint8 address, const ReportTitle &title)
 {
     QSettings &s = settings();
+    const int index = reportDevice(family, address);
+    const QString device = index >= 0 ? deviceName(m_devices[index]) : QStringLiteral("%1@%2").arg(family).arg(address);
     s.setValue(QStringLiteral("report/site"), title.site);
     s.setValue(QStringLiteral("report/cabinet"), title.cabinet);
-    s.setValue(QStringLiteral("report/tags/%1@%2").arg(family).arg(address), title.tag);
+    s.setValue(tagKey(device), title.tag);
     s.setValue(QStringLiteral("report/engineer"), title.engineer);
 }
 
 bool MainWindow::writeReport(const QString &family, quint8 address, const QString &path, const ReportTitle &title,
                              QString *error)
 {
-    for (const DeviceEntry &d : std::as_const(m_devices)) {
-        if (m_bus.deviceMap(d.id)->family != family || m_bus.deviceAddress(d.id) != address)
-            continue;
-        CommissioningReport report(*m_bus.deviceMap(d.id), address,
-                                   [this, id = d.id](const QString &entry) { return m_bus.entryState(id, entry); });
-        const QString device = QStringLiteral("%1@%2").arg(family).arg(address);
-        QList<QJsonObject> writes;
-        for (const QJsonObject &r : std::as_const(m_sessionWrites)) {
-            if (r.value("device").toString() == device)
-                writes << r;
-        }
-        report.setWrites(writes, m_sessionStart);
-        report.setTitle(title);
-        report.setLine(m_bus.settings());
-        report.setSoftware(QStringLiteral("%1 %2").arg(tr("JUMO HMI"), QStringLiteral(JUMO_VERSION)));
-        const ReportWriter::Pages pages{tr("Commissioning report of %1").arg(device), report.pageHeader(),
-                                        report.pageFooter()};
-        return ReportWriter::write(report.html(), path, pages, error);
+    const int index = reportDevice(family, address);
+    if (index < 0) {
+        if (error)
+            *error = tr("no device %1@%2").arg(family).arg(address);
+        return false;
     }
-    if (error)
-        *error = tr("no device %1@%2").arg(family).arg(address);
-    return false;
+    const DeviceEntry &d = m_devices[index];
+    const Bus *bus = d.line->bus();
+    CommissioningReport report(*bus->deviceMap(d.id), address,
+                               [bus, id = d.id](const QString &entry) { return bus->entryState(id, entry); });
+    // As the audit log names it: with its line where there are several.
+    const QString device = deviceName(d);
+    QList<QJsonObject> writes;
+    for (const QJsonObject &r : std::as_const(m_sessionWrites)) {
+        if (r.value("device").toString() == device)
+            writes << r;
+    }
+    report.setWrites(writes, m_sessionStart);
+    report.setTitle(title);
+    report.setLine(d.line->settings());
+    report.setSoftware(QStringLiteral("%1 %2").arg(tr("JUMO HMI"), QStringLiteral(JUMO_VERSION)));
+    const ReportWriter::Pages pages{tr("Commissioning report of %1").arg(device), report.pageHeader(),
+                                    report.pageFooter()};
+    return ReportWriter::write(report.html(), path, pages, error);
 }
 
 DataLogger *MainWindow::dataLogger(DeviceId id)
@@ -759,10 +1207,10 @@ DataLogger *MainWindow::dataLogger(DeviceId id)
     // dialog is closed.
     DeviceEntry &d = m_devices[index];
     if (!d.logger) {
-        d.logger = new DataLogger(&m_bus, this);
+        d.logger = new DataLogger(d.line->bus(), this);
         connect(d.logger, &DataLogger::failed, this, [this, id](const QString &reason) {
-            const auto map = m_bus.deviceMap(id);
-            const QString device = map ? QStringLiteral("%1@%2").arg(map->family).arg(m_bus.deviceAddress(id)) : QString();
+            const int at = indexOf(id);
+            const QString device = at >= 0 ? deviceName(m_devices[at]) : QString();
             showLogFailure(QStringLiteral("data ") + device, tr("Data logging of %1 stopped: %2").arg(device, reason));
             journalLogEvent(device, QStringLiteral("data_logging"), QStringLiteral("Data logging"),
                             QStringLiteral("stopped: %1").arg(reason));
@@ -795,15 +1243,17 @@ void MainWindow::restoreSettings()
     QSettings &s = settings();
     restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(s.value(QStringLiteral("window/state")).toByteArray());
-    m_connectionBar->setSettings(s.value(QStringLiteral("line/port")).toString(),
-                                 s.value(QStringLiteral("line/baud"), 9600).toInt(),
-                                 s.value(QStringLiteral("line/format"), QStringLiteral("8N1")).toString());
-    for (const QString &device : s.value(QStringLiteral("devices")).toStringList()) {
-        const auto map = m_registry.family(device.section(QLatin1Char('@'), 0, 0));
-        bool ok = false;
-        const int address = device.section(QLatin1Char('@'), 1).toInt(&ok);
-        if (map && ok && address >= 1 && address <= 255)
-            addDevice(map, quint8(address));
+    for (const StationSettings::Line &kept : StationSettings::load(s)) {
+        StationLine *line = addLine(kept.name, kept.settings);
+        if (!line)
+            continue;   // a name edited by hand into something unfit, or twice
+        for (const QString &device : kept.devices) {
+            const auto map = m_registry.family(device.section(QLatin1Char('@'), 0, 0));
+            bool ok = false;
+            const int address = device.section(QLatin1Char('@'), 1).toInt(&ok);
+            if (map && ok && address >= 1 && address <= 255)
+                addDevice(line, map, quint8(address));
+        }
     }
 }
 
@@ -815,13 +1265,20 @@ void MainWindow::saveSettings()
     QSettings &s = settings();
     s.setValue(QStringLiteral("window/geometry"), saveGeometry());
     s.setValue(QStringLiteral("window/state"), saveState());
-    s.setValue(QStringLiteral("line/port"), m_connectionBar->port());
-    s.setValue(QStringLiteral("line/baud"), m_connectionBar->baud());
-    s.setValue(QStringLiteral("line/format"), m_connectionBar->format());
-    QStringList devices;
-    for (const DeviceEntry &d : std::as_const(m_devices))
-        devices << QStringLiteral("%1@%2").arg(m_bus.deviceMap(d.id)->family).arg(m_bus.deviceAddress(d.id));
-    s.setValue(QStringLiteral("devices"), devices);
+    // Lines from the command line are for this run: the kept ones stay as they were.
+    if (!m_options.lines.isEmpty())
+        return;
+    takeSettingsFromBar();
+    QList<StationSettings::Line> lines;
+    for (const StationLine *line : std::as_const(m_lines)) {
+        StationSettings::Line kept{line->name(), line->settings(), {}};
+        for (const DeviceEntry &d : std::as_const(m_devices)) {
+            if (d.line == line)
+                kept.devices << line->bus()->deviceName(d.id);
+        }
+        lines << kept;
+    }
+    StationSettings::save(s, lines);
 }
 
 bool MainWindow::event(QEvent *event)

@@ -36,17 +36,72 @@ OverviewPage::OverviewPage(QWidget *parent)
     layout->addWidget(m_scroll);
 }
 
-void OverviewPage::addTile(DeviceTile *tile)
+void OverviewPage::addGroup(QWidget *header)
 {
-    m_tiles << tile;
+    header->setParent(m_inner);
+    header->setVisible(m_headersShown);
+    m_groups << Group{header, {}};
+    relayout(true);
+}
+
+void OverviewPage::removeGroup(QWidget *header)
+{
+    for (qsizetype i = 0; i < m_groups.size(); ++i) {
+        if (m_groups[i].header == header) {
+            for (DeviceTile *tile : std::as_const(m_groups[i].tiles))
+                delete tile;
+            m_groups.removeAt(i);
+            break;
+        }
+    }
+    delete header;
+    relayout(true);
+}
+
+void OverviewPage::setHeadersShown(bool shown)
+{
+    if (shown == m_headersShown)
+        return;
+    m_headersShown = shown;
+    relayout(true);
+}
+
+void OverviewPage::showGroup(QWidget *header)
+{
+    if (header && header->isVisible())
+        m_scroll->ensureWidgetVisible(header, 0, margin);
+}
+
+void OverviewPage::addTile(DeviceTile *tile, QWidget *group)
+{
+    auto it = std::find_if(m_groups.begin(), m_groups.end(), [group](const Group &g) { return g.header == group; });
+    if (it == m_groups.end()) {
+        m_groups.prepend(Group{group, {}});
+        it = m_groups.begin();
+    }
+    it->tiles << tile;
     relayout(true);
 }
 
 void OverviewPage::removeTile(DeviceTile *tile)
 {
-    m_tiles.removeAll(tile);
+    for (Group &g : m_groups)
+        g.tiles.removeAll(tile);
     delete tile;
     relayout(true);
+}
+
+QList<DeviceTile *> OverviewPage::tiles() const
+{
+    QList<DeviceTile *> all;
+    for (const Group &g : m_groups)
+        all << g.tiles;
+    return all;
+}
+
+int OverviewPage::headerHeight(const Group &group) const
+{
+    return m_headersShown && group.header ? group.header->sizeHint().height() : 0;
 }
 
 void OverviewPage::setAlwaysCompact(bool compact)
@@ -71,21 +126,31 @@ bool OverviewPage::event(QEvent *event)
 
 int OverviewPage::columnsFor(DeviceTile::Density density, int width) const
 {
-    if (m_tiles.isEmpty())
+    const QList<DeviceTile *> all = tiles();
+    if (all.isEmpty())
         return 1;
-    const int tileWidth = m_tiles.first()->sizeHintFor(density).width();
+    const int tileWidth = all.first()->sizeHintFor(density).width();
     return std::max(1, (width - 2 * margin + spacing) / (tileWidth + spacing));
 }
 
 int OverviewPage::heightFor(DeviceTile::Density density, int columns) const
 {
-    // Rows are as high as their highest faceplate.
+    // Rows are as high as their highest faceplate; a shown header is a row of its own.
     int height = 2 * margin;
-    for (qsizetype first = 0; first < m_tiles.size(); first += columns) {
-        int row = 0;
-        for (qsizetype i = first; i < std::min(m_tiles.size(), first + columns); ++i)
-            row = std::max(row, m_tiles[i]->sizeHintFor(density).height());
-        height += row + (first ? spacing : 0);
+    bool first = true;
+    for (const Group &g : m_groups) {
+        if (const int header = headerHeight(g)) {
+            height += header + (first ? 0 : spacing);
+            first = false;
+        }
+        const QList<DeviceTile *> &tiles = g.tiles;
+        for (qsizetype start = 0; start < tiles.size(); start += columns) {
+            int row = 0;
+            for (qsizetype i = start; i < std::min(tiles.size(), start + columns); ++i)
+                row = std::max(row, tiles[i]->sizeHintFor(density).height());
+            height += row + (first ? 0 : spacing);
+            first = false;
+        }
     }
     return height;
 }
@@ -109,13 +174,22 @@ void OverviewPage::relayout(bool force)
         m_grid->setColumnStretch(c, 0);
     for (int r = 0; r < m_grid->rowCount(); ++r)
         m_grid->setRowStretch(r, 0);
-    for (qsizetype i = 0; i < m_tiles.size(); ++i) {
-        m_tiles[i]->setDensity(density);
-        m_grid->addWidget(m_tiles[i], int(i) / columns, int(i) % columns, Qt::AlignTop);
+    int row = 0;
+    for (const Group &g : std::as_const(m_groups)) {
+        if (g.header) {
+            g.header->setVisible(m_headersShown);
+            if (m_headersShown)
+                m_grid->addWidget(g.header, row++, 0, 1, columns);
+        }
+        for (qsizetype i = 0; i < g.tiles.size(); ++i) {
+            g.tiles[i]->setDensity(density);
+            m_grid->addWidget(g.tiles[i], row + int(i) / columns, int(i) % columns, Qt::AlignTop);
+        }
+        row += int(g.tiles.size() + columns - 1) / columns;
     }
     for (int c = 0; c < columns; ++c)
         m_grid->setColumnStretch(c, 1);
-    m_grid->setRowStretch(int(m_tiles.size() + columns - 1) / columns, 1);
+    m_grid->setRowStretch(row, 1);
 }
 
 } // namespace jumo

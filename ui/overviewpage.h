@@ -1,5 +1,6 @@
 // The control-room overview: one faceplate per device, as many columns as the width
-// holds. It turns compact by itself when the comfortable faceplates would need scrolling
+// holds, grouped by line under a header per line (shown while there are several lines).
+// It turns compact by itself when the comfortable faceplates would need scrolling
 // (31 devices on a 1920x1080 screen), or always when the user asks for it.
 #pragma once
 
@@ -19,7 +20,17 @@ class OverviewPage : public QWidget
 public:
     explicit OverviewPage(QWidget *parent = nullptr);
 
-    void addTile(DeviceTile *tile);
+    // A group's header (a line's); its faceplates follow it, groups in the order added.
+    void addGroup(QWidget *header);
+    // Deletes the header; the group's faceplates must be gone before.
+    void removeGroup(QWidget *header);
+    // Headers take a row each while shown (several lines), none while hidden.
+    void setHeadersShown(bool shown);
+    bool headersShown() const { return m_headersShown; }
+    // Scrolls the group's header into view.
+    void showGroup(QWidget *header);
+    // Adds the faceplate at the end of the header's group (nullptr: a group without header).
+    void addTile(DeviceTile *tile, QWidget *group = nullptr);
     void removeTile(DeviceTile *tile);
     void setAlwaysCompact(bool compact);
     bool alwaysCompact() const { return m_alwaysCompact; }
@@ -40,7 +51,16 @@ private:
     QScrollArea *m_scroll;
     QWidget *m_inner;
     QGridLayout *m_grid;
-    QList<DeviceTile *> m_tiles;
+    struct Group
+    {
+        QWidget *header = nullptr;
+        QList<DeviceTile *> tiles;
+    };
+    QList<DeviceTile *> tiles() const;
+    int headerHeight(const Group &group) const;
+
+    QList<Group> m_groups;
+    bool m_headersShown = false;
     bool m_alwaysCompact = false;
     DeviceTile::Density m_density = DeviceTile::Density::Comfortable;
     int m_columns = 0;

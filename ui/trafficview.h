@@ -1,5 +1,5 @@
-// The traffic of one line: request and reply frames in hex with time, round trip and
-// errors (the newest few hundred), and the statistics of each device.
+// The traffic of the station's lines: request and reply frames in hex with time, line,
+// round trip and errors (the newest few hundred), and the statistics of each device.
 #pragma once
 
 #include "bus/bus.h"
@@ -12,18 +12,23 @@ class QTimer;
 
 namespace jumo {
 
+class StationLine;
+
 class TrafficView : public QWidget
 {
     Q_OBJECT
 
 public:
-    explicit TrafficView(Bus *bus, QWidget *parent = nullptr);
+    explicit TrafficView(QWidget *parent = nullptr);
+
+    void addLine(StationLine *line);
+    void removeLine(StationLine *line);
 
 private:
-    void append(const TrafficRecord &record);
+    void append(const StationLine *line, const TrafficRecord &record);
     void refreshStatistics();
 
-    Bus *m_bus;
+    QList<StationLine *> m_lines;
     QPlainTextEdit *m_log;
     QTableWidget *m_statistics;
     QTimer *m_timer;

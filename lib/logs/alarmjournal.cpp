@@ -32,7 +32,7 @@ void AlarmJournal::onConditionChanged(DeviceId device, const DeviceCondition &co
         state = QStringLiteral("stopped: line closed");
     if (state.isEmpty())
         return;
-    m_log->append(QJsonObject{{"device", QStringLiteral("%1@%2").arg(map->family).arg(m_devices->deviceAddress(device))},
+    m_log->append(QJsonObject{{"device", m_prefix + QStringLiteral("%1@%2").arg(map->family).arg(m_devices->deviceAddress(device))},
                               {"register", QString()},
                               {"bit", QString()},
                               {"id", QStringLiteral("communication")},
@@ -52,7 +52,7 @@ void AlarmJournal::onEntriesUpdated(DeviceId device, const QStringList &ids)
     const auto map = m_devices->deviceMap(device);
     if (!map)
         return;
-    const QString deviceName = QStringLiteral("%1@%2").arg(map->family).arg(m_devices->deviceAddress(device));
+    const QString deviceName = m_prefix + QStringLiteral("%1@%2").arg(map->family).arg(m_devices->deviceAddress(device));
     for (const QString &id : ids) {
         const RegisterEntry *e = map->entry(id);
         if (!e || e->type != ValueType::Bitfield || e->isCommand())
@@ -60,7 +60,8 @@ void AlarmJournal::onEntriesUpdated(DeviceId device, const QStringList &ids)
         const EntryState *s = m_devices->entryState(device, id);
         if (!s || !s->isCurrent())
             continue;   // no reading, no event: a lost reply changes no bit
-        const QString key = deviceName + QLatin1Char('/') + id;
+        // By id, not name: the name changes when a second line joins the station.
+        const QString key = QString::number(device) + QLatin1Char('/') + id;
         const bool firstSight = !m_last.contains(key);
         const quint32 before = m_last.value(key);
         const quint32 now = s->value.raw;

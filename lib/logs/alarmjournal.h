@@ -18,6 +18,9 @@ public:
     AlarmJournal(const DeviceSource *devices, EventLog *log, QObject *parent = nullptr);
 
     static QStringList columns();
+    // Put before each device's name ("line2/" makes "line2/ipc300@1") where several lines
+    // of one station share the journal; empty (the default): "ipc300@1".
+    void setDevicePrefix(const QString &prefix) { m_prefix = prefix; }
 
 private:
     void onEntriesUpdated(DeviceId device, const QStringList &ids);
@@ -25,7 +28,8 @@ private:
 
     const DeviceSource *m_devices;
     EventLog *m_log;
-    QHash<QString, quint32> m_last;   // "device/entry" -> raw value last seen
+    QString m_prefix;
+    QHash<QString, quint32> m_last;   // "device id/entry" -> raw value last seen
     QHash<DeviceId, DeviceCondition::State> m_condition;
 };
 

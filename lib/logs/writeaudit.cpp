@@ -12,7 +12,7 @@ WriteAudit::WriteAudit(Bus *bus, EventLog *log, QObject *parent) : QObject(paren
         const auto it = m_pending.constFind(ticket);
         if (it == m_pending.cend())
             return;
-        m_log->append(QJsonObject{{"device", it->device},
+        m_log->append(QJsonObject{{"device", m_prefix + it->device},
                                   {"entry", it->entry},
                                   {"old", it->previous},
                                   {"new", it->value},

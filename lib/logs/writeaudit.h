@@ -17,6 +17,9 @@ public:
     WriteAudit(Bus *bus, EventLog *log, QObject *parent = nullptr);
 
     static QStringList columns();
+    // Put before each device's name ("line2/" makes "line2/ipc300@1") where several lines
+    // of one station share the log; empty (the default): "ipc300@1".
+    void setDevicePrefix(const QString &prefix) { m_prefix = prefix; }
 
 private:
     struct Pending
@@ -28,6 +31,7 @@ private:
     };
 
     EventLog *m_log;
+    QString m_prefix;
     QHash<int, Pending> m_pending;
 };
 

@@ -24,6 +24,8 @@ public:
     QString deviceEnd() const { return m_deviceEnd; }   // where the simulator listens
     QString masterEnd() const { return m_masterEnd; }   // where the client connects
     bool isReady() const { return m_ready; }
+    // socat's process id while it runs (tests pull a line by ending it), else 0.
+    qint64 processId() const { return m_socat.processId(); }
 
 signals:
     // socat ended after the pair was ready: both ends are gone.

@@ -80,7 +80,8 @@ void tst_ConnectionBar::hmiRemembersTheStableName()
         QCOMPARE(window.connectionBar()->port(), m_link);
         window.close();
     }
-    QCOMPARE(QSettings(options.settingsFile, QSettings::IniFormat).value("line/port").toString(), m_link);
+    // Kept as the first line's address (the one-line keys become line "line1").
+    QCOMPARE(QSettings(options.settingsFile, QSettings::IniFormat).value("lines/1/port").toString(), m_link);
     MainWindow again(registry, options);
     QCOMPARE(again.connectionBar()->port(), m_link);
 }

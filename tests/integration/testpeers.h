@@ -51,6 +51,7 @@ public:
     }
     QString deviceEnd() const { return m_pty.deviceEnd(); }
     QString masterEnd() const { return m_pty.masterEnd(); }
+    qint64 socatPid() const { return m_pty.processId(); }
 
 private:
     QTemporaryDir m_dir;

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# jumo-hmi refuses lines given wrongly on its command line (exit code 2, the reason named,
+# before a window opens): a bad --line spec, a name twice, --line with --port, an unknown
+# family in --device, a station file that is not there.
+set -uo pipefail
+hmi=$1
+export QT_QPA_PLATFORM=offscreen
+HOME=$(mktemp -d)
+export HOME
+fail=0
+check() {   # expected message part, arguments...
+    local expected=$1
+    shift
+    out=$(timeout 20 "$hmi" "$@" 2>&1 >/dev/null)
+    code=$?
+    if [ "$code" -ne 2 ] || ! grep -qF -- "$expected" <<<"$out"; then
+        echo "FAIL: $* gave exit code $code: $out"
+        fail=1
+    fi
+}
+check "'name' must be 1..32" --line "/tmp/a,name=bad%name"
+check "give the lines one way" --line /tmp/a --port /tmp/b
+check "the line name 'x' is used by lines[0] too" --line /tmp/a,name=x --line /tmp/b,name=x
+check "unknown family 'nope'" --line /tmp/a --device nope@1
+check "/nonexistent/station.json" --station /nonexistent/station.json
+rm -rf "$HOME"
+[ "$fail" -eq 0 ] && echo "jumo-hmi refuses lines given wrongly."
+exit "$fail"
