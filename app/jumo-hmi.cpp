@@ -47,8 +47,10 @@ int main(int argc, char *argv[])
                       QApplication::translate("main", "With --show: open this tab of the device page (0 = live values)."),
                       QStringLiteral("index")});
     parser.addOption({QStringLiteral("port"),
-                      QApplication::translate("main", "Connect to this serial port at start (with --baud, --format, --device)."),
-                      QStringLiteral("path")});
+                      QApplication::translate("main", "Connect to this line at start: a serial port, tcp://HOST[:PORT] "
+                                                             "(a Modbus TCP gateway) or rtu+tcp://HOST:PORT (a serial "
+                                                             "device server); with --baud, --format, --device."),
+                      QStringLiteral("address")});
     parser.addOption({QStringLiteral("baud"), QApplication::translate("main", "Baud rate for --port (default 9600)."),
                       QStringLiteral("rate"), QStringLiteral("9600")});
     parser.addOption({QStringLiteral("format"), QApplication::translate("main", "Data format for --port (default 8N1)."),

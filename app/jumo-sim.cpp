@@ -4,14 +4,44 @@
 #include "sim/ptypair.h"
 #include "quitonsignal.h"
 #include "sim/simulatorline.h"
+#include "sim/simulatorserver.h"
 #include "protocol/translations.h"
 #include "jumoversion.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QHostAddress>
 #include <QTextStream>
 
 #include <cstdio>
+#include <memory>
+
+namespace {
+
+// "[HOST:]PORT" -> address and port; a bare port listens on every interface.
+bool parseListen(const QString &text, QHostAddress *address, quint16 *port)
+{
+    const qsizetype colon = text.lastIndexOf(QLatin1Char(':'));
+    QString host = colon >= 0 ? text.left(colon) : QString();
+    if (host.startsWith(QLatin1Char('[')) && host.endsWith(QLatin1Char(']')))
+        host = host.mid(1, host.size() - 2);
+    bool ok = false;
+    const uint value = text.mid(colon + 1).toUInt(&ok);
+    if (!ok || value > 65535)
+        return false;
+    *port = quint16(value);
+    if (host.isEmpty() || host == QLatin1String("*")) {
+        *address = QHostAddress::Any;
+        return true;
+    }
+    if (host == QLatin1String("localhost")) {
+        *address = QHostAddress::LocalHost;
+        return true;
+    }
+    return address->setAddress(host);
+}
+
+} // namespace
 
 int main(int argc, char *argv[])
 {
@@ -25,7 +55,8 @@ int main(int argc, char *argv[])
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QCoreApplication::translate(
-            "main", "Simulated JUMO devices on a serial line. DEVICE is FAMILY@ADDRESS, e.g. ipc300@1."));
+            "main", "Simulated JUMO devices on a serial line, or behind TCP as a Modbus TCP gateway or a serial "
+                    "device server. DEVICE is FAMILY@ADDRESS, e.g. ipc300@1."));
     parser.addHelpOption();
     parser.addVersionOption();
     parser.addOption({QStringLiteral("port"), QCoreApplication::translate("main", "Serial port to serve."),
@@ -34,6 +65,14 @@ int main(int argc, char *argv[])
                       QCoreApplication::translate("main", "Make a pseudo-terminal pair in this folder (needs socat); "
                                                           "clients connect to FOLDER/master."),
                       QStringLiteral("folder")});
+    parser.addOption({QStringLiteral("tcp"),
+                      QCoreApplication::translate("main", "Be a Modbus TCP gateway listening on [HOST:]PORT (port 0: "
+                                                          "any free one); clients connect to tcp://HOST:PORT."),
+                      QStringLiteral("[host:]port")});
+    parser.addOption({QStringLiteral("rtu-tcp"),
+                      QCoreApplication::translate("main", "Be a serial device server (raw RTU frames over TCP) listening "
+                                                          "on [HOST:]PORT; clients connect to rtu+tcp://HOST:PORT."),
+                      QStringLiteral("[host:]port")});
     parser.addOption({QStringLiteral("baud"), QCoreApplication::translate("main", "Baud rate (default 9600)."),
                       QStringLiteral("rate"), QStringLiteral("9600")});
     parser.addOption({QStringLiteral("format"), QCoreApplication::translate("main", "Data format (default 8N1)."),
@@ -56,8 +95,10 @@ int main(int argc, char *argv[])
         err << QCoreApplication::translate("main", "unsupported baud rate or data format") << Qt::endl;
         return 2;
     }
-    if (parser.isSet(QStringLiteral("port")) == parser.isSet(QStringLiteral("pty"))) {
-        err << QCoreApplication::translate("main", "give exactly one of --port and --pty") << Qt::endl;
+    const int places = int(parser.isSet(QStringLiteral("port"))) + int(parser.isSet(QStringLiteral("pty")))
+            + int(parser.isSet(QStringLiteral("tcp"))) + int(parser.isSet(QStringLiteral("rtu-tcp")));
+    if (places != 1) {
+        err << QCoreApplication::translate("main", "give exactly one of --port, --pty, --tcp and --rtu-tcp") << Qt::endl;
         return 2;
     }
     const jumo::FamilyRegistry registry = jumo::FamilyRegistry::loadDefault();
@@ -104,7 +145,35 @@ int main(int argc, char *argv[])
             << Qt::endl;
     };
     jumo::PtyPair pty;
-    if (parser.isSet(QStringLiteral("pty"))) {
+    std::unique_ptr<jumo::SimulatorServer> server;
+    if (parser.isSet(QStringLiteral("tcp")) || parser.isSet(QStringLiteral("rtu-tcp"))) {
+        const bool gateway = parser.isSet(QStringLiteral("tcp"));
+        const QString listen = parser.value(gateway ? QStringLiteral("tcp") : QStringLiteral("rtu-tcp"));
+        QHostAddress address;
+        quint16 port = 0;
+        if (!parseListen(listen, &address, &port)) {
+            err << QCoreApplication::translate("main", "'%1' is not [HOST:]PORT").arg(listen) << Qt::endl;
+            return 2;
+        }
+        line.setFormat(*format);
+        server = std::make_unique<jumo::SimulatorServer>(
+                &line, gateway ? jumo::SimulatorServer::Mode::ModbusTcp : jumo::SimulatorServer::Mode::RtuOverTcp);
+        QString error;
+        if (!server->listen(address, port, &error)) {
+            err << QCoreApplication::translate("main", "cannot listen on %1: %2").arg(listen, error) << Qt::endl;
+            return 1;
+        }
+        QString host = address == QHostAddress::Any ? QStringLiteral("127.0.0.1") : address.toString();
+        if (host.contains(QLatin1Char(':')))
+            host = QStringLiteral("[%1]").arg(host);
+        const QString url = QStringLiteral("%1://%2:%3")
+                                    .arg(gateway ? QStringLiteral("tcp") : QStringLiteral("rtu+tcp"), host)
+                                    .arg(server->port());
+        out << QCoreApplication::translate("main", "serving %n device(s) on %1", nullptr, int(line.devices().size()))
+                        .arg(url)
+            << Qt::endl;
+        out << QCoreApplication::translate("main", "connect to %1").arg(url) << Qt::endl;
+    } else if (parser.isSet(QStringLiteral("pty"))) {
         QObject::connect(&pty, &jumo::PtyPair::ready, &app, [&] {
             serve(pty.deviceEnd());
             out << QCoreApplication::translate("main", "connect to %1").arg(pty.masterEnd()) << Qt::endl;

@@ -158,7 +158,7 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::BroadcastGate</name>
     <message>
-        <location filename="../app/cli/broadcastgate.cpp" line="+24"/>
+        <location filename="../app/cli/broadcastgate.cpp" line="+25"/>
         <source>For a broadcast: scan addresses %1..%2 first and send only if every device found is of the family; it is read back from them unless --verify names some.</source>
         <translation>Für einen Broadcast: zuerst die Adressen %1..%2 absuchen und nur senden, wenn jedes gefundene Gerät zur Familie gehört; zurückgelesen wird von ihnen, sofern --verify keine nennt.</translation>
     </message>
@@ -188,7 +188,12 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>ein Broadcast wird nicht beantwortet: nennen Sie mit --verify die Geräte, von denen er zurückgelesen wird</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+13"/>
+        <source>no broadcast through a Modbus TCP gateway: what a gateway makes of address 0 differs from gateway to gateway; write to each device instead</source>
+        <translation>kein Broadcast über ein Modbus-TCP-Gateway: was ein Gateway mit Adresse 0 macht, ist von Gateway zu Gateway verschieden; schreiben Sie stattdessen jedes Gerät einzeln</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>the user stated that every device on the line is a %1 (--line-has-only %1)</source>
         <translation>der Benutzer hat erklärt, dass jedes Gerät an der Leitung ein %1 ist (--line-has-only %1)</translation>
     </message>
@@ -211,7 +216,7 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::Bus</name>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+88"/>
+        <location filename="../lib/bus/bus.cpp" line="+90"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
@@ -223,18 +228,18 @@ Handbuch %6: &quot;%7&quot;</translation>
     </message>
     <message>
         <location line="-105"/>
-        <location line="+158"/>
+        <location line="+167"/>
         <source>unknown device</source>
         <translation>unbekanntes Gerät</translation>
     </message>
     <message>
-        <location line="-154"/>
-        <location line="+161"/>
+        <location line="-163"/>
+        <location line="+170"/>
         <source>&apos;%1&apos; is not an entry of %2</source>
         <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="-156"/>
         <source>not written: %1</source>
         <translation>nicht geschrieben: %1</translation>
     </message>
@@ -257,12 +262,17 @@ Handbuch %6: &quot;%7&quot;</translation>
     <message>
         <location filename="../lib/bus/requestdesk.cpp" line="+4"/>
         <location line="+31"/>
-        <location line="+61"/>
+        <location line="+70"/>
         <source>not written: the line is not connected</source>
         <translation>nicht geschrieben: Die Leitung ist nicht verbunden</translation>
     </message>
     <message>
-        <location line="-29"/>
+        <location line="-39"/>
+        <source>not broadcast: a Modbus TCP gateway&apos;s handling of address 0 differs from gateway to gateway; write to each device instead</source>
+        <translation>kein Broadcast: was ein Modbus-TCP-Gateway mit Adresse 0 macht, ist von Gateway zu Gateway verschieden; schreiben Sie stattdessen jedes Gerät einzeln</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>not broadcast: the line also has a %1 device at address %2, which would take the same words as something else</source>
         <translation>kein Broadcast: an der Leitung hängt auch ein Gerät der Familie %1 an Adresse %2, das dieselben Wörter als etwas anderes übernehmen würde</translation>
     </message>
@@ -297,7 +307,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>nicht gehalten: %1 ist nicht als %2 bestätigt</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+280"/>
+        <location filename="../lib/bus/bus.cpp" line="+283"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
@@ -815,17 +825,30 @@ für ein Gerät öffnet nur dessen Leitung:
     <name>jumo::ConnectionBar</name>
     <message>
         <location filename="../ui/connectionbar.cpp" line="+21"/>
-        <location line="+112"/>
+        <location line="+117"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-101"/>
-        <source>/dev/ttyUSB0</source>
-        <translation>/dev/ttyUSB0</translation>
+        <location line="-106"/>
+        <source>/dev/ttyUSB0 or tcp://HOST</source>
+        <translation>/dev/ttyUSB0 oder tcp://HOST</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+1"/>
+        <source>The line: a serial port (listed, or a typed path);
+tcp://HOST[:PORT] for a Modbus TCP gateway (port 502 by default,
+the device address is the unit id);
+rtu+tcp://HOST:PORT for RTU frames through a serial device server.
+Behind a gateway, baud and format are those of its serial side.</source>
+        <translation>Die Leitung: eine serielle Schnittstelle (aufgelistet oder als Pfad eingegeben);
+tcp://HOST[:PORT] für ein Modbus-TCP-Gateway (Port 502, wenn keiner angegeben ist,
+die Geräteadresse ist die Unit-ID);
+rtu+tcp://HOST:PORT für RTU-Telegramme über einen seriellen Geräteserver.
+Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Refresh</source>
         <translation>Aktualisieren</translation>
     </message>
@@ -1601,24 +1624,77 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
 </context>
 <context>
+    <name>jumo::LineAddress</name>
+    <message>
+        <location filename="../lib/bus/lineaddress.cpp" line="+19"/>
+        <source>no line address: give a serial port, tcp://HOST[:PORT] or rtu+tcp://HOST:PORT</source>
+        <translation>keine Leitungsadresse: geben Sie eine serielle Schnittstelle, tcp://HOST[:PORT] oder rtu+tcp://HOST:PORT an</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>unknown line address scheme &apos;%1://&apos; in &apos;%2&apos;: use tcp://HOST[:PORT] (Modbus TCP) or rtu+tcp://HOST:PORT (RTU over TCP)</source>
+        <translation>unbekanntes Schema &apos;%1://&apos; der Leitungsadresse &apos;%2&apos;: verwenden Sie tcp://HOST[:PORT] (Modbus TCP) oder rtu+tcp://HOST:PORT (RTU über TCP)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&apos;%1&apos; has &apos;%2&apos; after the port: a line address is only HOST and PORT</source>
+        <translation>&apos;%1&apos; hat &apos;%2&apos; nach dem Port: eine Leitungsadresse besteht nur aus HOST und PORT</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1&apos;: user names are not part of a line address</source>
+        <translation>&apos;%1&apos;: Benutzernamen gehören nicht in eine Leitungsadresse</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&apos;%1&apos;: an IPv6 address in brackets lacks its &apos;]&apos;</source>
+        <translation>&apos;%1&apos;: einer IPv6-Adresse in Klammern fehlt ihre &apos;]&apos;</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;%1&apos;: after &apos;]&apos; only &apos;:PORT&apos; may follow</source>
+        <translation>&apos;%1&apos;: nach &apos;]&apos; darf nur &apos;:PORT&apos; folgen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&apos;%1&apos;: write an IPv6 address in brackets, e.g. tcp://[::1]:502</source>
+        <translation>&apos;%1&apos;: schreiben Sie eine IPv6-Adresse in Klammern, z. B. tcp://[::1]:502</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&apos;%1&apos; names no host</source>
+        <translation>&apos;%1&apos; nennt keinen Host</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1&apos;: &apos;%2&apos; is not a host name or address</source>
+        <translation>&apos;%1&apos;: &apos;%2&apos; ist kein Hostname und keine Adresse</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1&apos; names no port: a serial device server has no standard port, give rtu+tcp://HOST:PORT</source>
+        <translation>&apos;%1&apos; nennt keinen Port: ein serieller Geräteserver hat keinen Standardport, geben Sie rtu+tcp://HOST:PORT an</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&apos;%1&apos; has &apos;:&apos; but no port after it</source>
+        <translation>&apos;%1&apos; hat &apos;:&apos;, aber keinen Port danach</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1&apos;: the port must be a number 1..65535, not &apos;%2&apos;</source>
+        <translation>&apos;%1&apos;: der Port muss eine Zahl von 1 bis 65535 sein, nicht &apos;%2&apos;</translation>
+    </message>
+</context>
+<context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+98"/>
+        <location filename="../app/cli/linecommands.cpp" line="+100"/>
         <source>the audit log did not take a record: %1</source>
         <translation>das Audit-Protokoll hat einen Eintrag nicht aufgenommen: %1</translation>
     </message>
     <message>
-        <location line="+37"/>
-        <source>Serial port of the one line: its /dev/serial/by-id name, which &apos;jumoctl ports&apos; lists, or /dev/ttyUSB0, say.</source>
-        <translation>Serielle Schnittstelle der einen Leitung: ihr /dev/serial/by-id-Name, den &apos;jumoctl ports&apos; auflistet, oder etwa /dev/ttyUSB0.</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>path</source>
-        <translation>Pfad</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+47"/>
         <source>spec</source>
         <translation>Angabe</translation>
     </message>
@@ -1633,12 +1709,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Datei</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Baud rate: 4800, 9600, 19200 or 38400 (default 9600).</source>
-        <translation>Baudrate: 4800, 9600, 19200 oder 38400 (Standard 9600).</translation>
-    </message>
-    <message>
-        <location line="+0"/>
+        <location line="+4"/>
         <source>rate</source>
         <translation>Rate</translation>
     </message>
@@ -1660,12 +1731,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <message>
         <location line="+0"/>
         <location line="+2"/>
-        <location line="+722"/>
+        <location line="+723"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-722"/>
+        <location line="-723"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
@@ -1676,12 +1747,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+722"/>
+        <location line="+723"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-719"/>
+        <location line="-720"/>
         <source>Never write to any line (control-room mode; the system configuration can set it for everyone, a station file for one line).</source>
         <translation>Auf keine Leitung schreiben (Leitwarten-Modus; die Systemkonfiguration kann ihn für alle festlegen, eine Stationsdatei für eine Leitung).</translation>
     </message>
@@ -1721,7 +1792,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>%1: die Station hat keine Leitungen</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>give the line: --port PATH, --line SPEC (once per line) or --station FILE</source>
         <translation>die Leitung angeben: --port PATH, --line SPEC (je Leitung einmal) oder --station FILE</translation>
     </message>
@@ -1822,7 +1893,8 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Erste Adresse (Standard 1).</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-351"/>
+        <location line="+351"/>
         <location line="+1"/>
         <source>address</source>
         <translation>Adresse</translation>
@@ -1994,17 +2066,27 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Name</translation>
     </message>
     <message>
-        <location line="-1107"/>
+        <location line="-1108"/>
         <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
         <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
     </message>
     <message>
-        <location line="-22"/>
+        <location line="-31"/>
+        <source>The one line: a serial port (its /dev/serial/by-id name, which &apos;jumoctl ports&apos; lists, or /dev/ttyUSB0, say), tcp://HOST[:PORT] for a Modbus TCP gateway (port 502 by default; the device address is the unit id) or rtu+tcp://HOST:PORT for raw RTU through a serial device server.</source>
+        <translation>Die eine Leitung: eine serielle Schnittstelle (ihr Name unter /dev/serial/by-id, den &apos;jumoctl ports&apos; auflistet, oder etwa /dev/ttyUSB0), tcp://HOST[:PORT] für ein Modbus-TCP-Gateway (Port 502, wenn keiner angegeben ist; die Geräteadresse ist die Unit-ID) oder rtu+tcp://HOST:PORT für reines RTU über einen seriellen Geräteserver.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>A line, given once per line: its ADDRESS, then as needed ,name=NAME ,baud=N ,format=8N1 ,timeout=MS ,min-response=MS ,retries=N ,read-only, e.g. /dev/ttyUSB0,name=a,baud=19200. Unnamed lines are line1, line2, ... The options below are the defaults of every --line.</source>
         <translation>Eine Leitung, je Leitung einmal angegeben: ihre ADDRESS, dann nach Bedarf ,name=NAME ,baud=N ,format=8N1 ,timeout=MS ,min-response=MS ,retries=N ,read-only, z. B. /dev/ttyUSB0,name=a,baud=19200. Leitungen ohne Namen heißen line1, line2, ... Die folgenden Optionen sind die Vorgaben jeder --line.</translation>
     </message>
     <message>
-        <location line="+342"/>
+        <location line="+8"/>
+        <source>Baud rate: 4800, 9600, 19200 or 38400 (default 9600); behind a gateway, its serial side&apos;s (it sets the timing).</source>
+        <translation>Baudrate: 4800, 9600, 19200 oder 38400 (Standard 9600); hinter einem Gateway die seiner seriellen Seite (sie bestimmt das Zeitverhalten).</translation>
+    </message>
+    <message>
+        <location line="+338"/>
         <source>Finds devices on the line and names their family; with several lines (--line, --station), on every line at once.</source>
         <translation>Sucht Geräte an der Leitung und benennt ihre Gerätefamilie; bei mehreren Leitungen (--line, --station) an allen Leitungen gleichzeitig.</translation>
     </message>
@@ -2282,12 +2364,13 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 <context>
     <name>jumo::LineConnection</name>
     <message>
-        <location filename="../lib/bus/lineconnection.cpp" line="+42"/>
+        <location filename="../lib/bus/lineconnection.cpp" line="+93"/>
         <source>cannot open %1: %2</source>
         <translation>%1 kann nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+44"/>
+        <location line="+6"/>
         <source>line lost: %1</source>
         <translation>Leitung verloren: %1</translation>
     </message>
@@ -4892,7 +4975,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RegisterMap</name>
     <message>
-        <location filename="../lib/protocol/registermap.cpp" line="+196"/>
+        <location filename="../lib/protocol/registermap.cpp" line="+198"/>
+        <source>the gateway&apos;s path to the device is unavailable (sent by the gateway, the request did not reach the device)</source>
+        <translation>der Weg des Gateways zum Gerät ist nicht verfügbar (vom Gateway gesendet, die Anfrage hat das Gerät nicht erreicht)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the device behind the gateway did not respond (sent by the gateway)</source>
+        <translation>das Gerät hinter dem Gateway hat nicht geantwortet (vom Gateway gesendet)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>exception %1 (not documented for this family)</source>
         <translation>Exception-Code %1 (für diese Gerätefamilie nicht dokumentiert)</translation>
     </message>
@@ -5045,6 +5138,54 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location filename="../ui/reportwriter.cpp" line="+169"/>
         <source>Page %1 of %2</source>
         <translation>Seite %1 von %2</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::RtuTcpTransport</name>
+    <message>
+        <location filename="../lib/bus/rtutcptransport.cpp" line="+36"/>
+        <source>the device server %1 did not accept a connection within %2 s</source>
+        <translation>der Geräteserver %1 hat innerhalb von %2 s keine Verbindung angenommen</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>the line was closed</source>
+        <translation>die Leitung wurde geschlossen</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>not connected to the device server %1</source>
+        <translation>nicht mit dem Geräteserver %1 verbunden</translation>
+    </message>
+    <message>
+        <location line="+66"/>
+        <source>no reply within %1 ms</source>
+        <translation>keine Antwort innerhalb von %1 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no complete reply within %1 ms (%2 byte(s) received: %3)</source>
+        <translation>keine vollständige Antwort innerhalb von %1 ms (%2 Byte empfangen: %3)</translation>
+    </message>
+    <message>
+        <location line="+64"/>
+        <source>exception %1</source>
+        <translation>Ausnahme %1</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>the device server %1 closed the connection</source>
+        <translation>der Geräteserver %1 hat die Verbindung geschlossen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>connection to the device server %1 lost: %2</source>
+        <translation>Verbindung zum Geräteserver %1 verloren: %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no connection to the device server %1: %2</source>
+        <translation>keine Verbindung zum Geräteserver %1: %2</translation>
     </message>
 </context>
 <context>
@@ -5239,7 +5380,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::StationConfig</name>
     <message>
-        <location filename="../lib/bus/stationconfig.cpp" line="+48"/>
+        <location filename="../lib/bus/stationconfig.cpp" line="+47"/>
         <source>the line address (serial port or URL) is empty</source>
         <translation>die Adresse der Leitung (serielle Schnittstelle oder URL) ist leer</translation>
     </message>
@@ -5373,6 +5514,50 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+2"/>
         <source>&apos;%1&apos;: which line? The station has the lines %2: name it as LINE/%1, e.g. %3/%1</source>
         <translation>&apos;%1&apos;: welche Leitung? Die Station hat die Leitungen %2: als LINE/%1 angeben, z. B. %3/%1</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::TcpTransport</name>
+    <message>
+        <location filename="../lib/bus/tcptransport.cpp" line="+21"/>
+        <source>the gateway %1 did not accept a connection within %2 s</source>
+        <translation>das Gateway %1 hat innerhalb von %2 s keine Verbindung angenommen</translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>the line was closed</source>
+        <translation>die Leitung wurde geschlossen</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>broadcasts are not sent through a Modbus TCP gateway</source>
+        <translation>über ein Modbus-TCP-Gateway werden keine Broadcasts gesendet</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>not connected to the gateway %1</source>
+        <translation>nicht mit dem Gateway %1 verbunden</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>the connection was refused or closed</source>
+        <translation>die Verbindung wurde abgelehnt oder geschlossen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the gateway %1 closed the connection</source>
+        <translation>das Gateway %1 hat die Verbindung geschlossen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+11"/>
+        <source>no connection to the gateway %1: %2</source>
+        <translation>keine Verbindung zum Gateway %1: %2</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>connection to the gateway %1 lost: %2</source>
+        <translation>Verbindung zum Gateway %1 verloren: %2</translation>
     </message>
 </context>
 <context>
@@ -5779,12 +5964,22 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+2"/>
-        <location line="+54"/>
+        <location line="+76"/>
         <source>exception %1, %2</source>
         <translation>Exception %1, %2</translation>
     </message>
     <message>
-        <location line="-37"/>
+        <location line="-61"/>
+        <source>not written: the gateway could not reach the device (exception %1, %2); nothing was changed</source>
+        <translation>nicht geschrieben: das Gateway konnte das Gerät nicht erreichen (Ausnahme %1, %2); nichts wurde geändert</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>the gateway got no answer from the device (exception %1, %2): the write may or may not have reached it; it is not sent again, check the device</source>
+        <translation>das Gateway hat vom Gerät keine Antwort erhalten (Ausnahme %1, %2): der Schreibvorgang hat es vielleicht erreicht, vielleicht nicht; er wird nicht wiederholt, prüfen Sie das Gerät</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>the line was lost while the write was under way: its outcome is unknown, check the device</source>
         <translation>die Leitung ging während des Schreibens verloren: Das Ergebnis ist unbekannt, prüfen Sie das Gerät</translation>
     </message>
@@ -9389,11 +9584,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+3"/>
-        <source>Connect to this serial port at start (with --baud, --format, --device).</source>
-        <translation>Beim Start mit dieser seriellen Schnittstelle verbinden (mit --baud, --format, --device).</translation>
+        <source>Connect to this line at start: a serial port, tcp://HOST[:PORT] (a Modbus TCP gateway) or rtu+tcp://HOST:PORT (a serial device server); with --baud, --format, --device.</source>
+        <translation>Beim Start mit dieser Leitung verbinden: eine serielle Schnittstelle, tcp://HOST[:PORT] (ein Modbus-TCP-Gateway) oder rtu+tcp://HOST:PORT (ein serieller Geräteserver); mit --baud, --format, --device.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>Baud rate for --port (default 9600).</source>
         <translation>Baudrate für --port (Standard 9600).</translation>
     </message>
@@ -9438,12 +9633,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Map-Dateien abgelehnt: %1</translation>
     </message>
     <message>
-        <location filename="../app/jumo-sim.cpp" line="+27"/>
-        <source>Simulated JUMO devices on a serial line. DEVICE is FAMILY@ADDRESS, e.g. ipc300@1.</source>
-        <translation>Simulierte JUMO-Geräte an einer seriellen Leitung. DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1.</translation>
+        <location filename="../app/jumo-sim.cpp" line="+57"/>
+        <source>Simulated JUMO devices on a serial line, or behind TCP as a Modbus TCP gateway or a serial device server. DEVICE is FAMILY@ADDRESS, e.g. ipc300@1.</source>
+        <translation>Simulierte JUMO-Geräte an einer seriellen Leitung oder hinter TCP als Modbus-TCP-Gateway oder serieller Geräteserver. DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Serial port to serve.</source>
         <translation>Zu bedienende serielle Schnittstelle.</translation>
     </message>
@@ -9451,6 +9646,16 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+3"/>
         <source>Make a pseudo-terminal pair in this folder (needs socat); clients connect to FOLDER/master.</source>
         <translation>Ein Pseudo-Terminal-Paar in diesem Ordner anlegen (benötigt socat); Clients verbinden sich mit FOLDER/master.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Be a Modbus TCP gateway listening on [HOST:]PORT (port 0: any free one); clients connect to tcp://HOST:PORT.</source>
+        <translation>Als Modbus-TCP-Gateway auf [HOST:]PORT lauschen (Port 0: ein beliebiger freier); Clients verbinden sich mit tcp://HOST:PORT.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Be a serial device server (raw RTU frames over TCP) listening on [HOST:]PORT; clients connect to rtu+tcp://HOST:PORT.</source>
+        <translation>Als serieller Geräteserver (reine RTU-Telegramme über TCP) auf [HOST:]PORT lauschen; Clients verbinden sich mit rtu+tcp://HOST:PORT.</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -9488,9 +9693,9 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Baudrate oder Datenformat nicht unterstützt</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>give exactly one of --port and --pty</source>
-        <translation>genau eine der Optionen --port und --pty angeben</translation>
+        <location line="+6"/>
+        <source>give exactly one of --port, --pty, --tcp and --rtu-tcp</source>
+        <translation>geben Sie genau eine der Optionen --port, --pty, --tcp und --rtu-tcp an</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -9520,6 +9725,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message numerus="yes">
         <location line="+4"/>
+        <location line="+29"/>
         <source>serving %n device(s) on %1</source>
         <translation>
             <numerusform>bedient %n Gerät an %1</numerusform>
@@ -9527,7 +9733,18 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
+        <location line="-17"/>
+        <source>&apos;%1&apos; is not [HOST:]PORT</source>
+        <translation>&apos;%1&apos; ist nicht [HOST:]PORT</translation>
+    </message>
+    <message>
         <location line="+8"/>
+        <source>cannot listen on %1: %2</source>
+        <translation>kann nicht auf %1 lauschen: %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <location line="+4"/>
         <source>connect to %1</source>
         <translation>verbinden mit %1</translation>
     </message>

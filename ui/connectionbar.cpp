@@ -29,7 +29,12 @@ ConnectionBar::ConnectionBar(QWidget *parent)
     // are not listed: the path can be typed.
     m_port->setEditable(true);
     m_port->setMinimumWidth(220);
-    m_port->lineEdit()->setPlaceholderText(tr("/dev/ttyUSB0"));
+    m_port->lineEdit()->setPlaceholderText(tr("/dev/ttyUSB0 or tcp://HOST"));
+    m_port->setToolTip(tr("The line: a serial port (listed, or a typed path);\n"
+                          "tcp://HOST[:PORT] for a Modbus TCP gateway (port 502 by default,\n"
+                          "the device address is the unit id);\n"
+                          "rtu+tcp://HOST:PORT for RTU frames through a serial device server.\n"
+                          "Behind a gateway, baud and format are those of its serial side."));
     for (int baud : {4800, 9600, 19200, 38400})
         m_baud->addItem(QString::number(baud), baud);
     m_baud->setCurrentIndex(1);

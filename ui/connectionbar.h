@@ -1,5 +1,6 @@
 // The connection bar: serial port (listed adapters under their stable by-id names, or a
-// typed path), baud rate, data format, connect/disconnect, and the line's state.
+// typed path or tcp:// / rtu+tcp:// gateway address), baud rate, data format,
+// connect/disconnect, and the line's state.
 #pragma once
 
 #include "bus/bussettings.h"

@@ -1,6 +1,7 @@
 #include "broadcastgate.h"
 
 #include "bus/broadcastclearance.h"
+#include "bus/bus.h"
 #include "exitcodes.h"
 #include "identitygate.h"
 #include "logs/eventlog.h"
@@ -63,6 +64,16 @@ void BroadcastGate::pass(IdentityGate &identity, EventLog *audit,
                          const std::function<void(const QList<quint8> &)> &next,
                          const std::function<void(int)> &refused)
 {
+    if (m_bus.lineKind() == LineAddress::Kind::ModbusTcp) {
+        // Before any scan: the bus would refuse it anyway (gateways differ in what they
+        // make of unit id 0).
+        m_err << tr("no broadcast through a Modbus TCP gateway: what a gateway makes of address 0 differs from "
+                    "gateway to gateway; write to each device instead")
+              << Qt::endl;
+        // As every other refusal of the gate: from the event loop, never inside pass().
+        QMetaObject::invokeMethod(this, [refused] { refused(exitcode::Failed); }, Qt::QueuedConnection);
+        return;
+    }
     if (m_scanFirst) {
         scan(next, refused);
         return;

@@ -1,6 +1,8 @@
 #include "protocol/csv.h"
 #include "linecommands.h"
 
+#include "bus/lineaddress.h"
+
 #include "commissioning/parametertransfer.h"
 
 #include "broadcastgate.h"
@@ -132,9 +134,11 @@ void LineCommands::addLineOptions(CommandParser &parser, bool namesDevices)
     if (namesDevices)
         IdentityGate::addOption(parser);
     parser.addOption({QStringLiteral("port"),
-                      tr("Serial port of the one line: its /dev/serial/by-id name, which 'jumoctl ports' lists, or "
-                         "/dev/ttyUSB0, say."),
-                      tr("path")});
+                      tr("The one line: a serial port (its /dev/serial/by-id name, which 'jumoctl ports' lists, or "
+                         "/dev/ttyUSB0, say), tcp://HOST[:PORT] for a Modbus TCP gateway (port 502 by default; the "
+                         "device address is the unit id) or rtu+tcp://HOST:PORT for raw RTU through a serial device "
+                         "server."),
+                      tr("address")});
     parser.addOption({QStringLiteral("line"),
                       tr("A line, given once per line: its ADDRESS, then as needed ,name=NAME ,baud=N "
                          ",format=8N1 ,timeout=MS ,min-response=MS ,retries=N ,read-only, e.g. "
@@ -143,7 +147,10 @@ void LineCommands::addLineOptions(CommandParser &parser, bool namesDevices)
                       tr("spec")});
     parser.addOption({QStringLiteral("station"),
                       tr("Station file (JSON) with the lines, their settings and devices."), tr("file")});
-    parser.addOption({QStringLiteral("baud"), tr("Baud rate: 4800, 9600, 19200 or 38400 (default 9600)."), tr("rate"),
+    parser.addOption({QStringLiteral("baud"),
+                      tr("Baud rate: 4800, 9600, 19200 or 38400 (default 9600); behind a gateway, its serial side's "
+                         "(it sets the timing)."),
+                      tr("rate"),
                       QStringLiteral("9600")});
     parser.addOption({QStringLiteral("format"), tr("Data format: 8N1, 8E1, 8O1 or 8N2 (default 8N1)."), tr("format"),
                       QStringLiteral("8N1")});
@@ -237,7 +244,7 @@ std::optional<int> LineCommands::readStation(const CommandParser &parser)
         if (port) {
             LineConfig line;
             line.settings = *defaults;
-            line.settings.portName = parser.value(QStringLiteral("port"));
+            line.settings.portName = absolutePort(parser.value(QStringLiteral("port")), QDir::currentPath());
             lines << line;
         }
         for (const QString &spec : specs) {
@@ -246,6 +253,7 @@ std::optional<int> LineCommands::readStation(const CommandParser &parser)
                 m_err << error << Qt::endl;
                 return exitcode::Usage;
             }
+            line->settings.portName = absolutePort(line->settings.portName, QDir::currentPath());
             lines << *line;
         }
         if (lines.isEmpty() || lines.constFirst().settings.portName.isEmpty()) {

@@ -71,6 +71,8 @@ Bus::~Bus()
 void Bus::setSettings(const BusSettings &settings)
 {
     m_settings = settings;
+    const std::optional<LineAddress> address = LineAddress::parse(settings.portName, nullptr);
+    m_lineKind = address ? address->kind : LineAddress::Kind::Serial;
 }
 
 bool Bus::open()
@@ -323,7 +325,10 @@ int Bus::requestTimeoutMs(const ProtocolInfo &protocol, int requestBytes, int re
 {
     if (m_settings.timeoutMs > 0)
         return m_settings.timeoutMs;
-    return LineTiming::timeoutMs(m_settings.format, requestBytes, replyBytes, protocol, m_settings.minimumResponseTimeMs);
+    // Over TCP the baud rate is the gateway's serial side: its timing, and the network's.
+    const int margin = m_lineKind == LineAddress::Kind::Serial ? 0 : LineTiming::networkMarginMs;
+    return LineTiming::timeoutMs(m_settings.format, requestBytes, replyBytes, protocol, m_settings.minimumResponseTimeMs)
+            + margin;
 }
 
 void Bus::finishLater(int ticket, const WriteOutcome &outcome)

@@ -11,6 +11,7 @@
 #include "bus/deviceidentities.h"
 #include "bus/devicestatistics.h"
 #include "bus/entrystate.h"
+#include "bus/lineaddress.h"
 #include "bus/lineconnection.h"
 #include "bus/requestdesk.h"
 #include "bus/scheduler.h"
@@ -55,6 +56,8 @@ public:
 
     void setSettings(const BusSettings &settings);
     const BusSettings &settings() const { return m_settings; }
+    // The kind of line the settings' address names (serial, Modbus TCP, RTU over TCP).
+    LineAddress::Kind lineKind() const { return m_lineKind; }
     bool isReadOnly() const { return m_settings.readOnly; }
     void setReadOnly(bool readOnly) { m_settings.readOnly = readOnly; }
 
@@ -176,6 +179,7 @@ private:
     std::unique_ptr<Clock> m_ownClock;
     Clock *m_clock;
     BusSettings m_settings;
+    LineAddress::Kind m_lineKind = LineAddress::Kind::Serial;
     LineConnection m_line;
     Scheduler m_scheduler;
     ValueStore m_store;

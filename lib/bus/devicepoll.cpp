@@ -126,7 +126,9 @@ PollOutcome DevicePoll::finished(int block, const ModbusResult &result, int maxR
         return out;   // the plan changed while the block was under way
     out.entries = m_info.plan.blocks.at(block).entries;
 
-    switch (result.status) {
+    // A gateway's 0x0A/0x0B is no answer of the device's: counted as a timeout, shown
+    // with its code.
+    switch (result.isGatewayException() ? ModbusResult::Status::Timeout : result.status) {
     case ModbusResult::Status::Ok:
         m_blockAttempts = 0;
         out.store = true;
@@ -160,7 +162,10 @@ PollOutcome DevicePoll::finished(int block, const ModbusResult &result, int maxR
             return out;
         }
         m_blockAttempts = 0;
-        out.failure = result.status == ModbusResult::Status::BadReply ? ReadError::Mismatch : ReadError::Timeout;
+        out.failure = result.isGatewayException()                     ? ReadError::Exception
+                : result.status == ModbusResult::Status::BadReply ? ReadError::Mismatch
+                                                                  : ReadError::Timeout;
+        out.exceptionCode = result.isGatewayException() ? result.exceptionCode : 0;
         markFailure(out);
         if (!m_info.online) {
             if (m_blockIndex >= 0)

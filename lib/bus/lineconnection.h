@@ -1,6 +1,7 @@
 // The connection of a line: opens its transport, notices when the port goes away (an
-// unplugged adapter, a closed pty), and opens it again by itself while the user wants
-// the line, until it is closed. The port name is a path opened anew each time, so a
+// unplugged adapter, a closed pty, a gateway's connection), and opens it again by itself
+// while the user wants the line, until it is closed. A line lost stays lost until a new
+// connection stands (a TCP connection is made asynchronously). The port name is a path opened anew each time, so a
 // /dev/serial/by-id link leads to the ttyUSBn the adapter is after re-plugging.
 #pragma once
 
@@ -36,6 +37,9 @@ public:
 
     // The serial transport for the settings' port and format.
     static std::unique_ptr<Transport> serialTransport(const BusSettings &settings);
+    // The transport the settings' line address asks for: serial, Modbus TCP or RTU over
+    // TCP (a bad address gives a transport whose open() says why).
+    static std::unique_ptr<Transport> transportFor(const BusSettings &settings);
 
 signals:
     void stateChanged(jumo::LineState state);
@@ -46,6 +50,8 @@ signals:
 private:
     void setState(LineState state);
     void onLost(const QString &reason);
+    void onOpened();
+    void scheduleReconnect();
     void tryReconnect(quint64 generation);
 
     Clock *m_clock;

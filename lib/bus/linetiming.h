@@ -13,6 +13,9 @@ constexpr int readRequestBytes = 8;
 constexpr int readReplyBytes(int words) { return 5 + 2 * words; }
 constexpr int writeRequestBytes(int words) { return words == 1 ? 8 : 9 + 2 * words; }
 constexpr int writeReplyBytes = 8;
+// Added to the timeout of a line reached over TCP (a gateway or a device server): the
+// network's round trip and the gateway's own queueing, on top of the serial side's timing.
+constexpr int networkMarginMs = 250;
 constexpr int exceptionReplyBytes = 5;
 
 // The theoretical best: the line is busy for exactly this long per request: request,

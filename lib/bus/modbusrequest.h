@@ -50,7 +50,22 @@ struct ModbusResult
     QByteArray replyFrame;      // the whole RTU frame as received (reconstructed), empty if none
     QString errorText;          // empty when the status is Ok
 
-    bool answered() const { return status == Status::Ok || status == Status::Exception; }
+    // 0x0A (gateway path unavailable) and 0x0B (gateway target device failed to respond)
+    // come from a gateway, not from the device: it was not reached, or did not answer.
+    static constexpr int gatewayPathUnavailable = 0x0A;
+    static constexpr int gatewayTargetFailed = 0x0B;
+    bool isGatewayException() const
+    {
+        return status == Status::Exception
+                && (exceptionCode == gatewayPathUnavailable || exceptionCode == gatewayTargetFailed);
+    }
+    // The device itself answered (a gateway's exception is no answer of the device's).
+    bool answered() const { return status == Status::Ok || (status == Status::Exception && !isGatewayException()); }
+    // No answer of the device's, as a timeout: it may be asked again; a write's outcome is open.
+    bool deviceSilent() const
+    {
+        return status == Status::Timeout || status == Status::BadReply || isGatewayException();
+    }
 };
 
 } // namespace jumo

@@ -29,7 +29,7 @@ public:
 
     Next onResult(const ModbusResult &result, int) override
     {
-        const bool lost = result.status == ModbusResult::Status::Timeout || result.status == ModbusResult::Status::BadReply;
+        const bool lost = result.deviceSilent();
         if (lost && ++m_attempts < m_maxAttempts)
             return Next::RetryAfterQuiet;
         finish(result);

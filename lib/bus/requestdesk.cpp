@@ -122,6 +122,15 @@ int RequestDesk::writeBroadcast(const QString &family, const QString &entryId, c
         m_bus.refuseLater(ticket, WriteOutcome::Result::ReadOnlyMode, Bus::tr("read-only mode: %1 was not written").arg(entryId));
         return ticket;
     }
+    if (m_bus.lineKind() == LineAddress::Kind::ModbusTcp) {
+        // Gateways differ in what they make of unit id 0: some pass it on as a broadcast,
+        // some answer it themselves, some drop it or wait for a reply that never comes.
+        // Nothing tells which one this is, so no broadcast goes out through one.
+        m_bus.refuseLater(ticket, WriteOutcome::Result::Invalid,
+                          Bus::tr("not broadcast: a Modbus TCP gateway's handling of address 0 differs from "
+                                  "gateway to gateway; write to each device instead"));
+        return ticket;
+    }
     for (DeviceId id : m_bus.m_scheduler.devices()) {
         const Scheduler::DeviceInfo *d = m_bus.m_scheduler.device(id);
         if (d->map->family != family) {
@@ -200,7 +209,7 @@ int RequestDesk::probe(quint8 slave, quint16 address, quint16 count, const Proto
     const int ticket = m_bus.nextTicket();
     auto report = [this, ticket](const ModbusResult &r) {
         m_bus.m_clock->callSoon(&m_bus, [this, ticket, r] {
-            emit m_bus.probeFinished(ticket, r.words, !r.answered(), r.status == ModbusResult::Status::Exception ? r.exceptionCode : 0);
+            emit m_bus.probeFinished(ticket, r.words, !r.answered(), r.answered() && r.status == ModbusResult::Status::Exception ? r.exceptionCode : 0);
         });
     };
     if (m_bus.state() != LineState::Connected) {

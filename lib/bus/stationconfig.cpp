@@ -1,5 +1,7 @@
 #include "bus/stationconfig.h"
 
+#include "bus/lineaddress.h"
+
 #include "protocol/familyregistry.h"
 #include "protocol/filesaver.h"
 #include "protocol/jsonfieldreader.h"
@@ -37,10 +39,7 @@ const QRegularExpression &devicePattern()
     return pattern;
 }
 
-// The line's address text. Until lib/bus/lineaddress (helper linekinds, Contract 1)
-// is merged, any non-empty text is taken; the lead switches this one function to
-// LineAddress::parse(text, error) when merging, so that a bad URL is refused here with
-// its own message.
+// The line's address text: a serial port, tcp://HOST[:PORT] or rtu+tcp://HOST:PORT.
 bool checkLineAddress(const QString &text, QString *error)
 {
     if (text.trimmed().isEmpty()) {
@@ -48,7 +47,7 @@ bool checkLineAddress(const QString &text, QString *error)
             *error = StationConfig::tr("the line address (serial port or URL) is empty");
         return false;
     }
-    return true;
+    return LineAddress::parse(text, error).has_value();
 }
 
 QString lineWhere(qsizetype index, const QString &name)

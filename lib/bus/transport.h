@@ -1,5 +1,5 @@
 // What carries requests to the devices of one line: a serial port through Qt's Modbus
-// client in production, a scripted fake in unit tests. One request at a time; the
+// client, a Modbus TCP gateway or raw RTU over TCP in production, a scripted fake in unit tests. One request at a time; the
 // scheduler above decides what goes next and when.
 #pragma once
 
@@ -21,6 +21,9 @@ public:
     // Closes the port; a request under way finishes as LineDown first.
     virtual void close() = 0;
     virtual bool isOpen() const = 0;
+    // An open() that returned true may still be connecting (a TCP line): opened() or
+    // lost() follows. Requests sent meanwhile wait for the connection.
+    virtual bool isConnecting() const { return false; }
     // Sends one request. finished() follows exactly once, never from inside this call.
     virtual void send(const ModbusRequest &request) = 0;
     // The silence the transport keeps before each request (the RTU frame gap).
@@ -28,6 +31,8 @@ public:
 
 signals:
     void finished(const jumo::ModbusResult &result);
+    // A connection that was still being made stands now.
+    void opened();
     // The port went away (an unplugged adapter, a closed pty): the transport is closed.
     void lost(const QString &reason);
 };

@@ -97,7 +97,7 @@ Transaction::Next WriteTransaction::onResult(const ModbusResult &result, int max
     if (m_phase == Phase::Done)
         return Next::Continue;
     ++m_attempts;
-    const bool lost = result.status == ModbusResult::Status::Timeout || result.status == ModbusResult::Status::BadReply;
+    const bool lost = result.deviceSilent();
     const bool mayRepeatRead = (lost || isBusy(result)) && m_attempts <= maxRetries;
 
     switch (m_phase) {
@@ -129,6 +129,28 @@ Transaction::Next WriteTransaction::onResult(const ModbusResult &result, int max
         }
         if (isBusy(result) && m_attempts <= maxRetries)
             return Next::RetryAfterQuiet;
+        if (result.status == ModbusResult::Status::Exception
+            && result.exceptionCode == ModbusResult::gatewayPathUnavailable) {
+            // The gateway could not pass it on: the device never saw it.
+            finish(WriteOutcome::Result::Refused,
+                   tr("not written: the gateway could not reach the device (exception %1, %2); nothing was changed")
+                           .arg(result.exceptionCode)
+                           .arg(m_map->exceptionMeaning(result.exceptionCode)),
+                   result.exceptionCode);
+            return Next::Continue;
+        }
+        if (result.status == ModbusResult::Status::Exception
+            && result.exceptionCode == ModbusResult::gatewayTargetFailed) {
+            // The gateway sent it and heard nothing back: the device may have taken it.
+            // The gateway has waited (and perhaps repeated) already: never sent again.
+            finish(WriteOutcome::Result::Unknown,
+                   tr("the gateway got no answer from the device (exception %1, %2): the write may or may not "
+                      "have reached it; it is not sent again, check the device")
+                           .arg(result.exceptionCode)
+                           .arg(m_map->exceptionMeaning(result.exceptionCode)),
+                   result.exceptionCode);
+            return Next::Continue;
+        }
         if (result.status == ModbusResult::Status::Exception) {
             finish(WriteOutcome::Result::Refused, refusal(result.exceptionCode), result.exceptionCode);
             return Next::Continue;

@@ -1,5 +1,7 @@
 #include "mqtt/topicscheme.h"
 
+#include "bus/lineaddress.h"
+
 #include "bus/valuetext.h"
 #include "protocol/valueformat.h"
 
@@ -151,11 +153,8 @@ QDateTime TopicScheme::parseTime(const QString &text)
 
 QString TopicScheme::lineKind(const QString &address)
 {
-    if (address.startsWith(QLatin1String("tcp://"), Qt::CaseInsensitive))
-        return QStringLiteral("tcp");
-    if (address.startsWith(QLatin1String("rtu+tcp://"), Qt::CaseInsensitive))
-        return QStringLiteral("rtu+tcp");
-    return QStringLiteral("rtu");
+    const std::optional<LineAddress> parsed = LineAddress::parse(address, nullptr);
+    return parsed ? parsed->kindName() : QStringLiteral("rtu");
 }
 
 QString TopicScheme::lineStateName(LineState state)

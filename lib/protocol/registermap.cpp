@@ -192,6 +192,15 @@ const RegisterEntry *RegisterMap::entryAt(quint16 address) const
 QString RegisterMap::exceptionMeaning(int code) const
 {
     const auto it = exceptions.constFind(code);
+    // The Modbus specification gives 10 and 11 to gateways: no family documents them,
+    // because a device never sends them.
+    if (it == exceptions.cend() && code == 0x0A)
+        return QCoreApplication::translate("jumo::RegisterMap",
+                                           "the gateway's path to the device is unavailable (sent by the gateway, "
+                                           "the request did not reach the device)");
+    if (it == exceptions.cend() && code == 0x0B)
+        return QCoreApplication::translate("jumo::RegisterMap",
+                                           "the device behind the gateway did not respond (sent by the gateway)");
     if (it == exceptions.cend())
         return QCoreApplication::translate("jumo::RegisterMap", "exception %1 (not documented for this family)").arg(code);
     return QCoreApplication::translate("jumo::maps", it->toUtf8().constData());

@@ -141,15 +141,22 @@ void SimulatorLine::processBuffer()
 
 void SimulatorLine::handleFrame(const QByteArray &frame)
 {
+    const Answer a = answer(frame);
+    if (!a.frame.isEmpty())
+        sendLater(&m_port, a.frame, a.delayMs);
+}
+
+SimulatorLine::Answer SimulatorLine::answer(const QByteArray &frame)
+{
     ++m_requestsReceived;
     emit requestReceived(frame);
     if (!RtuFrame::hasValidCrc(frame)) {
         ++m_crcErrors;   // a real device stays silent
         qCDebug(lcSim) << "CRC error in" << RtuFrame::toHex(frame);
-        return;
+        return {};
     }
     if (frame.size() < 4)
-        return;
+        return {};
     const quint8 address = quint8(frame[0]);
     const QByteArray pdu = frame.mid(1, frame.size() - 3);
     const quint8 function = quint8(pdu[0]);
@@ -161,7 +168,7 @@ void SimulatorLine::handleFrame(const QByteArray &frame)
             if (d->map().protocol.broadcast)
                 d->process(pdu, true);
         }
-        return;
+        return {};
     }
     SimulatedDevice *target = device(address);
     if (!target) {
@@ -173,7 +180,7 @@ void SimulatorLine::handleFrame(const QByteArray &frame)
         }
     }
     if (!target)
-        return;
+        return {};
 
     Fault fault = m_faults.value(target->address());
     if (fault.mode != FaultMode::None && fault.remaining > 0 && --fault.remaining == 0)
@@ -185,7 +192,7 @@ void SimulatorLine::handleFrame(const QByteArray &frame)
     switch (fault.mode) {
     case FaultMode::Dead:
     case FaultMode::Drop:
-        return;
+        return {};
     case FaultMode::Exception:
         replyPdu.append(char(function | 0x80));
         replyPdu.append(char(fault.exceptionCode));
@@ -195,7 +202,7 @@ void SimulatorLine::handleFrame(const QByteArray &frame)
         break;
     }
     if (replyPdu.isEmpty())
-        return;
+        return {};
     QByteArray reply = RtuFrame::build(address, replyPdu);
     if (fault.mode == FaultMode::BadCrc)
         reply[reply.size() - 1] = char(~quint8(reply[reply.size() - 1]));
@@ -207,7 +214,13 @@ void SimulatorLine::handleFrame(const QByteArray &frame)
         delay += m_format.wireTimeMs(int(frame.size())) + m_format.frameGapMs() + m_format.wireTimeMs(int(reply.size()));
     if (fault.mode == FaultMode::Late)
         delay += fault.lateMs;
-    m_replies.enqueue({reply, m_clock.elapsed() + qint64(delay + 0.5)});
+    return {reply, qint64(delay + 0.5)};
+}
+
+void SimulatorLine::sendLater(QIODevice *to, const QByteArray &bytes, qint64 delayMs)
+{
+    // One line, one reply at a time: a late reply holds back those after it.
+    m_replies.enqueue({bytes, m_clock.elapsed() + delayMs, to});
     if (!m_replyTimer.isActive())
         m_replyTimer.start(int(std::max<qint64>(0, m_replies.head().dueMs - m_clock.elapsed())));
 }
@@ -215,10 +228,10 @@ void SimulatorLine::handleFrame(const QByteArray &frame)
 void SimulatorLine::sendNext()
 {
     while (!m_replies.isEmpty() && m_replies.head().dueMs <= m_clock.elapsed()) {
-        const QByteArray bytes = m_replies.dequeue().bytes;
-        if (m_port.isOpen()) {
-            m_port.write(bytes);
-            emit replySent(bytes);
+        const PendingReply reply = m_replies.dequeue();
+        if (reply.to && reply.to->isOpen()) {
+            reply.to->write(reply.bytes);
+            emit replySent(reply.bytes);
         }
     }
     if (!m_replies.isEmpty())

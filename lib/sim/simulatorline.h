@@ -1,7 +1,7 @@
-// A simulated RS-485 line: several SimulatedDevices behind one serial port. It frames
-// the master's requests, dispatches them by slave address, answers with the configured
-// timing (processing delay, minimum response time, optional pacing at the baud rate)
-// and can inject faults.
+// A simulated RS-485 line: several SimulatedDevices behind one serial port (or behind a
+// SimulatorServer's TCP connections). It frames the master's requests, dispatches them
+// by slave address, answers with the configured timing (processing delay, minimum
+// response time, optional pacing at the baud rate) and can inject faults.
 #pragma once
 
 #include "protocol/lineformat.h"
@@ -9,6 +9,7 @@
 
 #include <QElapsedTimer>
 #include <QObject>
+#include <QPointer>
 #include <QQueue>
 #include <QSerialPort>
 #include <QTimer>
@@ -56,6 +57,21 @@ public:
 
     void setFault(quint8 address, const Fault &fault);
 
+    // How the line answers one request frame (address .. CRC) received now: the reply
+    // frame as it goes on the wire (empty: nobody answers) and how long after now.
+    struct Answer
+    {
+        QByteArray frame;
+        qint64 delayMs = 0;
+    };
+    Answer answer(const QByteArray &frame);
+    // Writes bytes to a device (the port, a TCP connection) delayMs from now, in due
+    // order with every other reply; dropped if the device is gone by then.
+    void sendLater(QIODevice *to, const QByteArray &bytes, qint64 delayMs);
+    const LineFormat &format() const { return m_format; }
+    // The line's format without a port of its own (served through a SimulatorServer).
+    void setFormat(const LineFormat &format) { m_format = format; }
+
     // What went over the line, for tests: every complete request frame received.
     int requestsReceived() const { return m_requestsReceived; }
     int writeRequestsReceived() const { return m_writeRequestsReceived; }
@@ -76,6 +92,7 @@ private:
     {
         QByteArray bytes;
         qint64 dueMs = 0;
+        QPointer<QIODevice> to;
     };
 
     QSerialPort m_port;

@@ -20,6 +20,8 @@ private slots:
     void initTestCase();
     void listsAdaptersByTheirStableNames();
     void hmiRemembersTheStableName();
+    void takesGatewayAddresses_data();
+    void takesGatewayAddresses();
 
 private:
     QTemporaryDir m_dir;
@@ -81,6 +83,31 @@ void tst_ConnectionBar::hmiRemembersTheStableName()
     QCOMPARE(QSettings(options.settingsFile, QSettings::IniFormat).value("line/port").toString(), m_link);
     MainWindow again(registry, options);
     QCOMPARE(again.connectionBar()->port(), m_link);
+}
+
+void tst_ConnectionBar::takesGatewayAddresses_data()
+{
+    QTest::addColumn<QString>("typed");
+    QTest::addColumn<QString>("port");
+    QTest::newRow("Modbus TCP gateway") << "tcp://10.0.0.20:502" << "tcp://10.0.0.20:502";
+    QTest::newRow("Modbus TCP gateway at its default port") << " tcp://gateway-1 " << "tcp://gateway-1";
+    QTest::newRow("RTU over TCP") << "rtu+tcp://10.0.0.21:4001" << "rtu+tcp://10.0.0.21:4001";
+    QTest::newRow("IPv6 gateway") << "tcp://[::1]:1502" << "tcp://[::1]:1502";
+}
+
+void tst_ConnectionBar::takesGatewayAddresses()
+{
+    QFETCH(QString, typed);
+    QFETCH(QString, port);
+    ConnectionBar bar;
+    auto *box = bar.findChild<QComboBox *>("portBox");
+    QVERIFY(box);
+    box->setCurrentIndex(-1);
+    QTest::keyClicks(box, typed);
+    QCOMPARE(bar.port(), port);
+    bar.setSettings(port, 38400, "8N1");
+    QCOMPARE(bar.port(), port);
+    QVERIFY2(box->toolTip().contains("rtu+tcp://"), qPrintable(box->toolTip()));
 }
 
 QTEST_MAIN(tst_ConnectionBar)

@@ -7,8 +7,10 @@
 #include "sim/ptypair.h"
 #include "sim/simulatorline.h"
 
+#include <QFileInfo>
 #include <QProcess>
 #include <QSignalSpy>
+#include <QTcpServer>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -162,6 +164,30 @@ public:
         return waitForLine("ready");
     }
 
+    // As a Modbus TCP gateway on 127.0.0.1 (port 0: a free one, see tcpPort()).
+    bool startTcp(const QList<quint8> &slaves, quint16 port = 0)
+    {
+        QStringList args{"--tcp", QString::number(port)};
+        for (quint8 s : slaves)
+            args << "--slave" << QString::number(s);
+        m_writeFrames = 0;
+        m_lines.clear();
+        m_process.setProcessChannelMode(QProcess::SeparateChannels);
+        m_process.start(QStringLiteral(JUMO_TEST_PEER), args);
+        if (!waitForLine("ready"))
+            return false;
+        return m_tcpPort != 0;
+    }
+    quint16 tcpPort() const { return m_tcpPort; }
+    // The gateway dies (SIGKILL to this peer's own process only).
+    void kill()
+    {
+        if (m_process.state() == QProcess::NotRunning)
+            return;
+        m_process.kill();
+        m_process.waitForFinished(3000);
+    }
+
     void stop() override
     {
         if (m_process.state() == QProcess::NotRunning)
@@ -224,6 +250,8 @@ private:
                     ++m_writeFrames;
             } else if (line.startsWith("regs ")) {
                 m_lastRegs = line.mid(5).split(' ', Qt::SkipEmptyParts);
+            } else if (line.startsWith("listening ")) {
+                m_tcpPort = quint16(line.mid(10).toUInt());
             }
             m_lines << line;
         }
@@ -256,6 +284,71 @@ private:
     QStringList m_lines;
     QStringList m_lastRegs;
     int m_writeFrames = 0;
+    quint16 m_tcpPort = 0;
+};
+
+// A free TCP port on 127.0.0.1 at the moment of asking (for programs that cannot be
+// told to pick one themselves).
+inline quint16 freeTcpPort()
+{
+    QTcpServer probe;
+    return probe.listen(QHostAddress::LocalHost, 0) ? probe.serverPort() : 0;
+}
+
+// A serial device server as socat makes one: a pty (where a peer serves the devices)
+// bridged to one TCP connection on 127.0.0.1. Raw bytes both ways, as an NPort does.
+// socat ends with that connection (its fork option would let an old child still read
+// the pty while the next client's is already there).
+class DeviceServer
+{
+public:
+    ~DeviceServer() { kill(); }
+
+    bool start(quint16 port = 0)
+    {
+        if (!m_dir.isValid())
+            return false;
+        for (int attempt = 0; attempt < 5; ++attempt) {
+            m_port = port ? port : freeTcpPort();
+            QFile::remove(ptyPath());
+            m_process.setProcessChannelMode(QProcess::SeparateChannels);
+            // The pty first: socat opens it at once, then waits for the one connection.
+            m_process.start(QStringLiteral("socat"),
+                            {"-d", "-d", QStringLiteral("PTY,link=%1,raw,echo=0").arg(ptyPath()),
+                             QStringLiteral("TCP-LISTEN:%1,bind=127.0.0.1,reuseaddr").arg(m_port)});
+            if (!m_process.waitForStarted(5000))
+                return false;
+            QElapsedTimer timer;
+            timer.start();
+            QByteArray err;
+            while (timer.elapsed() < 10000 && m_process.state() == QProcess::Running) {
+                err += m_process.readAllStandardError();
+                if (err.contains("listening on") && QFileInfo::exists(ptyPath()))
+                    return true;
+                QTest::qWait(10);
+            }
+            kill();
+            if (port)
+                QTest::qWait(200);   // the same port: perhaps not free again yet
+        }
+        return false;
+    }
+    // The device server goes away (SIGKILL to this socat only): the connection drops, the pty closes.
+    void kill()
+    {
+        if (m_process.state() == QProcess::NotRunning)
+            return;
+        m_process.kill();
+        m_process.waitForFinished(3000);
+    }
+    QString ptyPath() const { return m_dir.filePath("ttyServer"); }
+    quint16 port() const { return m_port; }
+    QString url() const { return QStringLiteral("rtu+tcp://127.0.0.1:%1").arg(m_port); }
+
+private:
+    QTemporaryDir m_dir;
+    QProcess m_process;
+    quint16 m_port = 0;
 };
 
 inline std::unique_ptr<Peer> makePeer(const QString &name)

@@ -10,6 +10,11 @@
  * modbus_reply(). That way one process can serve several slaves on one line,
  * log every frame byte for byte and inject faults between framing and reply.
  *
+ * With --tcp it is a Modbus TCP gateway instead: libmodbus's TCP server listens,
+ * every MBAP request is handed to the slave its unit id names (each with its own
+ * registers), and a unit id no slave has gets exception 0x0B (gateway target
+ * device failed to respond), as a real gateway answers for a silent device.
+ *
  * Usage and the stdin/stdout protocol are described in usage() below.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -25,7 +30,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <netinet/in.h>
 #include <sys/select.h>
+#include <sys/socket.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -38,6 +45,9 @@
 #define MAX_FRAME 300
 #define MAX_SLAVES 256
 #define NUM_REGS 65536
+#define MAX_CLIENTS 8
+/* MBAP header (7) + the largest PDU (253). */
+#define MAX_ADU 260
 
 enum fault_kind {
     FAULT_NONE,
@@ -70,6 +80,13 @@ static int port_fd = -1;
  * for the stray/badcrc faults) before they go out on the line. */
 static int capture_rd = -1, capture_wr = -1;
 static volatile sig_atomic_t stop_requested;
+/* Modbus TCP mode: the listening socket and the connected clients with their
+ * receive buffers. */
+static int tcp_mode;
+static int listen_fd = -1;
+static int clients[MAX_CLIENTS];
+static uint8_t client_buf[MAX_CLIENTS][2 * MAX_ADU];
+static size_t client_len[MAX_CLIENTS];
 static unsigned long frames_ok, frames_bad;
 
 static void usage(FILE *out)
@@ -77,8 +94,12 @@ static void usage(FILE *out)
     fprintf(out,
         "usage: %s --port PATH [--baud 19200] [--format 8N1|8E1|8O1|8N2]\n"
         "          --slave ADDR [--slave ADDR ...] [--set SLAVE:ADDR=WORD[,WORD...]]...\n"
+        "       %s --tcp PORT --slave ADDR [--slave ADDR ...] [--set ...]...\n"
         "Numbers are decimal or 0x hex. Each slave has 65536 holding registers,\n"
         "which also serve as its input registers. Address 0 is broadcast.\n"
+        "--tcp: a Modbus TCP gateway on 127.0.0.1:PORT (0: a free port, printed as\n"
+        "'listening PORT' before 'ready'); the unit id picks the slave, an unknown\n"
+        "unit id gets exception 11; faults stray and badcrc do not apply.\n"
         "stdin commands (each answered by 'ok' or 'error: ...'):\n"
         "  fault SLAVE none | drop [COUNT] | late MS [COUNT] | stray [COUNT]\n"
         "              | badcrc [COUNT] | exception CODE [COUNT] | dead\n"
@@ -86,8 +107,9 @@ static void usage(FILE *out)
         "  get SLAVE ADDR [COUNT]     -> 'regs HHHH HHHH ...'\n"
         "  stats                      -> 'stats rx=N rxbad=N'\n"
         "  quit                       (EOF on stdin quits as well)\n"
-        "stdout: 'ready', 'rx HEX', 'rxbad HEX', 'tx HEX', 'ok', 'error: ...'\n",
-        prog);
+        "stdout: 'ready', 'rx HEX', 'rxbad HEX', 'tx HEX', 'ok', 'error: ...'\n"
+        "(over TCP, rx shows unit id and PDU, tx the whole MBAP frame)\n",
+        prog, prog);
 }
 
 static void die(const char *fmt, ...)
@@ -353,6 +375,128 @@ static void handle_request(const uint8_t *req, size_t len)
         fprintf(stderr, "%s: write to port failed: %s\n", prog, strerror(errno));
 }
 
+/* ---- Modbus TCP ---- */
+
+/* Runs libmodbus's reply on a TCP request (the whole ADU, MBAP header first) with
+ * ctx->s redirected to the capture socket pair. */
+static size_t capture_tcp_reply(const uint8_t *adu, int adu_len, modbus_mapping_t *map,
+                                int exception, uint8_t *rsp, size_t cap)
+{
+    modbus_set_socket(ctx, capture_wr);
+    int rc = exception ? modbus_reply_exception(ctx, adu, (unsigned)exception)
+                       : modbus_reply(ctx, adu, adu_len, map);
+    modbus_set_socket(ctx, -1);
+    if (rc < 0)
+        fprintf(stderr, "%s: libmodbus reply failed: %s\n", prog, modbus_strerror(errno));
+    return drain_capture(rsp, cap);
+}
+
+static size_t build_tcp_exception(const uint8_t *adu, unsigned code, uint8_t *rsp)
+{
+    if (code >= 1 && code < MODBUS_EXCEPTION_MAX)
+        return capture_tcp_reply(adu, 0, NULL, (int)code, rsp, MAX_ADU);
+    memcpy(rsp, adu, 4);
+    rsp[4] = 0;
+    rsp[5] = 3;
+    rsp[6] = adu[6];
+    rsp[7] = (uint8_t)(adu[7] | 0x80);
+    rsp[8] = (uint8_t)code;
+    return 9;
+}
+
+static void handle_tcp_request(int fd, const uint8_t *adu, size_t len)
+{
+    /* The unit id and PDU read like an RTU frame without its CRC: precheck() and
+     * the test harness (which looks at the function code in 'rx') take them so. */
+    const uint8_t *unit_pdu = adu + 6;
+    size_t rtu_len = len - 6 + 2;
+    unsigned unit = adu[6];
+    out_hex("rx", unit_pdu, len - 6);
+    frames_ok++;
+    uint8_t rsp[MAX_ADU + 16];
+    size_t n;
+    if (unit == 0) {
+        /* Passed on to the line as a broadcast: applied, never answered. */
+        if ((adu[7] == MODBUS_FC_WRITE_SINGLE_REGISTER || adu[7] == MODBUS_FC_WRITE_MULTIPLE_REGISTERS)
+            && precheck(unit_pdu, rtu_len) == 0) {
+            for (int a = 1; a < MAX_SLAVES; a++)
+                if (slaves[a])
+                    capture_tcp_reply(adu, (int)len, &slaves[a]->mapping, 0, rsp, sizeof rsp);
+        }
+        return;
+    }
+    struct slave *s = slaves[unit];
+    if (!s) {
+        n = build_tcp_exception(adu, MODBUS_EXCEPTION_GATEWAY_TARGET, rsp);
+    } else {
+        struct fault f = s->fault;
+        if (s->fault.kind != FAULT_NONE && s->fault.remaining > 0 && --s->fault.remaining == 0)
+            s->fault.kind = FAULT_NONE;
+        if (f.kind == FAULT_DROP || f.kind == FAULT_DEAD)
+            return;
+        if (f.kind == FAULT_LATE)
+            sleep_ms(f.param);
+        unsigned exc = f.kind == FAULT_EXCEPTION ? f.param : precheck(unit_pdu, rtu_len);
+        n = exc ? build_tcp_exception(adu, exc, rsp)
+                : capture_tcp_reply(adu, (int)len, &s->mapping, 0, rsp, sizeof rsp);
+    }
+    if (n == 0)
+        return;
+    out_hex("tx", rsp, n);
+    if (write_all(fd, rsp, n) < 0)
+        fprintf(stderr, "%s: write to client failed: %s\n", prog, strerror(errno));
+}
+
+static void drop_client(int i)
+{
+    close(clients[i]);
+    clients[i] = -1;
+    client_len[i] = 0;
+}
+
+static void read_client(int i)
+{
+    ssize_t n = read(clients[i], client_buf[i] + client_len[i], sizeof client_buf[i] - client_len[i]);
+    if (n <= 0) {
+        if (n < 0 && (errno == EAGAIN || errno == EINTR))
+            return;
+        drop_client(i);
+        return;
+    }
+    client_len[i] += (size_t)n;
+    while (client_len[i] >= 7) {
+        const uint8_t *b = client_buf[i];
+        size_t length = (size_t)(b[4] << 8 | b[5]);
+        if (b[2] != 0 || b[3] != 0 || length < 2 || length > MAX_ADU - 6) {
+            /* Not Modbus TCP: a gateway hangs up. */
+            frames_bad++;
+            out_hex("rxbad", b, client_len[i]);
+            drop_client(i);
+            return;
+        }
+        if (client_len[i] < 6 + length)
+            return;
+        handle_tcp_request(clients[i], b, 6 + length);
+        memmove(client_buf[i], b + 6 + length, client_len[i] - 6 - length);
+        client_len[i] -= 6 + length;
+    }
+}
+
+static void accept_client(void)
+{
+    int fd = accept(listen_fd, NULL, NULL);
+    if (fd < 0)
+        return;
+    for (int i = 0; i < MAX_CLIENTS; i++) {
+        if (clients[i] < 0) {
+            clients[i] = fd;
+            client_len[i] = 0;
+            return;
+        }
+    }
+    close(fd);   /* as a gateway with all its connections taken */
+}
+
 /* Length of the request starting at buf[0]: >0 known, 0 = need more bytes to
  * tell, -1 = function without a fixed layout, ends at the next silence. */
 static int expected_length(const uint8_t *buf, size_t len)
@@ -476,6 +620,8 @@ static const char *cmd_fault(char **tok, int ntok)
         if (ntok != 3)
             return "too many arguments";
         f.kind = mode[0] == 'n' ? FAULT_NONE : FAULT_DEAD;
+    } else if (tcp_mode && (strcmp(mode, "stray") == 0 || strcmp(mode, "badcrc") == 0)) {
+        return "no stray bytes or CRCs over Modbus TCP";
     } else if (strcmp(mode, "drop") == 0 || strcmp(mode, "stray") == 0
                || strcmp(mode, "badcrc") == 0) {
         f.kind = mode[0] == 'd' ? FAULT_DROP : mode[0] == 's' ? FAULT_STRAY : FAULT_BADCRC;
@@ -662,6 +808,7 @@ static void on_signal(int sig)
 int main(int argc, char **argv)
 {
     const char *port = NULL;
+    long tcp_port = -1;
     unsigned long baud = 19200;
     char parity = 'N';
     int stop_bits = 1;
@@ -670,6 +817,7 @@ int main(int argc, char **argv)
 
     static const struct option opts[] = {
         { "port", required_argument, NULL, 'p' },
+        { "tcp", required_argument, NULL, 't' },
         { "baud", required_argument, NULL, 'b' },
         { "format", required_argument, NULL, 'f' },
         { "slave", required_argument, NULL, 's' },
@@ -683,6 +831,12 @@ int main(int argc, char **argv)
         switch (c) {
         case 'p':
             port = optarg;
+            break;
+        case 't':
+            if (parse_num(optarg, 65535, &v) < 0)
+                die("bad --tcp '%s' (0..65535)", optarg);
+            tcp_port = (long)v;
+            tcp_mode = 1;
             break;
         case 'b':
             if (parse_num(optarg, 4000000, &baud) < 0 || baud == 0)
@@ -715,8 +869,8 @@ int main(int argc, char **argv)
     }
     if (optind < argc)
         die("unexpected argument '%s'", argv[optind]);
-    if (!port)
-        die("--port is required");
+    if (!port == !tcp_mode)
+        die("give either --port or --tcp");
     int have_slave = 0;
     for (int a = 1; a < MAX_SLAVES; a++)
         have_slave |= slaves[a] != NULL;
@@ -726,22 +880,42 @@ int main(int argc, char **argv)
     for (int i = 0; i < nsets; i++)
         apply_set_option(sets[i]);
 
+    /* A socket pair rather than a pipe: the TCP backend send()s its replies. */
     int pipefd[2];
-    if (pipe(pipefd) < 0)
-        die("pipe: %s", strerror(errno));
+    if (socketpair(AF_UNIX, SOCK_STREAM, 0, pipefd) < 0)
+        die("socketpair: %s", strerror(errno));
     capture_rd = pipefd[0];
     capture_wr = pipefd[1];
     fcntl(capture_rd, F_SETFL, fcntl(capture_rd, F_GETFL) | O_NONBLOCK);
 
-    ctx = modbus_new_rtu(port, (int)baud, parity, 8, stop_bits);
-    if (!ctx)
-        die("cannot create RTU context for %s: %s", port, modbus_strerror(errno));
-    if (modbus_connect(ctx) < 0) {
-        int e = errno;
-        modbus_free(ctx);
-        die("cannot open %s at %lu baud: %s", port, baud, modbus_strerror(e));
+    for (int i = 0; i < MAX_CLIENTS; i++)
+        clients[i] = -1;
+    if (tcp_mode) {
+        ctx = modbus_new_tcp("127.0.0.1", (int)tcp_port);
+        if (!ctx)
+            die("cannot create TCP context: %s", modbus_strerror(errno));
+        listen_fd = modbus_tcp_listen(ctx, MAX_CLIENTS);
+        if (listen_fd < 0) {
+            int e = errno;
+            modbus_free(ctx);
+            die("cannot listen on 127.0.0.1:%ld: %s", tcp_port, modbus_strerror(e));
+        }
+        struct sockaddr_in bound;
+        socklen_t bound_len = sizeof bound;
+        if (getsockname(listen_fd, (struct sockaddr *)&bound, &bound_len) < 0)
+            die("getsockname: %s", strerror(errno));
+        out_line("listening %u", (unsigned)ntohs(bound.sin_port));
+    } else {
+        ctx = modbus_new_rtu(port, (int)baud, parity, 8, stop_bits);
+        if (!ctx)
+            die("cannot create RTU context for %s: %s", port, modbus_strerror(errno));
+        if (modbus_connect(ctx) < 0) {
+            int e = errno;
+            modbus_free(ctx);
+            die("cannot open %s at %lu baud: %s", port, baud, modbus_strerror(e));
+        }
+        port_fd = modbus_get_socket(ctx);
     }
-    port_fd = modbus_get_socket(ctx);
 
     /* SIGTERM/SIGINT stay blocked except inside pselect(), so a signal can
      * neither be lost between the flag check and the wait nor cut a reply in
@@ -770,7 +944,20 @@ int main(int argc, char **argv)
         fd_set rfds;
         FD_ZERO(&rfds);
         FD_SET(STDIN_FILENO, &rfds);
-        FD_SET(port_fd, &rfds);
+        int maxfd = STDIN_FILENO;
+        if (tcp_mode) {
+            FD_SET(listen_fd, &rfds);
+            maxfd = listen_fd > maxfd ? listen_fd : maxfd;
+            for (int i = 0; i < MAX_CLIENTS; i++) {
+                if (clients[i] >= 0) {
+                    FD_SET(clients[i], &rfds);
+                    maxfd = clients[i] > maxfd ? clients[i] : maxfd;
+                }
+            }
+        } else {
+            FD_SET(port_fd, &rfds);
+            maxfd = port_fd > maxfd ? port_fd : maxfd;
+        }
 
         struct timespec ts, *tsp = NULL;
         if (rxlen > 0) {
@@ -781,7 +968,7 @@ int main(int argc, char **argv)
             ts.tv_nsec = (long)(left % 1000) * 1000000L;
             tsp = &ts;
         }
-        int n = pselect(port_fd + 1, &rfds, NULL, NULL, tsp, &waitmask);
+        int n = pselect(maxfd + 1, &rfds, NULL, NULL, tsp, &waitmask);
         if (n < 0) {
             if (errno == EINTR)
                 continue;
@@ -789,7 +976,14 @@ int main(int argc, char **argv)
             rc = 1;
             break;
         }
-        if (n > 0 && FD_ISSET(port_fd, &rfds)) {
+        if (tcp_mode && n > 0) {
+            for (int i = 0; i < MAX_CLIENTS; i++)
+                if (clients[i] >= 0 && FD_ISSET(clients[i], &rfds))
+                    read_client(i);
+            if (FD_ISSET(listen_fd, &rfds))
+                accept_client();
+        }
+        if (!tcp_mode && n > 0 && FD_ISSET(port_fd, &rfds)) {
             int r = read_port();
             if (r < 0) {
                 rc = 1;
@@ -807,7 +1001,13 @@ int main(int argc, char **argv)
     if (frames_bad > 0)
         fprintf(stderr, "%s: %lu frame(s) dropped for bad CRC, %lu good\n", prog, frames_bad,
                 frames_ok);
-    modbus_close(ctx);
+    for (int i = 0; i < MAX_CLIENTS; i++)
+        if (clients[i] >= 0)
+            close(clients[i]);
+    if (listen_fd >= 0)
+        close(listen_fd);
+    if (!tcp_mode)
+        modbus_close(ctx);
     modbus_free(ctx);
     close(capture_rd);
     close(capture_wr);
