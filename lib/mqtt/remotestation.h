@@ -57,6 +57,7 @@ public:
     // viewer's presence is published for a named station only (one last will per client).
     void setStation(const QString &station) { m_stationFilter = station; }
     void setSilenceLimit(int ms) { m_silenceLimitMs = ms; }
+    int silenceLimitMs() const { return m_silenceLimitMs; }
 
     bool start(const MqttSettings &broker, QString *error);
     // Says "gone" and disconnects cleanly.

@@ -99,9 +99,9 @@ void StationPublisher::addLine(const QString &name, Bus *bus)
         publish(m_scheme.deviceCondition(m_station, d.line, d.name), TopicScheme::conditionPayload(c));
     });
     m_lines << line;
-    publishStatus();
     publishLine(m_lines.last(), true);
     syncDevices(name);
+    publishStatus();
 }
 
 void StationPublisher::removeLine(const QString &name)
@@ -208,11 +208,13 @@ void StationPublisher::onConnected()
 void StationPublisher::publishAll()
 {
     m_messages = 0;
-    publishStatus();
+    // The status last: a viewer holds what an earlier run left retained as not live until
+    // "online" comes, and by then every line, device and value of this run is there.
     for (Line &line : m_lines)
         publishLine(line, true);
     for (auto it = m_devices.begin(); it != m_devices.end(); ++it)
         publishDevice(it.key());
+    publishStatus();
     emit statePublished(m_messages);
 }
 

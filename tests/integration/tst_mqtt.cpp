@@ -5,11 +5,14 @@
 // follow each time.
 #include "mosquittobroker.h"
 #include "bus/bus.h"
+#include "models/livevaluesmodel.h"
+#include "mqtt/remotelines.h"
 #include "mqtt/remotestation.h"
 #include "mqtt/stationpublisher.h"
 #include "protocol/valuecodec.h"
 #include "testpeers.h"
 
+#include <QAbstractItemModelTester>
 #include <QJsonDocument>
 #include <QJsonObject>
 
@@ -50,6 +53,7 @@ private slots:
     void changedValueArrives();
     void lostLineMakesValuesUnknown();
     void killedPublisherLeavesItsWill();
+    void remoteLinesShowWhatTheStationShows();
     void silentStationGoesStale();
     void terminatedPublisherSaysStopped();
     void brokerRestartLosesNothing();
@@ -292,6 +296,62 @@ void TstMqtt::killedPublisherLeavesItsWill()
     // A new publisher: current again.
     QVERIFY(startPublisher(brokerUrl()));
     QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 30000);
+}
+
+// The remote HMI's lines: the mirror's devices as MirroredLines under the same models a
+// station's own lines have. They show what the station published, and a dead station as
+// lost, with its values stale, never as current.
+void TstMqtt::remoteLinesShowWhatTheStationShows()
+{
+    QVERIFY(m_broker->start());
+    QVERIFY(startPublisher(brokerUrl()));
+    auto mirror = startMirror();
+    QVERIFY(mirror);
+    RemoteLines lines(mirror.get());
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 30000);
+    QCOMPARE(lines.lines().size(), 1);
+    MirroredLine *line = lines.lines().constFirst();
+    QCOMPARE(lines.stationOf(line), station);
+    QCOMPARE(line->devices().size(), 2);
+    QCOMPARE(line->state(), LineState::Connected);
+    const DeviceId ipc = line->device(QStringLiteral("ipc300"), 1);
+    QVERIFY(ipc >= 0);
+    QVERIFY(line->condition(ipc).isOnline());
+
+    LiveValuesModel values(line, ipc);
+    QAbstractItemModelTester tester(&values, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    const int row = values.rowOf(QStringLiteral("load_voltage"));
+    QVERIFY(row >= 0);
+    const QModelIndex index = values.index(row, LiveValuesModel::ValueColumn);
+    QTRY_COMPARE_WITH_TIMEOUT(values.data(index, LiveValuesModel::ValidityRole).toInt(), int(Validity::Current), 10000);
+    // The same text the station published, made here from the words through the map.
+    const RemoteDevice *remote = nullptr;
+    for (DeviceId id : mirror->devices()) {
+        if (mirror->device(id)->name == QLatin1String("ipc300@1"))
+            remote = mirror->device(id);
+    }
+    QVERIFY(remote);
+    QCOMPARE(values.data(index, LiveValuesModel::ValueWithUnitRole).toString(),
+             mirror->published(remote->id, QStringLiteral("load_voltage"))->text);
+
+    // A value changed in the simulator reaches the viewer's model.
+    const auto map = families().family(QStringLiteral("ipc300"));
+    const RegisterEntry *voltage = map->entry(QStringLiteral("load_voltage"));
+    QVERIFY(m_peer->setWords(1, voltage->address, ValueCodec::encodeFloat(187.5f, map->protocol.floatWordOrder)));
+    QTRY_COMPARE_WITH_TIMEOUT(values.data(index, LiveValuesModel::NumericRole).toDouble(), 187.5, 10000);
+
+    m_publisher->kill();
+    QVERIFY(m_publisher->waitForFinished(10000));
+    QTRY_COMPARE_WITH_TIMEOUT(line->state(), LineState::Lost, 2000);
+    QVERIFY2(line->stateReason().contains(QLatin1String("offline")), qPrintable(line->stateReason()));
+    QCOMPARE(line->condition(ipc).state, DeviceCondition::State::LineLost);
+    QCOMPARE(values.data(index, LiveValuesModel::ValidityRole).toInt(), int(Validity::Stale));
+    QVERIFY(!values.data(index, LiveValuesModel::NumericRole).isValid());
+
+    QVERIFY(startPublisher(brokerUrl()));
+    QTRY_COMPARE_WITH_TIMEOUT(line->state(), LineState::Connected, 30000);
+    QTRY_COMPARE_WITH_TIMEOUT(values.data(index, LiveValuesModel::ValidityRole).toInt(), int(Validity::Current), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(line->condition(ipc).isOnline(), 10000);
 }
 
 void TstMqtt::silentStationGoesStale()
