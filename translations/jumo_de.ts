@@ -9,7 +9,12 @@
         <translation>Gerät hinzufügen</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
+        <source>&amp;Line:</source>
+        <translation>&amp;Leitung:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>&amp;Family:</source>
         <translation>&amp;Familie:</translation>
     </message>
@@ -824,13 +829,18 @@ für ein Gerät öffnet nur dessen Leitung:
 <context>
     <name>jumo::ConnectionBar</name>
     <message>
-        <location filename="../ui/connectionbar.cpp" line="+21"/>
-        <location line="+117"/>
+        <location filename="../ui/connectionbar.cpp" line="+20"/>
+        <source>L&amp;ine:</source>
+        <translation>Le&amp;itung:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+142"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-106"/>
+        <location line="-127"/>
         <source>/dev/ttyUSB0 or tcp://HOST</source>
         <translation>/dev/ttyUSB0 oder tcp://HOST</translation>
     </message>
@@ -858,7 +868,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>Serielle Schnittstellen erneut auflisten</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>&amp;Port:</source>
         <translation>&amp;Port:</translation>
     </message>
@@ -878,7 +888,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>Getrennt</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+30"/>
         <source>Port: %1</source>
         <translation>Schnittstelle: %1</translation>
     </message>
@@ -2371,8 +2381,65 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
     <message>
         <location line="+44"/>
         <location line="+6"/>
+        <location filename="../ui/stationline.cpp" line="+79"/>
         <source>line lost: %1</source>
         <translation>Leitung verloren: %1</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::LineDialog</name>
+    <message>
+        <location filename="../ui/linedialog.cpp" line="+30"/>
+        <source>/dev/ttyUSB0, tcp://10.0.0.20:502 or rtu+tcp://10.0.0.21:4001</source>
+        <translation>/dev/ttyUSB0, tcp://10.0.0.20:502 oder rtu+tcp://10.0.0.21:4001</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Address:</source>
+        <translation>&amp;Adresse:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Baud:</source>
+        <translation>&amp;Baud:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Format:</source>
+        <translation>&amp;Format:</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>A line needs a name.</source>
+        <translation>Eine Leitung braucht einen Namen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A line&apos;s name has 1 to 32 letters (A-Z, a-z), digits, &apos;_&apos;, &apos;.&apos; or &apos;-&apos;.</source>
+        <translation>Der Name einer Leitung hat 1 bis 32 Buchstaben (A-Z, a-z), Ziffern, &apos;_&apos;, &apos;.&apos; oder &apos;-&apos;.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>There is a line named %1 already.</source>
+        <translation>Es gibt schon eine Leitung namens %1.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Choose or type the line&apos;s address.</source>
+        <translation>Adresse der Leitung wählen oder eingeben.</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::LineHeader</name>
+    <message>
+        <location filename="../ui/lineheader.cpp" line="+50"/>
+        <source>%1, devices: %2</source>
+        <translation>%1, Geräte: %2</translation>
     </message>
 </context>
 <context>
@@ -2436,7 +2503,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 <context>
     <name>jumo::MainWindow</name>
     <message>
-        <location filename="../ui/mainwindow.cpp" line="+74"/>
+        <location filename="../ui/mainwindow.cpp" line="+82"/>
         <location line="+4"/>
         <source>Time</source>
         <translation>Zeit</translation>
@@ -2503,28 +2570,28 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Meldung</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+17"/>
         <source>JUMO HMI [read-only]</source>
         <translation>JUMO HMI [Nur-Lese-Modus]</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+644"/>
+        <location line="+1091"/>
         <source>JUMO HMI</source>
         <translation>JUMO HMI</translation>
     </message>
     <message>
-        <location line="-642"/>
+        <location line="-1089"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location line="+148"/>
+        <location line="+156"/>
         <source>&amp;Line</source>
         <translation>&amp;Leitung</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;Connect</source>
         <translation>&amp;Verbinden</translation>
     </message>
@@ -2534,7 +2601,32 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>&amp;Trennen</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+3"/>
+        <source>Connect &amp;all lines</source>
+        <translation>&amp;Alle Leitungen verbinden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Disc&amp;onnect all lines</source>
+        <translation>A&amp;lle Leitungen trennen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;New line...</source>
+        <translation>&amp;Neue Leitung...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Edit the line...</source>
+        <translation>Leitung &amp;bearbeiten...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Remove the line...</source>
+        <translation>Leitung &amp;entfernen...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>&amp;Add a device...</source>
         <translation>Gerät &amp;hinzufügen...</translation>
     </message>
@@ -2544,7 +2636,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Inbetriebnahme&amp;bericht des angezeigten Geräts...</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+23"/>
         <source>commissioning-report-%1-%2.pdf</source>
         <translation>inbetriebnahmebericht-%1-%2.pdf</translation>
     </message>
@@ -2619,13 +2711,14 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>&amp;Kompakte Übersicht</translation>
     </message>
     <message>
-        <location line="+60"/>
-        <location line="+45"/>
+        <location line="+65"/>
+        <location line="+209"/>
+        <location line="+34"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-375"/>
+        <location line="-646"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -2640,12 +2733,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Alarmjournal</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Write audit log</source>
         <translation>Schreibprotokoll</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+58"/>
         <source>Add...</source>
         <translation>Hinzufügen...</translation>
     </message>
@@ -2660,22 +2753,115 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Entfernen</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+44"/>
         <source>READ-ONLY</source>
         <translation>NUR LESEN</translation>
     </message>
     <message>
-        <location line="+598"/>
+        <location line="+507"/>
+        <source>Choose or type the line&apos;s address first: a serial port, tcp://HOST[:PORT] or rtu+tcp://HOST:PORT.</source>
+        <translation>Wählen Sie zuerst die Adresse der Leitung oder geben Sie sie ein: eine serielle Schnittstelle, tcp://HOST[:PORT] oder rtu+tcp://HOST:PORT.</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>no address</source>
+        <translation>keine Adresse</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Not connected:
+%1</source>
+        <translation>Nicht verbunden:
+%1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>New line</source>
+        <translation>Neue Leitung</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Edit line</source>
+        <translation>Leitung bearbeiten</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Disconnect line %1 first.</source>
+        <translation>Zuerst Leitung %1 trennen.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Edit line %1</source>
+        <translation>Leitung %1 bearbeiten</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <location line="+13"/>
+        <source>Remove line</source>
+        <translation>Leitung entfernen</translation>
+    </message>
+    <message>
+        <location line="-12"/>
+        <source>%1 is the only line; change its address with Edit instead.</source>
+        <translation>%1 ist die einzige Leitung; ihre Adresse lässt sich stattdessen mit Bearbeiten ändern.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Remove line %1 from the station?</source>
+        <translation>Leitung %1 aus der Station entfernen?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Devices removed with it: %1 (%2).</source>
+        <translation>Mit ihr entfernte Geräte: %1 (%2).</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>%1 connected</source>
+        <translation>%1 verbunden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 lost</source>
+        <translation>%1 verloren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 disconnected</source>
+        <translation>%1 getrennt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lines: %1</source>
+        <translation>Leitungen: %1</translation>
+    </message>
+    <message>
+        <location line="+116"/>
+        <source>%1 on line %2</source>
+        <translation>%1 an Leitung %2</translation>
+    </message>
+    <message>
+        <location line="+138"/>
+        <source>Connect line %1 first, or choose a connected line.</source>
+        <translation>Zuerst Leitung %1 verbinden oder eine verbundene Leitung wählen.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Scan line %1</source>
+        <translation>Leitung %1 durchsuchen</translation>
+    </message>
+    <message>
+        <location line="+90"/>
         <source>Data logging of %1 stopped: %2</source>
         <translation>Datenaufzeichnung von %1 angehalten: %2</translation>
     </message>
     <message>
-        <location line="-562"/>
+        <location line="-641"/>
         <source>address %1: %2</source>
         <translation>Adresse %1: %2</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="-314"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -2685,7 +2871,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+18"/>
         <source>&amp;Devices</source>
         <translation>&amp;Geräte</translation>
     </message>
@@ -2721,19 +2907,19 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
     </message>
     <message>
         <location line="+11"/>
-        <location line="+21"/>
+        <location line="+24"/>
         <source>Report</source>
         <translation>Bericht</translation>
     </message>
     <message>
-        <location line="-42"/>
+        <location line="-45"/>
         <location line="+10"/>
         <location line="+11"/>
         <source>Open the page of a device first.</source>
         <translation>Zuerst die Seite eines Geräts öffnen.</translation>
     </message>
     <message numerus="yes">
-        <location line="-101"/>
+        <location line="-116"/>
         <source>Not logged (%n record(s) so far): %1</source>
         <translation>
             <numerusform>Nicht protokolliert (bisher %n Eintrag): %1</numerusform>
@@ -2741,7 +2927,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         </translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+136"/>
         <source>Commissioning report</source>
         <translation>Inbetriebnahmebericht</translation>
     </message>
@@ -2793,22 +2979,27 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Nächster &amp;Reiter der Geräteseite</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+104"/>
+        <source>Add device</source>
+        <translation>Gerät hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 @ %2 is on line %3 already.</source>
+        <translation>%1 @ %2 ist schon an Leitung %3.</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>Demo line failed: %1</source>
         <translation>Demo-Leitung fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+17"/>
         <source>Starting the simulated demo line...</source>
         <translation>Simulierte Demo-Leitung wird gestartet...</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>Choose or type a serial port first.</source>
-        <translation>Zuerst eine serielle Schnittstelle wählen oder eingeben.</translation>
-    </message>
-    <message>
-        <location line="+18"/>
+        <location line="+346"/>
         <source>Connected to %1</source>
         <translation>Verbunden mit %1</translation>
     </message>
@@ -2823,7 +3014,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Getrennt</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+32"/>
         <source>Line: %1</source>
         <translation>Leitung: %1</translation>
     </message>
@@ -2846,27 +3037,27 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>keine Fehler</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+19"/>
         <source>the family is not checked against the device (--no-identify)</source>
         <translation>die Familie wird nicht am Gerät geprüft (--no-identify)</translation>
     </message>
     <message>
-        <location line="+137"/>
+        <location line="+176"/>
         <source>Scan</source>
         <translation>Suchen</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+3"/>
         <source>Connect to a line first.</source>
         <translation>Zuerst mit einer Leitung verbinden.</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+78"/>
         <source>Commissioning report of %1</source>
         <translation>Inbetriebnahmebericht von %1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-18"/>
         <source>no device %1@%2</source>
         <translation>kein Gerät %1@%2</translation>
     </message>
@@ -3665,6 +3856,29 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+20"/>
         <source>cannot read the password file %1: %2</source>
         <translation>Die Passwortdatei %1 ist nicht lesbar: %2</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::NavigationList</name>
+    <message>
+        <location filename="../ui/navigationlist.cpp" line="+117"/>
+        <source>connected</source>
+        <translation>verbunden</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>lost</source>
+        <translation>verloren</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>disconnected</source>
+        <translation>getrennt</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -5075,6 +5289,39 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
 </context>
 <context>
+    <name>jumo::RemoteLines</name>
+    <message>
+        <location filename="../lib/mqtt/remotelines.cpp" line="+161"/>
+        <source>the station has not reported this line</source>
+        <translation>die Station hat diese Leitung nicht gemeldet</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>the broker cannot be reached: values are the last ones received</source>
+        <translation>der Broker ist nicht erreichbar: die Werte sind die zuletzt empfangenen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>station %1 has not said that it is online</source>
+        <translation>Station %1 hat nicht gemeldet, dass sie online ist</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>station %1 was stopped</source>
+        <translation>Station %1 wurde beendet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>station %1 is offline (%2)</source>
+        <translation>Station %1 ist offline (%2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>station %1 has not been heard for %2 s</source>
+        <translation>von Station %1 kam seit %2 s nichts</translation>
+    </message>
+</context>
+<context>
     <name>jumo::ReportDetailsDialog</name>
     <message>
         <location filename="../ui/reportdetailsdialog.cpp" line="+22"/>
@@ -5517,6 +5764,34 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
 </context>
 <context>
+    <name>jumo::StationLine</name>
+    <message>
+        <location filename="../ui/stationline.cpp" line="-4"/>
+        <source>Connected</source>
+        <translation>Verbunden</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Line lost since %1</source>
+        <translation>Leitung verloren seit %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Line lost since %1: %2</source>
+        <translation>Leitung verloren seit %1: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Disconnected</source>
+        <translation>Getrennt</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Disconnected: %1</source>
+        <translation>Getrennt: %1</translation>
+    </message>
+</context>
+<context>
     <name>jumo::TcpTransport</name>
     <message>
         <location filename="../lib/bus/tcptransport.cpp" line="+21"/>
@@ -5586,7 +5861,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::TrafficView</name>
     <message>
-        <location filename="../ui/trafficview.cpp" line="+26"/>
+        <location filename="../ui/trafficview.cpp" line="+27"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
@@ -5604,6 +5879,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+0"/>
         <source>CRC errors</source>
         <translation>CRC-Fehler</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Line</source>
+        <translation>Leitung</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5636,7 +5916,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Pause</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+33"/>
         <source>(no reply)</source>
         <translation>(keine Antwort)</translation>
     </message>
@@ -5646,7 +5926,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>  %1 ms</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+28"/>
         <location line="+1"/>
         <location line="+1"/>
         <source>%1 ms</source>
@@ -9558,7 +9838,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+36"/>
+        <location filename="../app/jumo-hmi.cpp" line="+37"/>
         <source>JUMO commissioning and monitoring HMI.</source>
         <translation>JUMO-HMI für Inbetriebnahme und Überwachung.</translation>
     </message>
@@ -9573,12 +9853,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Leitwarten-Modus: Es wird nie etwas auf die Geräte geschrieben.</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Open the page of this device, e.g. ipc300@1.</source>
-        <translation>Die Seite dieses Geräts öffnen, z. B. ipc300@1.</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>With --show: open this tab of the device page (0 = live values).</source>
         <translation>Mit --show: diese Registerkarte der Geräteseite öffnen (0 = Live-Werte).</translation>
     </message>
@@ -9598,12 +9873,27 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Datenformat für --port (Standard 8N1).</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>A device to monitor, e.g. ipc300@1 (repeatable).</source>
-        <translation>Ein zu überwachendes Gerät, z. B. ipc300@1 (mehrfach möglich).</translation>
+        <location line="-13"/>
+        <source>Open the page of this device, e.g. ipc300@1 (line2/ipc300@1 with several lines).</source>
+        <translation>Die Seite dieses Geräts öffnen, z. B. ipc300@1 (line2/ipc300@1 bei mehreren Leitungen).</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+16"/>
+        <source>A line of this run, repeatable: ADDRESS[,name=NAME][,baud=N][,format=8N1][,timeout=MS][,min-response=MS][,retries=N][,read-only]; ADDRESS is a serial port, tcp://HOST:PORT or rtu+tcp://HOST:PORT. The lines kept in the settings are left as they are.</source>
+        <translation>Eine Leitung dieses Laufs, wiederholbar: ADRESSE[,name=NAME][,baud=N][,format=8N1][,timeout=MS][,min-response=MS][,retries=N][,read-only]; ADRESSE ist eine serielle Schnittstelle, tcp://HOST:PORT oder rtu+tcp://HOST:PORT. Die in den Einstellungen gespeicherten Leitungen bleiben, wie sie sind.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The lines and devices of this run from a station file (JSON, see README); the kept lines are left as they are.</source>
+        <translation>Die Leitungen und Geräte dieses Laufs aus einer Stationsdatei (JSON, siehe README); die gespeicherten Leitungen bleiben, wie sie sind.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A device to monitor, e.g. ipc300@1, or line2/ipc300@1 with several lines (repeatable).</source>
+        <translation>Ein zu beobachtendes Gerät, z. B. ipc300@1, oder line2/ipc300@1 bei mehreren Leitungen (wiederholbar).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Trust the named families without checking the devices&apos; identity registers (for devices that cannot report them); the write audit log records it.</source>
         <translation>Den angegebenen Familien vertrauen, ohne die Identitätsregister der Geräte zu prüfen (für Geräte, die sie nicht melden können); das Schreibprotokoll vermerkt es.</translation>
     </message>
@@ -9628,7 +9918,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>jumo-hmi: unbekanntes Farbschema „%1“ (system, light, dark oder high-contrast)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+14"/>
+        <source>give the lines one way: --port, --line (repeatable), --station or --demo</source>
+        <translation>die Leitungen auf eine Weise angeben: --port, --line (wiederholbar), --station oder --demo</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>the station has no lines</source>
+        <translation>die Station hat keine Leitungen</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Map files refused: %1</source>
         <translation>Map-Dateien abgelehnt: %1</translation>
     </message>
