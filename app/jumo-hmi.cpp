@@ -7,6 +7,7 @@
 #include "modbuslogging.h"
 #include "quitonsignal.h"
 #include "protocol/translations.h"
+#include "remotewindow.h"
 #include "jumoversion.h"
 
 #include "theme.h"
@@ -18,6 +19,60 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QTabWidget>
+
+namespace {
+
+// The control-room viewer: nothing but the broker. Options that name a line or a device,
+// or that would write, have no meaning here and are refused rather than ignored.
+int runRemote(QApplication &app, const QCommandLineParser &parser, const jumo::FamilyRegistry &registry,
+              const QString &theme)
+{
+    auto usage = [](const QString &message) {
+        QTextStream(stderr) << QStringLiteral("jumo-hmi: ") << message << Qt::endl;
+        return 2;
+    };
+    for (const char *option : {"demo", "port", "line", "station", "device", "no-identify", "show", "tab"}) {
+        if (parser.isSet(QLatin1String(option)))
+            return usage(QApplication::translate("main", "--%1 does not go with --remote: a remote view reads the "
+                                                         "broker only")
+                                 .arg(QLatin1String(option)));
+    }
+    QString error;
+    std::optional<jumo::MqttSettings> broker = jumo::MqttSettings::fromUrl(parser.value(QStringLiteral("remote")), &error);
+    if (!broker)
+        return usage(error);
+    if (parser.isSet(QStringLiteral("password-file"))) {
+        const std::optional<QString> password =
+                jumo::MqttSettings::passwordFromFile(parser.value(QStringLiteral("password-file")), &error);
+        if (!password)
+            return usage(error);
+        broker->password = *password;
+    } else {
+        broker->password = qEnvironmentVariable("JUMO_MQTT_PASSWORD");
+    }
+    broker->caFile = parser.value(QStringLiteral("tls-ca"));
+    broker->certFile = parser.value(QStringLiteral("tls-cert"));
+    broker->keyFile = parser.value(QStringLiteral("tls-key"));
+    if (!broker->caFile.isEmpty() || !broker->certFile.isEmpty())
+        broker->tls = true;
+    if (broker->certFile.isEmpty() != broker->keyFile.isEmpty())
+        return usage(QApplication::translate("main", "--tls-cert and --tls-key go together"));
+    const QString kept = QSettings(QStringLiteral("jumo"), QStringLiteral("jumo-hmi")).value(QStringLiteral("theme")).toString();
+    jumo::Theme::apply(jumo::Theme::fromName(theme.isEmpty() ? kept : theme).value_or(jumo::Theme::Kind::System));
+
+    jumo::RemoteWindow::Options options;
+    options.broker = *broker;
+    options.station = parser.value(QStringLiteral("remote-station"));
+    options.prefix = parser.value(QStringLiteral("mqtt-prefix"));
+    jumo::RemoteWindow window(registry, options);
+    if (!window.start(&error))
+        return usage(error);
+    window.resize(1280, 800);
+    window.show();
+    return app.exec();
+}
+
+} // namespace
 
 int main(int argc, char *argv[])
 {
@@ -80,6 +135,30 @@ int main(int argc, char *argv[])
                       QApplication::translate("main", "Colours for this run: system, light, dark or high-contrast "
                                                       "(default: the theme chosen in the View menu, else system)."),
                       QStringLiteral("name")});
+    parser.addOption({QStringLiteral("remote"),
+                      QApplication::translate("main", "Control-room viewer: show the stations that publish to this "
+                                                      "MQTT broker (mqtt://[USER@]HOST[:PORT] or mqtts://...), with no "
+                                                      "Modbus access and nothing that can write."),
+                      QStringLiteral("url")});
+    parser.addOption({QStringLiteral("remote-station"),
+                      QApplication::translate("main", "With --remote: only this station (default: every station)."),
+                      QStringLiteral("name")});
+    parser.addOption({QStringLiteral("mqtt-prefix"),
+                      QApplication::translate("main", "With --remote: the topic prefix (default jumo)."),
+                      QStringLiteral("prefix"), QStringLiteral("jumo")});
+    parser.addOption({QStringLiteral("password-file"),
+                      QApplication::translate("main", "With --remote: a file whose first line is the broker password "
+                                                      "(else JUMO_MQTT_PASSWORD; never on the command line)."),
+                      QStringLiteral("file")});
+    parser.addOption({QStringLiteral("tls-ca"),
+                      QApplication::translate("main", "With --remote: the CA certificate that signed the broker's."),
+                      QStringLiteral("file")});
+    parser.addOption({QStringLiteral("tls-cert"),
+                      QApplication::translate("main", "With --remote: a client certificate (with --tls-key)."),
+                      QStringLiteral("file")});
+    parser.addOption({QStringLiteral("tls-key"),
+                      QApplication::translate("main", "With --remote: the client certificate's key."),
+                      QStringLiteral("file")});
     parser.addOption({QStringLiteral("report-startup"),
                       QApplication::translate("main", "Print on stderr when the first live value arrives.")});
     parser.addOption({QStringLiteral("verbose"),
@@ -100,6 +179,16 @@ int main(int argc, char *argv[])
                                        .arg(options.theme)
                             << Qt::endl;
         return 2;
+    }
+    if (parser.isSet(QStringLiteral("remote")))
+        return runRemote(app, parser, registry, options.theme);
+    for (const char *option : {"remote-station", "password-file", "tls-ca", "tls-cert", "tls-key"}) {
+        if (parser.isSet(QLatin1String(option))) {
+            QTextStream(stderr) << QApplication::translate("main", "jumo-hmi: --%1 goes with --remote only")
+                                           .arg(QLatin1String(option))
+                                << Qt::endl;
+            return 2;
+        }
     }
     // --line and --station make the station of this run; --port stays one line as before.
     if (parser.isSet(QStringLiteral("line")) || parser.isSet(QStringLiteral("station"))) {

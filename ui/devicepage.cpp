@@ -20,11 +20,23 @@
 namespace jumo {
 
 DevicePage::DevicePage(Bus *bus, int device, LiveValuesModel *values, AlarmBitsModel *alarms, QWidget *parent)
+    : DevicePage(bus, bus, device, values, alarms, parent)
+{
+}
+
+DevicePage::DevicePage(const DeviceSource *devices, int device, LiveValuesModel *values, AlarmBitsModel *alarms,
+                       QWidget *parent)
+    : DevicePage(devices, nullptr, device, values, alarms, parent)
+{
+}
+
+DevicePage::DevicePage(const DeviceSource *devices, Bus *bus, int device, LiveValuesModel *values,
+                       AlarmBitsModel *alarms, QWidget *parent)
     : QWidget(parent), m_device(device), m_values(values), m_alarms(alarms), m_tabs(new QTabWidget(this)),
       m_readOnlyBanner(new QLabel(this)), m_identityBanner(new QLabel(this))
 {
-    const RegisterMap &map = *bus->deviceMap(device);
-    setObjectName(QStringLiteral("device_%1_%2").arg(map.family).arg(bus->deviceAddress(device)));
+    const RegisterMap &map = *devices->deviceMap(device);
+    setObjectName(QStringLiteral("device_%1_%2").arg(map.family).arg(devices->deviceAddress(device)));
     m_readOnlyBanner->setObjectName(QStringLiteral("readOnlyBanner"));
     m_readOnlyBanner->setText(tr("Read-only mode: values are shown, nothing is written to the device."));
     m_readOnlyBanner->setStyleSheet(Theme::bannerStyle(Theme::Role::InfoBanner, Theme::Role::InfoBannerText));
@@ -36,7 +48,7 @@ DevicePage::DevicePage(Bus *bus, int device, LiveValuesModel *values, AlarmBitsM
 
     auto *valuesTab = new QWidget(this);
     auto *valuesLayout = new QVBoxLayout(valuesTab);
-    valuesLayout->addWidget(new IdentityPanel(map, bus->deviceAddress(device), m_values, valuesTab));
+    valuesLayout->addWidget(new IdentityPanel(map, devices->deviceAddress(device), m_values, valuesTab));
     m_valuesView = new LiveValuesView(m_values, valuesTab);
     m_valuesView->setObjectName(QStringLiteral("liveValues"));
     valuesLayout->addWidget(m_valuesView);
@@ -50,6 +62,19 @@ DevicePage::DevicePage(Bus *bus, int device, LiveValuesModel *values, AlarmBitsM
     connect(m_alarms, &AlarmBitsModel::activeAlarmsChanged, this, showCount);
     showCount(m_alarms->activeAlarms());
 
+    if (bus)
+        addWriteTabs(bus, device, map);
+    m_trend = new TrendView(m_values, map.overview, this);
+    m_tabs->addTab(m_trend, tr("Trend"));
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_readOnlyBanner);
+    layout->addWidget(m_identityBanner);
+    layout->addWidget(m_tabs);
+}
+
+void DevicePage::addWriteTabs(Bus *bus, int device, const RegisterMap &map)
+{
     m_controls = new ControlsPanel(bus, device, map,
                                    {"setpoint", "analog_output", "digital_output", "external_input", "alpha",
                                     "setpoint_select", "parameter_set_select", "binary_outputs", "switches", "command", "override"},
@@ -72,20 +97,15 @@ DevicePage::DevicePage(Bus *bus, int device, LiveValuesModel *values, AlarmBitsM
         m_program = program;
         m_tabs->addTab(m_program, tr("Program"));
     }
-    m_trend = new TrendView(m_values, bus->deviceMap(device)->overview, this);
-    m_tabs->addTab(m_trend, tr("Trend"));
-
-    auto *layout = new QVBoxLayout(this);
-    layout->addWidget(m_readOnlyBanner);
-    layout->addWidget(m_identityBanner);
-    layout->addWidget(m_tabs);
 }
 
 void DevicePage::setReadOnly(bool readOnly)
 {
     m_readOnlyBanner->setVisible(readOnly);
-    m_controls->setReadOnly(readOnly);
-    m_parameters->setReadOnly(readOnly);
+    if (m_controls)
+        m_controls->setReadOnly(readOnly);
+    if (m_parameters)
+        m_parameters->setReadOnly(readOnly);
     if (m_program)
         m_program->setReadOnly(readOnly);
 }

@@ -27,6 +27,10 @@ class DevicePage : public QWidget
 public:
     // The models belong to the caller: they outlive the page, which is made when first shown.
     DevicePage(Bus *bus, int device, LiveValuesModel *values, AlarmBitsModel *alarms, QWidget *parent = nullptr);
+    // A page that only shows (a remote viewer's): live values, LEDs and trend, with no
+    // controls, parameters or program, since there is nothing to write with.
+    DevicePage(const DeviceSource *devices, int device, LiveValuesModel *values, AlarmBitsModel *alarms,
+               QWidget *parent = nullptr);
 
     void setReadOnly(bool readOnly);
     // A banner says why nothing is shown or written while another device answers or the
@@ -45,14 +49,20 @@ public:
     void restyle(const DeviceCondition &condition);
 
 private:
+    DevicePage(const DeviceSource *devices, Bus *writer, int device, LiveValuesModel *values, AlarmBitsModel *alarms,
+               QWidget *parent);
+    // Controls, parameters and program: the tabs that write.
+    void addWriteTabs(Bus *bus, int device, const RegisterMap &map);
+
     int m_device;
     LiveValuesModel *m_values;
     AlarmBitsModel *m_alarms;
     QTabWidget *m_tabs;
     LiveValuesView *m_valuesView;
     LedGrid *m_leds;
-    ControlsPanel *m_controls;
-    ParameterEditor *m_parameters;
+    // Null on a page that only shows.
+    ControlsPanel *m_controls = nullptr;
+    ParameterEditor *m_parameters = nullptr;
     ControlsPanel *m_program = nullptr;
     TrendView *m_trend;
     QLabel *m_readOnlyBanner;

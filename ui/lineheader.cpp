@@ -11,10 +11,26 @@
 namespace jumo {
 
 LineHeader::LineHeader(StationLine *line, QWidget *parent)
-    : QFrame(parent), m_line(line), m_name(new QLabel(this)), m_address(new ElidedLabel(this)),
+    : QFrame(parent), m_line(line), m_lineName(line->name()), m_name(new QLabel(this)),
+      m_address(new ElidedLabel(this)), m_state(new ElidedLabel(this))
+{
+    build();
+    connect(line, &StationLine::stateChanged, this, &LineHeader::refresh);
+    connect(line, &StationLine::changed, this, &LineHeader::refresh);
+    refresh();
+}
+
+LineHeader::LineHeader(const QString &name, QWidget *parent)
+    : QFrame(parent), m_lineName(name), m_name(new QLabel(this)), m_address(new ElidedLabel(this)),
       m_state(new ElidedLabel(this))
 {
-    setObjectName(QStringLiteral("lineHeader_") + line->name());
+    build();
+    display(QString(), 0, LineState::Disconnected, tr("Disconnected"));
+}
+
+void LineHeader::build()
+{
+    setObjectName(QStringLiteral("lineHeader_") + m_lineName);
     m_name->setObjectName(QStringLiteral("lineName"));
     m_address->setObjectName(QStringLiteral("lineAddress"));
     m_state->setObjectName(QStringLiteral("lineHeaderState"));
@@ -32,9 +48,6 @@ LineHeader::LineHeader(StationLine *line, QWidget *parent)
     layout->addWidget(m_address, 1);
     layout->addWidget(m_state, 2);
     setCursor(Qt::PointingHandCursor);
-    connect(line, &StationLine::stateChanged, this, &LineHeader::refresh);
-    connect(line, &StationLine::changed, this, &LineHeader::refresh);
-    refresh();
 }
 
 QString LineHeader::stateText() const
@@ -44,15 +57,22 @@ QString LineHeader::stateText() const
 
 void LineHeader::refresh()
 {
-    setObjectName(QStringLiteral("lineHeader_") + m_line->name());
-    m_name->setText(m_line->name());
-    const int devices = int(m_line->bus()->devices().size());
-    m_address->setFullText(tr("%1, devices: %2").arg(m_line->settings().portName).arg(devices));
+    if (!m_line)
+        return;
+    m_lineName = m_line->name();
+    display(m_line->settings().portName, int(m_line->bus()->devices().size()), m_line->state(), m_line->stateText());
+}
+
+void LineHeader::display(const QString &address, int devices, LineState state, const QString &stateText)
+{
+    setObjectName(QStringLiteral("lineHeader_") + m_lineName);
+    m_name->setText(m_lineName);
+    m_address->setFullText(tr("%1, devices: %2").arg(address).arg(devices));
     // A mark that says the state without its colour: a filled dot, a cross, a ring.
     QString mark;
     Theme::Role band = Theme::Role::NeutralBanner;
     Theme::Role text = Theme::Role::NeutralBannerText;
-    switch (m_line->state()) {
+    switch (state) {
     case LineState::Connected:
         mark = QStringLiteral("\u25CF ");
         band = Theme::Role::TileOk;
@@ -67,8 +87,8 @@ void LineHeader::refresh()
         mark = QStringLiteral("\u25CB ");
         break;
     }
-    m_state->setFullText(mark + m_line->stateText());
-    setToolTip(QStringLiteral("%1\n%2\n%3").arg(m_line->name(), m_line->settings().portName, m_line->stateText()));
+    m_state->setFullText(mark + stateText);
+    setToolTip(QStringLiteral("%1\n%2\n%3").arg(m_lineName, address, stateText));
     setStyleSheet(QStringLiteral("jumo--LineHeader { background: %1; border-radius: 3px }"
                                  " QLabel { color: %2; background: transparent }")
                           .arg(Theme::color(band).name(), Theme::color(text).name()));

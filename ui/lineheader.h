@@ -3,6 +3,8 @@
 // that say the same (never the colour alone). Clicking it makes the line the current one.
 #pragma once
 
+#include "bus/devicesource.h"
+
 #include <QFrame>
 
 class QLabel;
@@ -18,8 +20,12 @@ class LineHeader : public QFrame
 
 public:
     explicit LineHeader(StationLine *line, QWidget *parent = nullptr);
+    // A header its owner feeds through display() (a remote line's).
+    explicit LineHeader(const QString &name, QWidget *parent = nullptr);
 
+    // Null for a header fed by its owner.
     StationLine *line() const { return m_line; }
+    void display(const QString &address, int devices, LineState state, const QString &stateText);
     // The state text as shown ("Line lost: ..."), for tests.
     QString stateText() const;
     // Reads the line's name, address, devices and state again; also after a theme change.
@@ -32,7 +38,10 @@ protected:
     void mouseReleaseEvent(QMouseEvent *event) override;
 
 private:
-    StationLine *m_line;
+    void build();
+
+    StationLine *m_line = nullptr;
+    QString m_lineName;
     QLabel *m_name;
     ElidedLabel *m_address;
     ElidedLabel *m_state;

@@ -1,13 +1,13 @@
 #include "bus/mirroredline.h"
 
 #include <atomic>
+#include <chrono>
 #include <limits>
 
 namespace jumo {
 
 MirroredLine::MirroredLine(const QString &name, QObject *parent) : DeviceSource(parent), m_name(name)
 {
-    m_clock.start();
 }
 
 DeviceId MirroredLine::addDevice(std::shared_ptr<const RegisterMap> map, quint8 address)
@@ -79,11 +79,19 @@ void MirroredLine::setCondition(DeviceId id, const DeviceCondition &condition)
 
 void MirroredLine::setState(LineState state, const QString &reason)
 {
-    m_stateReason = reason;
-    if (state == m_state)
+    // A new reason for the same state is news too ("not online yet" becomes the station's
+    // own word for the loss).
+    if (state == m_state && reason == m_stateReason)
         return;
     m_state = state;
+    m_stateReason = reason;
     emit stateChanged(state);
+}
+
+qint64 MirroredLine::clockMs() const
+{
+    return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch())
+            .count();
 }
 
 std::shared_ptr<const RegisterMap> MirroredLine::deviceMap(DeviceId id) const

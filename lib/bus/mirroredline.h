@@ -41,7 +41,8 @@ public:
     const EntryState *entryState(DeviceId id, const QString &entryId) const override;
     DeviceCondition condition(DeviceId id) const override;
     LineState state() const override { return m_state; }
-    qint64 clockMs() const override { return m_clock.elapsed(); }
+    // The machine's monotonic clock, as the RemoteStation's: times handed in need no shift.
+    qint64 clockMs() const override;
 
 private:
     struct Device
@@ -57,7 +58,6 @@ private:
     QList<DeviceId> m_order;
     LineState m_state = LineState::Disconnected;
     QString m_stateReason;
-    QElapsedTimer m_clock;
 };
 
 } // namespace jumo

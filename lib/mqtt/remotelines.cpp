@@ -102,18 +102,11 @@ void RemoteLines::onEntriesUpdated(DeviceId remote, const QStringList &ids)
     const Mirrored m = m_mirrored.value(remote);
     if (!m.line)
         return;
-    // The mirror's times are on the RemoteStation's clock; the line's views read ages
-    // against the line's own clock.
-    const qint64 shift = m.line->clockMs() - m_station->clockMs();
+    // Both keep times on the machine's monotonic clock: the states are taken as they are.
     QHash<QString, EntryState> states;
     for (const QString &entryId : ids) {
         const EntryState *s = m_station->entryState(remote, entryId);
-        EntryState copy = s ? *s : EntryState{};
-        if (copy.updatedMs >= 0)
-            copy.updatedMs += shift;
-        if (copy.goodMs >= 0)
-            copy.goodMs += shift;
-        states.insert(entryId, copy);
+        states.insert(entryId, s ? *s : EntryState{});
     }
     m.line->setEntries(m.id, states);
 }

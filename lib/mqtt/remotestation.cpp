@@ -24,7 +24,6 @@ std::atomic<DeviceId> nextRemoteId{1 << 24};
 RemoteStation::RemoteStation(const FamilyRegistry &registry, QObject *parent)
     : QObject(parent), m_registry(registry)
 {
-    m_clock.start();
     connect(&m_client, &MqttClient::connected, this, &RemoteStation::onConnected);
     connect(&m_client, &MqttClient::disconnected, this, [this](const QString &reason) {
         emit connectionChanged(false, reason);
@@ -33,6 +32,12 @@ RemoteStation::RemoteStation(const FamilyRegistry &registry, QObject *parent)
     });
     connect(&m_client, &MqttClient::messageReceived, this,
             [this](const QString &topic, const QByteArray &payload, bool) { onMessage(topic, payload); });
+}
+
+qint64 RemoteStation::monotonicMs()
+{
+    return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch())
+            .count();
 }
 
 RemoteStation::~RemoteStation() = default;

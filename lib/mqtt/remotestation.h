@@ -87,7 +87,11 @@ public:
     const ValueMessage *published(DeviceId id, const QString &entryId) const;
     QStringList entryIds(DeviceId id) const;
     // The monotonic clock of EntryState times (goodMs, updatedMs).
-    qint64 clockMs() const { return m_clock.elapsed(); }
+    // The machine's monotonic clock (ms since it started), the same for every mirror and
+    // mirrored line in the process: a time taken here means the same there, and the age of
+    // a value read long before this program started is still positive.
+    qint64 clockMs() const { return monotonicMs(); }
+    static qint64 monotonicMs();
 
 signals:
     void connectionChanged(bool connected, const QString &reason);
@@ -130,7 +134,6 @@ private:
     TopicScheme m_scheme;
     QString m_stationFilter;
     int m_silenceLimitMs = 2000;
-    QElapsedTimer m_clock;
     QMap<QString, Station> m_stations;
     QMap<DeviceId, RemoteDevice> m_devices;
     QHash<QString, DeviceId> m_deviceByKey;   // "station/line/family@address"
