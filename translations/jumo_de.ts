@@ -3775,7 +3775,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::MqttClient</name>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="+101"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="+36"/>
+        <source>the broker did not answer within the keepalive time</source>
+        <translation>der Broker hat innerhalb der Keepalive-Zeit nicht geantwortet</translation>
+    </message>
+    <message>
+        <location line="+68"/>
         <source>cannot make an MQTT client: %1</source>
         <translation>MQTT-Client lässt sich nicht anlegen: %1</translation>
     </message>

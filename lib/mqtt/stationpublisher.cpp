@@ -20,9 +20,12 @@ StationPublisher::StationPublisher(const MqttSettings &broker, const QString &pr
     m_heartbeat.setInterval(1000);
     connect(&m_heartbeat, &QTimer::timeout, this, [this] {
         const QByteArray payload = TopicScheme::heartbeatPayload(QDateTime::currentDateTimeUtc());
-        m_sentHeartbeats.append(payload);
-        if (m_sentHeartbeats.size() > 16)
-            m_sentHeartbeats.removeFirst();
+        if (!m_client.isConnected())
+            return;
+        m_sentHeartbeats.insert(payload);
+        m_sentOrder.enqueue(payload);
+        if (m_sentOrder.size() > 1000)
+            m_sentHeartbeats.remove(m_sentOrder.dequeue());
         publish(m_scheme.heartbeat(m_station), payload, false);
     });
     // Two publishers given one station name (a copied unit file, a forgotten test run):

@@ -13,6 +13,8 @@
 #include <QHash>
 #include <QList>
 #include <QObject>
+#include <QQueue>
+#include <QSet>
 #include <QPointer>
 #include <QTimer>
 
@@ -100,7 +102,10 @@ private:
     QTimer m_stopDeadline;
     bool m_stopping = false;
     bool m_stopSignalled = false;
-    QList<QByteArray> m_sentHeartbeats;   // the last few, to know our own when they come back
+    // Ours, to know them when they come back: also those a stalled broker passes on
+    // late, after a reconnect (a QSet for the look-up, the queue for the order).
+    QSet<QByteArray> m_sentHeartbeats;
+    QQueue<QByteArray> m_sentOrder;
     bool m_rivalSaid = false;
     QString m_saidLoss;            // the broker's last reason logged: a retry every 10 s does not repeat it
     int m_messages = 0;            // counting the messages of one full publication

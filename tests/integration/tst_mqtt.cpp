@@ -61,6 +61,7 @@ private slots:
     void removedLineIsCleared();
     void twoPublishersOfOneNameHearEachOther();
     void garbageMakesNoDeviceAndNoHeartbeat();
+    void stalledBrokerIsNoRival();
     void passwordIsChecked();
     void tls();
 
@@ -545,6 +546,40 @@ void TstMqtt::twoPublishersOfOneNameHearEachOther()
     QVERIFY2(second.start(&error), qPrintable(error));
     QTRY_COMPARE_WITH_TIMEOUT(firstHeard.size(), 1, 20000);
     QTRY_COMPARE_WITH_TIMEOUT(secondHeard.size(), 1, 20000);
+}
+
+void TstMqtt::stalledBrokerIsNoRival()
+{
+    // A broker stopped (SIGSTOP) long enough for the keepalive to give up: the publisher
+    // connects again, and its own heartbeats that the broker passes on late are no
+    // other publisher's. The loss says why in words.
+    QVERIFY(m_broker->start());
+    MqttSettings broker = *MqttSettings::fromUrl(brokerUrl(), nullptr);
+    broker.keepAliveS = 5;   // the least libmosquitto takes
+    StationPublisher publisher(broker, QStringLiteral("jumo"), QStringLiteral("stalled"));
+    publisher.setHeartbeatInterval(50);
+    publisher.client().setReconnectDelays(100, 200);
+    QSignalSpy heard(&publisher, &StationPublisher::rivalHeard);
+    QSignalSpy lost(&publisher.client(), &MqttClient::disconnected);
+    QSignalSpy connected(&publisher.client(), &MqttClient::connected);
+    QString error;
+    QVERIFY2(publisher.start(&error), qPrintable(error));
+    QTRY_COMPARE_WITH_TIMEOUT(connected.size(), 1, 20000);
+    QVERIFY(::kill(pid_t(m_broker->pid()), SIGSTOP) == 0);
+    QTRY_VERIFY_WITH_TIMEOUT(!lost.isEmpty(), 20000);
+    QVERIFY2(lost.constFirst().constFirst().toString().contains(QLatin1String("keepalive")),
+             qPrintable(lost.constFirst().constFirst().toString()));
+    // Stopped for longer than the last 16 heartbeats took.
+    QTest::qWait(2000);
+    QVERIFY(::kill(pid_t(m_broker->pid()), SIGCONT) == 0);
+    QTRY_VERIFY_WITH_TIMEOUT(connected.size() >= 2, 30000);
+    int heartbeats = 0;
+    connect(&publisher.client(), &MqttClient::messageReceived, this, [&](const QString &topic) {
+        if (topic == QLatin1String("jumo/stalled/heartbeat"))
+            ++heartbeats;
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(heartbeats >= 20, 20000);
+    QCOMPARE(heard.size(), 0);
 }
 
 void TstMqtt::garbageMakesNoDeviceAndNoHeartbeat()
