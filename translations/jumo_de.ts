@@ -3775,7 +3775,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::MqttClient</name>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="+101"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="+36"/>
+        <source>the broker did not answer within the keepalive time</source>
+        <translation>der Broker hat innerhalb der Keepalive-Zeit nicht geantwortet</translation>
+    </message>
+    <message>
+        <location line="+68"/>
         <source>cannot make an MQTT client: %1</source>
         <translation>MQTT-Client lässt sich nicht anlegen: %1</translation>
     </message>
@@ -3818,12 +3823,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::MqttSettings</name>
     <message>
-        <location filename="../lib/mqtt/mqttsettings.cpp" line="+17"/>
+        <location filename="../lib/mqtt/mqttsettings.cpp" line="+37"/>
         <source>&apos;%1&apos; is no broker address: %2 (use mqtt://[USER@]HOST[:PORT] or mqtts://...)</source>
         <translation>&apos;%1&apos; ist keine Broker-Adresse: %2 (mqtt://[BENUTZER@]HOST[:PORT] oder mqtts://... angeben)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>unknown scheme &apos;%1&apos;</source>
         <translation>unbekanntes Schema &apos;%1&apos;</translation>
     </message>
@@ -5405,7 +5410,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>nicht mit dem Geräteserver %1 verbunden</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+25"/>
+        <source>not sent: the line was never silent for %1 ms within %2 ms (noise or another master on the serial side?)</source>
+        <translation>nicht gesendet: die Leitung war innerhalb von %2 ms nie %1 ms lang still (Störungen oder ein anderer Master auf der seriellen Seite?)</translation>
+    </message>
+    <message>
+        <location line="+61"/>
         <source>no reply within %1 ms</source>
         <translation>keine Antwort innerhalb von %1 ms</translation>
     </message>
@@ -5799,7 +5809,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>das Gateway %1 hat innerhalb von %2 s keine Verbindung angenommen</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+55"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
@@ -5814,7 +5824,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>nicht mit dem Gateway %1 verbunden</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+50"/>
+        <source>the gateway %1 sent an incomplete reply and then nothing for %2 ms</source>
+        <translation>das Gateway %1 hat eine unvollständige Antwort gesendet und dann %2 ms lang nichts mehr</translation>
+    </message>
+    <message>
+        <location line="+27"/>
         <source>the connection was refused or closed</source>
         <translation>die Verbindung wurde abgelehnt oder geschlossen</translation>
     </message>

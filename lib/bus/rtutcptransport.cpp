@@ -109,6 +109,7 @@ void RtuTcpTransport::send(const ModbusRequest &request)
     m_request = request;
     m_sent = false;
     m_crcErrors = 0;
+    m_requestAge.start();
     if (m_connected)
         transmit();   // else onConnected() sends it
 }
@@ -121,6 +122,19 @@ void RtuTcpTransport::transmit()
     // be kept here, at the baud rate of its serial side.
     const qint64 gapMs = qint64(std::ceil(interFrameDelayMs()));
     if (const qint64 waited = m_lastTraffic.elapsed(); waited < gapMs) {
+        if (m_requestAge.elapsed() >= m_request->timeoutMs) {
+            // Noise, or another master on the serial side: a request sent now would
+            // collide with it. Said as such, not waited for until the end of time.
+            ModbusResult result;
+            result.status = ModbusResult::Status::Timeout;
+            result.errorText = tr("not sent: the line was never silent for %1 ms within %2 ms (noise or another "
+                                  "master on the serial side?)")
+                                       .arg(gapMs)
+                                       .arg(m_request->timeoutMs);
+            m_request.reset();
+            deliverLater(result);
+            return;
+        }
         m_gapTimer.start(int(gapMs - waited));
         return;
     }
@@ -145,8 +159,14 @@ void RtuTcpTransport::onReadyRead()
 {
     m_buffer += m_socket.readAll();
     m_lastTraffic.restart();
-    if (!m_request || !m_sent)
+    if (!m_request || !m_sent) {
+        m_buffer.clear();   // answers nothing asked: transmit() would drop it anyway
         return;
+    }
+    // A reply is at most 256 bytes: far more in front of it is a flood, searched no more.
+    constexpr qsizetype keptBytes = 512;
+    if (m_buffer.size() > 2 * keptBytes)
+        m_buffer.remove(0, m_buffer.size() - keptBytes);
     qsizetype skipped = 0;
     int crcErrors = 0;
     const std::optional<qsizetype> length = findReply(*m_request, m_buffer, &skipped, &crcErrors);

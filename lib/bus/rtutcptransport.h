@@ -62,6 +62,7 @@ private:
     QTimer m_gapTimer;        // the frame gap before a request
     QTimer m_replyTimer;      // the request's timeout
     QElapsedTimer m_lastTraffic;
+    QElapsedTimer m_requestAge;   // since send(): the silence before it is waited for no longer than its timeout
     QByteArray m_buffer;
     std::optional<ModbusRequest> m_request;   // waiting to go out, or under way
     bool m_sent = false;

@@ -22,6 +22,8 @@ TcpTransport::TcpTransport(const LineAddress &address, const LineFormat &format,
                          .arg(m_address.endpoint())
                          .arg(connectTimeoutMs / 1000));
     });
+    m_replyGuard.setSingleShot(true);
+    connect(&m_replyGuard, &QTimer::timeout, this, &TcpTransport::onReplyOverdue);
 }
 
 TcpTransport::~TcpTransport()
@@ -66,6 +68,7 @@ void TcpTransport::close()
     m_started = false;
     m_connected = false;
     m_connectTimer.stop();
+    m_replyGuard.stop();
     if (m_waiting) {
         m_waiting.reset();
         ModbusResult result;
@@ -134,6 +137,7 @@ void TcpTransport::sendNow(const ModbusRequest &request)
         return;
     }
     m_pending = reply;
+    m_replyGuard.start(request.timeoutMs + replyGuardMarginMs);
     if (reply->isFinished()) {
         QMetaObject::invokeMethod(this, [this, reply, request] { onReplyFinished(reply, request); },
                                   Qt::QueuedConnection);
@@ -145,10 +149,33 @@ void TcpTransport::sendNow(const ModbusRequest &request)
 void TcpTransport::onReplyFinished(QModbusReply *reply, const ModbusRequest &request)
 {
     reply->deleteLater();
-    if (m_pending == reply)
+    if (m_pending == reply) {
         m_pending.clear();
+        m_replyGuard.stop();
+    }
     emit finished(RtuTransport::resultOf(request, reply->error(), reply->result(), reply->rawResult(),
                                          reply->errorString()));
+}
+
+void TcpTransport::onReplyOverdue()
+{
+    if (!m_pending)
+        return;
+    // The reply began (or its header promised more than a Modbus PDU can hold) and the
+    // rest never came: what follows on this connection cannot be framed any more. The
+    // request ends here, and the connection is made anew.
+    QModbusReply *reply = m_pending;
+    m_pending.clear();
+    reply->disconnect(this);
+    connect(reply, &QModbusReply::finished, reply, &QObject::deleteLater);
+    const QString reason = tr("the gateway %1 sent an incomplete reply and then nothing for %2 ms")
+                                   .arg(m_address.endpoint())
+                                   .arg(m_replyGuard.interval());
+    ModbusResult result;
+    result.status = ModbusResult::Status::LineDown;
+    result.errorText = reason;
+    deliverLater(result);
+    loseLine(reason);
 }
 
 void TcpTransport::onStateChanged(QModbusDevice::State state)
@@ -193,6 +220,7 @@ void TcpTransport::loseLine(const QString &reason)
     m_started = false;
     m_connected = false;
     m_connectTimer.stop();
+    m_replyGuard.stop();
     if (m_waiting) {
         m_waiting.reset();
         ModbusResult result;

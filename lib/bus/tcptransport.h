@@ -27,6 +27,10 @@ class TcpTransport final : public Transport
 public:
     // How long a gateway may take to accept the connection.
     static constexpr int connectTimeoutMs = 5000;
+    // How much longer than its timeout a reply may take before the connection counts as
+    // broken: Qt's client stops a request's timer once an MBAP header has come and then
+    // waits for as many bytes as the header's length says, for ever.
+    static constexpr int replyGuardMarginMs = 1000;
 
     TcpTransport(const LineAddress &address, const LineFormat &format, QObject *parent = nullptr);
     ~TcpTransport() override;
@@ -43,6 +47,7 @@ private:
     void onStateChanged(QModbusDevice::State state);
     void onErrorOccurred(QModbusDevice::Error error);
     void onReplyFinished(QModbusReply *reply, const ModbusRequest &request);
+    void onReplyOverdue();
     void loseLine(const QString &reason);
     void deliverLater(const ModbusResult &result);
 
@@ -52,6 +57,7 @@ private:
     QPointer<QModbusReply> m_pending;
     std::optional<ModbusRequest> m_waiting;   // sent once the connection stands
     QTimer m_connectTimer;
+    QTimer m_replyGuard;
     bool m_started = false;   // open() was called and close() was not
     bool m_connected = false;
 };

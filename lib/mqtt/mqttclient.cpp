@@ -31,6 +31,9 @@ QString errorText(int rc)
     // MOSQ_ERR_ERRNO: the system's error says more than "unknown error".
     if (rc == MOSQ_ERR_ERRNO)
         return QString::fromLocal8Bit(std::strerror(errno));
+    // libmosquitto 2.0 has no text for it ("Unknown error."): a stopped or hung broker.
+    if (rc == MOSQ_ERR_KEEPALIVE)
+        return MqttClient::tr("the broker did not answer within the keepalive time");
     return QString::fromUtf8(mosquitto_strerror(rc));
 }
 

@@ -5,6 +5,26 @@
 
 namespace jumo {
 
+namespace {
+
+// The address as typed, with whatever stands between "USER:" and "@" masked: for an
+// address Qt cannot parse (and whose error text quotes it whole).
+QString withoutPassword(const QString &text)
+{
+    const qsizetype scheme = text.indexOf(QLatin1String("://"));
+    const qsizetype start = scheme < 0 ? 0 : scheme + 3;
+    // The last '@': a password may hold '/' and '@' as typed.
+    const qsizetype at = text.lastIndexOf(QLatin1Char('@'));
+    if (at < start)
+        return text;
+    const qsizetype colon = text.indexOf(QLatin1Char(':'), start);
+    if (colon < 0 || colon > at)
+        return text;
+    return text.left(colon + 1) + QStringLiteral("***") + text.mid(at);
+}
+
+} // namespace
+
 std::optional<MqttSettings> MqttSettings::fromUrl(const QString &text, QString *error)
 {
     const QString withScheme = text.contains(QLatin1String("://")) ? text : QStringLiteral("mqtt://") + text;
@@ -12,13 +32,15 @@ std::optional<MqttSettings> MqttSettings::fromUrl(const QString &text, QString *
     const QString scheme = url.scheme().toLower();
     auto fail = [&](const QString &why) -> std::optional<MqttSettings> {
         // Never a password in a message (it would end up in logs).
-        const QString shown = url.isValid() ? url.toString(QUrl::RemovePassword) : text;
+        const QString shown = url.isValid() ? url.toString(QUrl::RemovePassword) : withoutPassword(text);
         if (error)
             *error = tr("'%1' is no broker address: %2 (use mqtt://[USER@]HOST[:PORT] or mqtts://...)").arg(shown, why);
         return std::nullopt;
     };
-    if (!url.isValid())
-        return fail(url.errorString());
+    if (!url.isValid()) {
+        // Qt's reason goes on with "; source was ..." and the address, password and all.
+        return fail(url.errorString().section(QLatin1String("; source was"), 0, 0));
+    }
     if (scheme != QLatin1String("mqtt") && scheme != QLatin1String("mqtts"))
         return fail(tr("unknown scheme '%1'").arg(url.scheme()));
     if (url.host().isEmpty())

@@ -5,6 +5,7 @@
 
 #include <QHostInfo>
 #include <QLoggingCategory>
+#include <QRegularExpression>
 #include <QTimer>
 
 #include <atomic>
@@ -221,6 +222,13 @@ void RemoteStation::onMessage(const QString &topicText, const QByteArray &payloa
         return;
     using Kind = TopicScheme::Kind;
     const bool cleared = payload.isEmpty();
+    // A device level is FAMILY@ADDRESS: anything else names no device of a station.
+    static const QRegularExpression deviceName(
+            QRegularExpression::anchoredPattern(QStringLiteral("[a-z][a-z0-9_]*@[0-9]{1,3}")));
+    if (!topic->device.isEmpty() && !deviceName.match(topic->device).hasMatch()) {
+        qCDebug(lcMqtt).noquote() << "ignored" << topicText << "(no device)";
+        return;
+    }
     switch (topic->kind) {
     case Kind::Viewer:
         return;
@@ -242,9 +250,12 @@ void RemoteStation::onMessage(const QString &topicText, const QByteArray &payloa
         return;
     }
     case Kind::Heartbeat: {
+        // Only a heartbeat is a sign of life: not whatever someone else sends on its topic.
+        const auto time = TopicScheme::parseHeartbeat(payload);
+        if (!time)
+            return;
         Station &s = stationNamed(topic->station);
-        if (const auto time = TopicScheme::parseHeartbeat(payload))
-            s.state.lastHeartbeat = *time;
+        s.state.lastHeartbeat = *time;
         s.state.silent = false;
         s.silence->start(m_silenceLimitMs);
         refresh(topic->station);
@@ -298,39 +309,40 @@ void RemoteStation::onMessage(const QString &topicText, const QByteArray &payloa
                 emit entriesUpdated(*id, {topic->entry});
             return;
         }
-        setValue(deviceFor(topic->station, topic->line, topic->device), topic->entry, payload);
+        // Malformed: ignored before it makes a device appear.
+        const auto message = TopicScheme::parseValue(payload);
+        if (!message) {
+            qCWarning(lcMqtt).noquote() << "ignored a malformed value on" << topicText;
+            return;
+        }
+        setValue(deviceFor(topic->station, topic->line, topic->device), topic->entry, *message);
         return;
     }
     }
 }
 
-void RemoteStation::setValue(DeviceId id, const QString &entryId, const QByteArray &payload)
+void RemoteStation::setValue(DeviceId id, const QString &entryId, const ValueMessage &message)
 {
-    const auto message = TopicScheme::parseValue(payload);
-    if (!message) {
-        qCWarning(lcMqtt).noquote() << "ignored a malformed value of" << deviceName(id) << entryId;
-        return;
-    }
     const RemoteDevice &d = m_devices[id];
     Entry &e = m_entries[id][entryId];
-    e.published = *message;
+    e.published = message;
     EntryState s;
     const RegisterEntry *entry = d.map ? d.map->entry(entryId) : nullptr;
-    if (entry && message->words.size() == entry->wordCount()) {
-        s.value = ValueCodec::decode(*entry, *d.map, message->words);
+    if (entry && message.words.size() == entry->wordCount()) {
+        s.value = ValueCodec::decode(*entry, *d.map, message.words);
     } else {
         // A family this program has no map of: the value as the station worded it.
-        s.value.value = message->value.toVariant();
-        s.value.display = message->text;
-        s.value.status = message->value.isNull() ? ValueStatus::Invalid : ValueStatus::Ok;
+        s.value.value = message.value.toVariant();
+        s.value.display = message.text;
+        s.value.status = message.value.isNull() ? ValueStatus::Invalid : ValueStatus::Ok;
     }
-    s.words = message->words;
-    s.error = message->error;
-    s.exceptionCode = message->exception;
+    s.words = message.words;
+    s.error = message.error;
+    s.exceptionCode = message.exception;
     const qint64 now = clockMs();
     s.updatedMs = now;
-    if (message->read.isValid())
-        s.goodMs = std::max<qint64>(0, now - std::max<qint64>(0, message->read.msecsTo(QDateTime::currentDateTimeUtc())));
+    if (message.read.isValid())
+        s.goodMs = std::max<qint64>(0, now - std::max<qint64>(0, message.read.msecsTo(QDateTime::currentDateTimeUtc())));
     e.state = s;
     applyValidity(e, isLive(d.station));
     emit entriesUpdated(id, {entryId});

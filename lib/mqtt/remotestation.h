@@ -123,7 +123,7 @@ private:
     Station &stationNamed(const QString &name);
     DeviceId deviceFor(const QString &station, const QString &line, const QString &name);
     void removeDevice(DeviceId id);
-    void setValue(DeviceId id, const QString &entryId, const QByteArray &payload);
+    void setValue(DeviceId id, const QString &entryId, const ValueMessage &message);
     void applyValidity(Entry &entry, bool live) const;
     QString clientId() const;
     // Recomputes whether a station is live and, when that changed, every value of it.

@@ -19,8 +19,28 @@ StationPublisher::StationPublisher(const MqttSettings &broker, const QString &pr
     m_client.setSettings(broker);
     m_heartbeat.setInterval(1000);
     connect(&m_heartbeat, &QTimer::timeout, this, [this] {
-        publish(m_scheme.heartbeat(m_station), TopicScheme::heartbeatPayload(QDateTime::currentDateTimeUtc()), false);
+        const QByteArray payload = TopicScheme::heartbeatPayload(QDateTime::currentDateTimeUtc());
+        if (!m_client.isConnected())
+            return;
+        m_sentHeartbeats.insert(payload);
+        m_sentOrder.enqueue(payload);
+        if (m_sentOrder.size() > 1000)
+            m_sentHeartbeats.remove(m_sentOrder.dequeue());
+        publish(m_scheme.heartbeat(m_station), payload, false);
     });
+    // Two publishers given one station name (a copied unit file, a forgotten test run):
+    // nothing in MQTT stops them, and viewers see a mix of both.
+    connect(&m_client, &MqttClient::messageReceived, this,
+            [this](const QString &topic, const QByteArray &payload, bool retained) {
+                if (retained || m_rivalSaid || topic != m_scheme.heartbeat(m_station)
+                    || m_sentHeartbeats.contains(payload))
+                    return;
+                m_rivalSaid = true;
+                qCWarning(lcMqtt).noquote() << "another publisher sends heartbeats as station" << m_station << "to"
+                                            << m_client.settings().url()
+                                            << "- the two overwrite each other's topics: give each its own --name";
+                emit rivalHeard();
+            });
     connect(&m_client, &MqttClient::connected, this, &StationPublisher::onConnected);
     connect(&m_client, &MqttClient::disconnected, this, [this](const QString &reason) {
         if (m_stopping) {
@@ -29,7 +49,9 @@ StationPublisher::StationPublisher(const MqttSettings &broker, const QString &pr
                 m_stopSignalled = true;
                 emit stopped();
             }
-        } else {
+        } else if (reason != m_saidLoss) {
+            // A broker that is down or refuses us is retried for days: said once per reason.
+            m_saidLoss = reason;
             qCWarning(lcMqtt).noquote() << "broker" << m_client.settings().url() << "lost or not reached:" << reason;
         }
     });
@@ -158,6 +180,7 @@ bool StationPublisher::start(QString *error)
     m_stopping = false;
     m_stopSignalled = false;
     m_client.setWill(m_scheme.status(m_station), TopicScheme::statusOffline(QStringLiteral("connection lost")));
+    m_client.subscribe(m_scheme.heartbeat(m_station), 0);
     if (!m_client.connectToBroker()) {
         if (error)
             *error = m_client.lastError();
@@ -197,6 +220,7 @@ void StationPublisher::stop()
 void StationPublisher::onConnected()
 {
     qCInfo(lcMqtt).noquote() << "connected to" << m_client.settings().url();
+    m_saidLoss.clear();
     for (const QString &topic : std::as_const(m_pendingClears))
         m_client.publish(topic, QByteArray(), true);
     m_pendingClears.clear();

@@ -13,6 +13,8 @@
 #include <QHash>
 #include <QList>
 #include <QObject>
+#include <QQueue>
+#include <QSet>
 #include <QPointer>
 #include <QTimer>
 
@@ -55,6 +57,10 @@ signals:
     void stopped();
     // Every full publication of the state (after each connect), with its message count.
     void statePublished(int messages);
+    // Heartbeats this publisher did not send came on its station's topic: another
+    // publisher runs under the same name, and the two overwrite each other's topics (and a
+    // clean stop of either says the whole station is offline). Said once.
+    void rivalHeard();
 
 private:
     struct Device
@@ -96,6 +102,12 @@ private:
     QTimer m_stopDeadline;
     bool m_stopping = false;
     bool m_stopSignalled = false;
+    // Ours, to know them when they come back: also those a stalled broker passes on
+    // late, after a reconnect (a QSet for the look-up, the queue for the order).
+    QSet<QByteArray> m_sentHeartbeats;
+    QQueue<QByteArray> m_sentOrder;
+    bool m_rivalSaid = false;
+    QString m_saidLoss;            // the broker's last reason logged: a retry every 10 s does not repeat it
     int m_messages = 0;            // counting the messages of one full publication
 };
 

@@ -59,6 +59,9 @@ private slots:
     void brokerRestartLosesNothing();
     void twoLinesFromAStationFile();
     void removedLineIsCleared();
+    void twoPublishersOfOneNameHearEachOther();
+    void garbageMakesNoDeviceAndNoHeartbeat();
+    void stalledBrokerIsNoRival();
     void passwordIsChecked();
     void tls();
 
@@ -517,6 +520,104 @@ void TstMqtt::removedLineIsCleared()
         QVERIFY2(!it.key().contains(QLatin1String("/devices/")) && !it.key().contains(QLatin1String("/lines/")),
                  qPrintable(it.key()));
     QVERIFY(retained.contains(QStringLiteral("jumo/inproc/status")));
+}
+
+void TstMqtt::twoPublishersOfOneNameHearEachOther()
+{
+    QVERIFY(m_broker->start());
+    const MqttSettings broker = *MqttSettings::fromUrl(brokerUrl(), nullptr);
+    StationPublisher first(broker, QStringLiteral("jumo"), QStringLiteral("twin"));
+    first.setHeartbeatInterval(100);
+    QSignalSpy firstHeard(&first, &StationPublisher::rivalHeard);
+    QString error;
+    QVERIFY2(first.start(&error), qPrintable(error));
+    // Alone, its own heartbeats come back to it and are no rival's.
+    int ownHeartbeats = 0;
+    connect(&first.client(), &MqttClient::messageReceived, this, [&](const QString &topic) {
+        if (topic == QLatin1String("jumo/twin/heartbeat"))
+            ++ownHeartbeats;
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(ownHeartbeats >= 5, 20000);
+    QCOMPARE(firstHeard.size(), 0);
+
+    StationPublisher second(broker, QStringLiteral("jumo"), QStringLiteral("twin"));
+    second.setHeartbeatInterval(100);
+    QSignalSpy secondHeard(&second, &StationPublisher::rivalHeard);
+    QVERIFY2(second.start(&error), qPrintable(error));
+    QTRY_COMPARE_WITH_TIMEOUT(firstHeard.size(), 1, 20000);
+    QTRY_COMPARE_WITH_TIMEOUT(secondHeard.size(), 1, 20000);
+}
+
+void TstMqtt::stalledBrokerIsNoRival()
+{
+    // A broker stopped (SIGSTOP) long enough for the keepalive to give up: the publisher
+    // connects again, and its own heartbeats that the broker passes on late are no
+    // other publisher's. The loss says why in words.
+    QVERIFY(m_broker->start());
+    MqttSettings broker = *MqttSettings::fromUrl(brokerUrl(), nullptr);
+    broker.keepAliveS = 5;   // the least libmosquitto takes
+    StationPublisher publisher(broker, QStringLiteral("jumo"), QStringLiteral("stalled"));
+    publisher.setHeartbeatInterval(50);
+    publisher.client().setReconnectDelays(100, 200);
+    QSignalSpy heard(&publisher, &StationPublisher::rivalHeard);
+    QSignalSpy lost(&publisher.client(), &MqttClient::disconnected);
+    QSignalSpy connected(&publisher.client(), &MqttClient::connected);
+    QString error;
+    QVERIFY2(publisher.start(&error), qPrintable(error));
+    QTRY_COMPARE_WITH_TIMEOUT(connected.size(), 1, 20000);
+    QVERIFY(::kill(pid_t(m_broker->pid()), SIGSTOP) == 0);
+    QTRY_VERIFY_WITH_TIMEOUT(!lost.isEmpty(), 20000);
+    QVERIFY2(lost.constFirst().constFirst().toString().contains(QLatin1String("keepalive")),
+             qPrintable(lost.constFirst().constFirst().toString()));
+    // Stopped for longer than the last 16 heartbeats took.
+    QTest::qWait(2000);
+    QVERIFY(::kill(pid_t(m_broker->pid()), SIGCONT) == 0);
+    QTRY_VERIFY_WITH_TIMEOUT(connected.size() >= 2, 30000);
+    int heartbeats = 0;
+    connect(&publisher.client(), &MqttClient::messageReceived, this, [&](const QString &topic) {
+        if (topic == QLatin1String("jumo/stalled/heartbeat"))
+            ++heartbeats;
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(heartbeats >= 20, 20000);
+    QCOMPARE(heard.size(), 0);
+}
+
+void TstMqtt::garbageMakesNoDeviceAndNoHeartbeat()
+{
+    // Someone else publishes under the station's topics: malformed payloads and device
+    // levels that name no device. The mirror takes none of it as a device or as a sign of
+    // life of the station.
+    QVERIFY(m_broker->start());
+    std::unique_ptr<RemoteStation> mirror = startMirror();
+    QVERIFY(mirror);
+    QTRY_VERIFY_WITH_TIMEOUT(mirror->isConnected(), 20000);
+    MqttClient vandal;
+    vandal.setSettings(*MqttSettings::fromUrl(brokerUrl(), nullptr));
+    QVERIFY(vandal.connectToBroker());
+    QTRY_VERIFY_WITH_TIMEOUT(vandal.isConnected(), 20000);
+    const QString prefix = QStringLiteral("jumo/%1/").arg(station);
+    const QByteArray status = TopicScheme::statusOnline(QStringLiteral("x"), QDateTime::currentDateTimeUtc(), {});
+    QVERIFY(vandal.publish(prefix + QStringLiteral("status"), status, false));
+    QVERIFY(vandal.publish(prefix + QStringLiteral("devices/line1/ipc300@1/values/load_voltage"), "garbage", false));
+    QVERIFY(vandal.publish(prefix + QStringLiteral("devices/line1/ipc300@1/condition"), "{\"state\":1}", false));
+    QVERIFY(vandal.publish(prefix + QStringLiteral("devices/line1/evil/info"),
+                           R"({"line":"line1","family":"evil","address":1,"model":"x"})", false));
+    QVERIFY(vandal.publish(prefix + QStringLiteral("heartbeat"), "garbage", false));
+    // Then one good device: the messages of one client arrive in order.
+    QVERIFY(vandal.publish(prefix + QStringLiteral("devices/line1/tya200@2/info"),
+                           R"({"line":"line1","family":"tya200","address":2,"model":"x"})", false));
+    QTRY_VERIFY_WITH_TIMEOUT(mirror->findDevice(station, QStringLiteral("line1"), QStringLiteral("tya200@2")), 20000);
+    QCOMPARE(mirror->devices().size(), 1);
+    QVERIFY(!mirror->station(station)->lastHeartbeat.isValid());
+    // Online, but no heartbeat came: silent once the limit is over, and garbage on the
+    // heartbeat topic does not wake it.
+    QTRY_VERIFY_WITH_TIMEOUT(mirror->station(station)->silent, 20000);
+    QVERIFY(vandal.publish(prefix + QStringLiteral("heartbeat"), "{\"time\":\"yesterday\"}", false));
+    QVERIFY(vandal.publish(prefix + QStringLiteral("devices/line1/tya200@3/info"),
+                           R"({"line":"line1","family":"tya200","address":3,"model":"x"})", false));
+    QTRY_VERIFY_WITH_TIMEOUT(mirror->findDevice(station, QStringLiteral("line1"), QStringLiteral("tya200@3")), 20000);
+    QVERIFY(mirror->station(station)->silent);
+    QVERIFY(!mirror->isLive(station));
 }
 
 void TstMqtt::passwordIsChecked()
