@@ -1185,7 +1185,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DevicePage</name>
     <message>
-        <location filename="../ui/devicepage.cpp" line="+29"/>
+        <location filename="../ui/devicepage.cpp" line="+41"/>
         <source>Read-only mode: values are shown, nothing is written to the device.</source>
         <translation>Nur-Lese-Modus: Werte werden angezeigt, es wird nichts auf das Gerät geschrieben.</translation>
     </message>
@@ -1206,7 +1206,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Alarme und Status (%1)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+22"/>
         <source>Controls</source>
         <translation>Bedienung</translation>
     </message>
@@ -1221,12 +1221,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Programm</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-30"/>
         <source>Trend</source>
         <translation>Trend</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+56"/>
         <source>Wrong device: %1. Its values are not shown and nothing is written to it until the device at this address is of the family it was added as.</source>
         <translation>Falsches Gerät: %1. Seine Werte werden nicht angezeigt und nichts wird geschrieben, bis das Gerät an dieser Adresse zu der Familie gehört, als die es hinzugefügt wurde.</translation>
     </message>
@@ -2437,7 +2437,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 <context>
     <name>jumo::LineHeader</name>
     <message>
-        <location filename="../ui/lineheader.cpp" line="+50"/>
+        <location filename="../ui/lineheader.cpp" line="+28"/>
+        <source>Disconnected</source>
+        <translation>Getrennt</translation>
+    </message>
+    <message>
+        <location line="+42"/>
         <source>%1, devices: %2</source>
         <translation>%1, Geräte: %2</translation>
     </message>
@@ -5296,7 +5301,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RemoteLines</name>
     <message>
-        <location filename="../lib/mqtt/remotelines.cpp" line="+161"/>
+        <location filename="../lib/mqtt/remotelines.cpp" line="+154"/>
         <source>the station has not reported this line</source>
         <translation>die Station hat diese Leitung nicht gemeldet</translation>
     </message>
@@ -5324,6 +5329,159 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+1"/>
         <source>station %1 has not been heard for %2 s</source>
         <translation>von Station %1 kam seit %2 s nichts</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::RemoteWindow</name>
+    <message>
+        <location filename="../ui/remotewindow.cpp" line="+45"/>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Register</source>
+        <translation>Register</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Bit</source>
+        <translation>Bit</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Id</source>
+        <translation>Id</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Signal</source>
+        <translation>Signal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>JUMO HMI remote view: %1 [read-only]</source>
+        <translation>JUMO HMI Fernansicht: %1 [nur lesen]</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Overview</source>
+        <translation>Übersicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Alarm journal (this viewer)</source>
+        <translation>Alarmjournal (dieser Ansicht)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Remote view: values as the stations publish them to the broker. Nothing can be written from here.</source>
+        <translation>Fernansicht: Werte, wie die Stationen sie an den Broker senden. Von hier aus kann nichts geschrieben werden.</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Compact overview</source>
+        <translation>&amp;Kompakte Übersicht</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1/%2/%3 is of a family this program has no map of: not shown</source>
+        <translation>%1/%2/%3 gehört zu einer Familie, für die dieses Programm keine Registertabelle hat: nicht angezeigt</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>Connected</source>
+        <translation>Verbunden</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Line lost</source>
+        <translation>Leitung verloren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>line lost</source>
+        <translation>Leitung verloren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Line lost: %1</source>
+        <translation>Leitung verloren: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Disconnected</source>
+        <translation>Getrennt</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Disconnected: %1</source>
+        <translation>Getrennt: %1</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+72"/>
+        <source>Broker %1: connected</source>
+        <translation>Broker %1: verbunden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Broker %1: connecting</source>
+        <translation>Broker %1: Verbindung wird aufgebaut</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Broker %1: not reachable (%2); values are the last ones received</source>
+        <translation>Broker %1: nicht erreichbar (%2); die Werte sind die zuletzt empfangenen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Live: %1</source>
+        <translation>Aktiv: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not live: %1</source>
+        <translation>Nicht aktiv: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No station heard yet</source>
+        <translation>Noch keine Station gehört</translation>
     </message>
 </context>
 <context>
@@ -9853,7 +10011,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+37"/>
+        <location filename="../app/jumo-hmi.cpp" line="+92"/>
         <source>JUMO commissioning and monitoring HMI.</source>
         <translation>JUMO-HMI für Inbetriebnahme und Überwachung.</translation>
     </message>
@@ -9893,7 +10051,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Die Seite dieses Geräts öffnen, z. B. ipc300@1 (line2/ipc300@1 bei mehreren Leitungen).</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="-64"/>
+        <source>--%1 does not go with --remote: a remote view reads the broker only</source>
+        <translation>--%1 passt nicht zu --remote: eine Fernansicht liest nur den Broker</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>--tls-cert and --tls-key go together</source>
+        <translation>--tls-cert und --tls-key gehören zusammen</translation>
+    </message>
+    <message>
+        <location line="+57"/>
         <source>A line of this run, repeatable: ADDRESS[,name=NAME][,baud=N][,format=8N1][,timeout=MS][,min-response=MS][,retries=N][,read-only]; ADDRESS is a serial port, tcp://HOST:PORT or rtu+tcp://HOST:PORT. The lines kept in the settings are left as they are.</source>
         <translation>Eine Leitung dieses Laufs, wiederholbar: ADRESSE[,name=NAME][,baud=N][,format=8N1][,timeout=MS][,min-response=MS][,retries=N][,read-only]; ADRESSE ist eine serielle Schnittstelle, tcp://HOST:PORT oder rtu+tcp://HOST:PORT. Die in den Einstellungen gespeicherten Leitungen bleiben, wie sie sind.</translation>
     </message>
@@ -9919,6 +10087,41 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+4"/>
+        <source>Control-room viewer: show the stations that publish to this MQTT broker (mqtt://[USER@]HOST[:PORT] or mqtts://...), with no Modbus access and nothing that can write.</source>
+        <translation>Leitwarten-Ansicht: zeigt die Stationen, die an diesen MQTT-Broker senden (mqtt://[BENUTZER@]HOST[:PORT] oder mqtts://...), ohne Modbus-Zugriff und ohne etwas, das schreiben kann.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>With --remote: only this station (default: every station).</source>
+        <translation>Mit --remote: nur diese Station (Vorgabe: jede Station).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>With --remote: the topic prefix (default jumo).</source>
+        <translation>Mit --remote: das Topic-Präfix (Vorgabe jumo).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>With --remote: a file whose first line is the broker password (else JUMO_MQTT_PASSWORD; never on the command line).</source>
+        <translation>Mit --remote: eine Datei, deren erste Zeile das Broker-Passwort ist (sonst JUMO_MQTT_PASSWORD; nie auf der Befehlszeile).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>With --remote: the CA certificate that signed the broker&apos;s.</source>
+        <translation>Mit --remote: das CA-Zertifikat, das das des Brokers signiert hat.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>With --remote: a client certificate (with --tls-key).</source>
+        <translation>Mit --remote: ein Client-Zertifikat (mit --tls-key).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>With --remote: the client certificate&apos;s key.</source>
+        <translation>Mit --remote: der Schlüssel des Client-Zertifikats.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Print on stderr when the first live value arrives.</source>
         <translation>Auf stderr ausgeben, wann der erste Live-Wert eintrifft.</translation>
     </message>
@@ -9931,6 +10134,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+12"/>
         <source>jumo-hmi: unknown theme &apos;%1&apos; (system, light, dark or high-contrast)</source>
         <translation>jumo-hmi: unbekanntes Farbschema „%1“ (system, light, dark oder high-contrast)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>jumo-hmi: --%1 goes with --remote only</source>
+        <translation>jumo-hmi: --%1 gehört nur zu --remote</translation>
     </message>
     <message>
         <location line="+14"/>
