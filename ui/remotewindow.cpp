@@ -219,7 +219,7 @@ void RemoteWindow::onDeviceAdded(MirroredLine *line, DeviceId id)
     int row = m_navigation->row(m_lineEntries.value(line).item) + 1;
     while (row < m_navigation->count() && m_navigation->item(row)->data(deviceRole).isValid())
         ++row;
-    d.item = new QListWidgetItem(QStringLiteral("    %1 @ %2").arg(map->name).arg(line->deviceAddress(id)));
+    d.item = new QListWidgetItem(QStringLiteral("    %1 @ %2").arg(map->shortName).arg(line->deviceAddress(id)));
     d.item->setData(deviceRole, id);
     m_navigation->insertItem(row, d.item);
     m_devices.insert(id, d);
@@ -262,8 +262,9 @@ void RemoteWindow::updateDevice(DeviceId id)
         it->item->setData(Qt::UserRole, int(kind) + 1);
         it->item->setIcon(DeviceStateIcon::icon(kind));
     }
-    it->item->setToolTip(QStringLiteral("%1\n%2\n%3")
-                                 .arg(it->item->text().trimmed(), DeviceTile::conditionText(condition),
+    it->item->setToolTip(QStringLiteral("%1\n%2\n%3\n%4")
+                                 .arg(it->item->text().trimmed(), it->line->deviceMap(id)->name,
+                                      DeviceTile::conditionText(condition),
                                       DeviceTile::alarmsText(condition, *it->alarms)));
 }
 

@@ -118,8 +118,12 @@ void tst_HostilePeers::deviceServerNeverFallsSilent()
     transport.send(request);
     QVERIFY(finished.wait(10000));
     const auto result = finished.first().first().value<ModbusResult>();
+    // It ends, as a timeout. Which one depends on the machine: noise without a gap keeps
+    // the request from going out ("never silent"); on a busy machine a gap may come, the
+    // request goes out and the noise is no reply that fits ("no complete reply").
     QCOMPARE(result.status, ModbusResult::Status::Timeout);
-    QVERIFY2(result.errorText.contains(QLatin1String("silent")), qPrintable(result.errorText));
+    QVERIFY2(result.errorText.contains(QLatin1String("silent")) || result.errorText.contains(QLatin1String("no complete reply")),
+             qPrintable(result.errorText));
 }
 
 QTEST_GUILESS_MAIN(tst_HostilePeers)
