@@ -24,7 +24,9 @@ RemoteLines::RemoteLines(RemoteStation *station, QObject *parent) : QObject(pare
             [this](DeviceId id, const DeviceCondition &) { onConditionChanged(id); });
     connect(station, &RemoteStation::lineStateChanged, this,
             [this](const QString &stationName, const QString &line, LineState) {
-                ensureLine(stationName, line);
+                // A line the station cleared is not made again just to say it is gone.
+                if (m_station->line(stationName, line))
+                    ensureLine(stationName, line);
                 updateLine(stationName, line);
             });
     connect(station, &RemoteStation::stationChanged, this, &RemoteLines::onStationChanged);
