@@ -7,6 +7,7 @@
 #include "modbuslogging.h"
 #include "quitonsignal.h"
 #include "protocol/translations.h"
+#include "mqtt/topicscheme.h"
 #include "remotewindow.h"
 #include "jumoversion.h"
 
@@ -38,25 +39,15 @@ int runRemote(QApplication &app, const QCommandLineParser &parser, const jumo::F
                                  .arg(QLatin1String(option)));
     }
     QString error;
-    std::optional<jumo::MqttSettings> broker = jumo::MqttSettings::fromUrl(parser.value(QStringLiteral("remote")), &error);
+    const std::optional<jumo::MqttSettings> broker = jumo::MqttSettings::fromOptions(
+            {parser.value(QStringLiteral("remote")), QString(), parser.value(QStringLiteral("password-file")),
+             parser.value(QStringLiteral("tls-ca")), parser.value(QStringLiteral("tls-cert")),
+             parser.value(QStringLiteral("tls-key"))},
+            &error);
     if (!broker)
         return usage(error);
-    if (parser.isSet(QStringLiteral("password-file"))) {
-        const std::optional<QString> password =
-                jumo::MqttSettings::passwordFromFile(parser.value(QStringLiteral("password-file")), &error);
-        if (!password)
-            return usage(error);
-        broker->password = *password;
-    } else {
-        broker->password = qEnvironmentVariable("JUMO_MQTT_PASSWORD");
-    }
-    broker->caFile = parser.value(QStringLiteral("tls-ca"));
-    broker->certFile = parser.value(QStringLiteral("tls-cert"));
-    broker->keyFile = parser.value(QStringLiteral("tls-key"));
-    if (!broker->caFile.isEmpty() || !broker->certFile.isEmpty())
-        broker->tls = true;
-    if (broker->certFile.isEmpty() != broker->keyFile.isEmpty())
-        return usage(QApplication::translate("main", "--tls-cert and --tls-key go together"));
+    if (!jumo::TopicScheme::isValidPrefix(parser.value(QStringLiteral("mqtt-prefix"))))
+        return usage(QApplication::translate("main", "'%1' cannot be a topic prefix").arg(parser.value(QStringLiteral("mqtt-prefix"))));
     const QString kept = QSettings(QStringLiteral("jumo"), QStringLiteral("jumo-hmi")).value(QStringLiteral("theme")).toString();
     jumo::Theme::apply(jumo::Theme::fromName(theme.isEmpty() ? kept : theme).value_or(jumo::Theme::Kind::System));
 

@@ -3863,7 +3863,22 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Port außerhalb des Bereichs</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+36"/>
+        <source>a password needs a user name: mqtt://USER@HOST or --username</source>
+        <translation>ein Passwort braucht einen Benutzernamen: mqtt://BENUTZER@HOST oder --username</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>TLS files need an mqtts:// broker</source>
+        <translation>TLS-Dateien brauchen einen mqtts://-Broker</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>--tls-cert and --tls-key go together</source>
+        <translation>--tls-cert und --tls-key gehören zusammen</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>cannot read the password file %1: %2</source>
         <translation>Die Passwortdatei %1 ist nicht lesbar: %2</translation>
     </message>
@@ -5112,17 +5127,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>--broker ist erforderlich, z. B. --broker mqtt://localhost</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <source>a password needs a user name: mqtt://USER@HOST or --username</source>
-        <translation>ein Passwort braucht einen Benutzernamen: mqtt://BENUTZER@HOST oder --username</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>TLS files need an mqtts:// broker</source>
-        <translation>TLS-Dateien brauchen einen mqtts://-Broker</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="+16"/>
         <source>&apos;%1&apos; cannot be a topic prefix</source>
         <translation>&apos;%1&apos; kann kein Topic-Präfix sein</translation>
     </message>
@@ -5301,7 +5306,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RemoteLines</name>
     <message>
-        <location filename="../lib/mqtt/remotelines.cpp" line="+154"/>
+        <location filename="../lib/mqtt/remotelines.cpp" line="+156"/>
         <source>the station has not reported this line</source>
         <translation>die Station hat diese Leitung nicht gemeldet</translation>
     </message>
@@ -5454,7 +5459,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+73"/>
         <source>Broker %1: connected</source>
         <translation>Broker %1: verbunden</translation>
     </message>
@@ -5558,12 +5563,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>der Geräteserver %1 hat innerhalb von %2 s keine Verbindung angenommen</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+33"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+41"/>
         <source>not connected to the device server %1</source>
         <translation>nicht mit dem Geräteserver %1 verbunden</translation>
     </message>
@@ -10011,7 +10016,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+92"/>
+        <location filename="../app/jumo-hmi.cpp" line="+83"/>
         <source>JUMO commissioning and monitoring HMI.</source>
         <translation>JUMO-HMI für Inbetriebnahme und Überwachung.</translation>
     </message>
@@ -10051,14 +10056,14 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Die Seite dieses Geräts öffnen, z. B. ipc300@1 (line2/ipc300@1 bei mehreren Leitungen).</translation>
     </message>
     <message>
-        <location line="-64"/>
+        <location line="-54"/>
         <source>--%1 does not go with --remote: a remote view reads the broker only</source>
         <translation>--%1 passt nicht zu --remote: eine Fernansicht liest nur den Broker</translation>
     </message>
     <message>
-        <location line="+23"/>
-        <source>--tls-cert and --tls-key go together</source>
-        <translation>--tls-cert und --tls-key gehören zusammen</translation>
+        <location line="+13"/>
+        <source>&apos;%1&apos; cannot be a topic prefix</source>
+        <translation>&apos;%1&apos; kann kein Topic-Präfix sein</translation>
     </message>
     <message>
         <location line="+57"/>

@@ -72,6 +72,38 @@ QString MqttSettings::url() const
             .arg(port);
 }
 
+std::optional<MqttSettings> MqttSettings::fromOptions(const Options &options, QString *error)
+{
+    auto refuse = [error](const QString &why) {
+        if (error)
+            *error = why;
+        return std::nullopt;
+    };
+    std::optional<MqttSettings> broker = fromUrl(options.url, error);
+    if (!broker)
+        return std::nullopt;
+    if (!options.username.isEmpty())
+        broker->username = options.username;
+    if (!options.passwordFile.isEmpty()) {
+        const std::optional<QString> password = passwordFromFile(options.passwordFile, error);
+        if (!password)
+            return std::nullopt;
+        broker->password = *password;
+    } else {
+        broker->password = qEnvironmentVariable("JUMO_MQTT_PASSWORD");
+    }
+    if (!broker->password.isEmpty() && broker->username.isEmpty())
+        return refuse(tr("a password needs a user name: mqtt://USER@HOST or --username"));
+    if ((!options.caFile.isEmpty() || !options.certFile.isEmpty() || !options.keyFile.isEmpty()) && !broker->tls)
+        return refuse(tr("TLS files need an mqtts:// broker"));
+    if (options.certFile.isEmpty() != options.keyFile.isEmpty())
+        return refuse(tr("--tls-cert and --tls-key go together"));
+    broker->caFile = options.caFile;
+    broker->certFile = options.certFile;
+    broker->keyFile = options.keyFile;
+    return broker;
+}
+
 std::optional<QString> MqttSettings::passwordFromFile(const QString &path, QString *error)
 {
     QFile file(path);

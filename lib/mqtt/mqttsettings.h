@@ -34,6 +34,20 @@ public:
     QString url() const;
     // The first line of a file, without its line end; nullopt with the reason on error.
     static std::optional<QString> passwordFromFile(const QString &path, QString *error);
+
+    // The broker as the programs' command lines give it: the URL, a user name that
+    // replaces the URL's (empty: keep it), the password from a file or else from
+    // JUMO_MQTT_PASSWORD, and TLS files (only with mqtts://, a certificate with its key).
+    struct Options
+    {
+        QString url;
+        QString username;
+        QString passwordFile;
+        QString caFile;
+        QString certFile;
+        QString keyFile;
+    };
+    static std::optional<MqttSettings> fromOptions(const Options &options, QString *error);
 };
 
 } // namespace jumo

@@ -98,36 +98,15 @@ std::optional<int> PublisherProgram::run(const QStringList &arguments)
         return 2;
     }
     QString error;
-    std::optional<MqttSettings> broker = MqttSettings::fromUrl(parser.value(QStringLiteral("broker")), &error);
+    const std::optional<MqttSettings> broker = MqttSettings::fromOptions(
+            {parser.value(QStringLiteral("broker")), parser.value(QStringLiteral("username")),
+             parser.value(QStringLiteral("password-file")), parser.value(QStringLiteral("tls-ca")),
+             parser.value(QStringLiteral("tls-cert")), parser.value(QStringLiteral("tls-key"))},
+            &error);
     if (!broker) {
         m_err << error << Qt::endl;
         return 2;
     }
-    if (parser.isSet(QStringLiteral("username")))
-        broker->username = parser.value(QStringLiteral("username"));
-    if (parser.isSet(QStringLiteral("password-file"))) {
-        const auto password = MqttSettings::passwordFromFile(parser.value(QStringLiteral("password-file")), &error);
-        if (!password) {
-            m_err << error << Qt::endl;
-            return 2;
-        }
-        broker->password = *password;
-    } else {
-        broker->password = qEnvironmentVariable("JUMO_MQTT_PASSWORD");
-    }
-    if (!broker->password.isEmpty() && broker->username.isEmpty()) {
-        m_err << tr("a password needs a user name: mqtt://USER@HOST or --username") << Qt::endl;
-        return 2;
-    }
-    const bool tlsFiles = parser.isSet(QStringLiteral("tls-ca")) || parser.isSet(QStringLiteral("tls-cert"))
-            || parser.isSet(QStringLiteral("tls-key"));
-    if (tlsFiles && !broker->tls) {
-        m_err << tr("TLS files need an mqtts:// broker") << Qt::endl;
-        return 2;
-    }
-    broker->caFile = parser.value(QStringLiteral("tls-ca"));
-    broker->certFile = parser.value(QStringLiteral("tls-cert"));
-    broker->keyFile = parser.value(QStringLiteral("tls-key"));
 
     const QString prefix = parser.value(QStringLiteral("prefix"));
     if (!TopicScheme::isValidPrefix(prefix)) {
