@@ -66,6 +66,11 @@ bool RtuTcpTransport::open(QString *error)
 
 void RtuTcpTransport::close()
 {
+    shutDown(tr("the line was closed"));
+}
+
+void RtuTcpTransport::shutDown(const QString &reason)
+{
     const bool busy = m_request.has_value();
     m_started = false;
     m_connected = false;
@@ -77,7 +82,7 @@ void RtuTcpTransport::close()
     if (busy) {
         ModbusResult result;
         result.status = ModbusResult::Status::LineDown;
-        result.errorText = tr("the line was closed");
+        result.errorText = reason;
         deliverLater(result);
     }
 }
@@ -298,20 +303,7 @@ void RtuTcpTransport::loseLine(const QString &reason)
     if (!m_started)
         return;
     qCInfo(lcBus).noquote() << "device server" << m_address.text << "lost:" << reason;
-    const bool busy = m_request.has_value();
-    m_started = false;
-    m_connected = false;
-    m_connectTimer.stop();
-    m_gapTimer.stop();
-    m_replyTimer.stop();
-    m_request.reset();
-    m_socket.abort();
-    if (busy) {
-        ModbusResult result;
-        result.status = ModbusResult::Status::LineDown;
-        result.errorText = reason;
-        deliverLater(result);
-    }
+    shutDown(reason);
     emit lost(reason);
 }
 

@@ -45,6 +45,8 @@ public:
                                               qsizetype *skipped, int *crcErrors);
 
 private:
+    // Stops everything; a request under way finishes as LineDown with the reason.
+    void shutDown(const QString &reason);
     void transmit();
     void onReadyRead();
     void onTimeout();
