@@ -24,6 +24,14 @@ inline const FamilyRegistry &families()
     return registry;
 }
 
+// Entries the bus tests poll, and the value a peer's slave holds in each.
+inline const QStringList polledIds{"load_voltage", "analog_output_value"};
+
+inline double expectedValue(const QString &id, quint8 slave)
+{
+    return (id == "load_voltage" ? 200.0 : 40.0) + slave;
+}
+
 inline LineFormat testFormat()
 {
     return *LineFormat::parse(19200, QStringLiteral("8N1"));

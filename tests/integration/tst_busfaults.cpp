@@ -15,13 +15,6 @@ using namespace jumo::test;
 
 namespace {
 
-const QStringList polledIds{"load_voltage", "analog_output_value"};
-
-double expectedValue(const QString &id, quint8 slave)
-{
-    return (id == "load_voltage" ? 200.0 : 40.0) + slave;
-}
-
 // Counts what the bus delivers: good values, wrong values, and the statuses seen.
 struct Observer
 {

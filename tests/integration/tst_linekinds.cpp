@@ -23,13 +23,6 @@ using namespace jumo::test;
 
 namespace {
 
-const QStringList polledIds{"load_voltage", "analog_output_value"};
-
-double expectedValue(const QString &id, quint8 slave)
-{
-    return (id == "load_voltage" ? 200.0 : 40.0) + slave;
-}
-
 // The far end of a network line, whoever serves it.
 class FarEnd
 {
