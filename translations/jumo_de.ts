@@ -312,7 +312,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>nicht gehalten: %1 ist nicht als %2 bestätigt</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+283"/>
+        <location filename="../lib/bus/bus.cpp" line="+288"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
@@ -3815,7 +3815,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Der letzte Wille (Last Will) lässt sich nicht setzen: %1</translation>
     </message>
     <message>
-        <location line="+141"/>
+        <location line="+154"/>
         <source>the broker refused the connection: %1</source>
         <translation>Der Broker hat die Verbindung abgelehnt: %1</translation>
     </message>
@@ -4847,6 +4847,34 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
 </context>
 <context>
+    <name>jumo::PollSelection</name>
+    <message>
+        <location filename="../lib/bus/pollselection.cpp" line="+64"/>
+        <source>&apos;%1&apos; is no entry of %2 (jumoctl map %2 lists them) nor &apos;faceplate&apos; or &apos;alarms&apos;</source>
+        <translation>&apos;%1&apos; ist weder ein Eintrag von %2 (jumoctl map %2 listet sie auf) noch &apos;faceplate&apos; oder &apos;alarms&apos;</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 &apos;%2&apos; cannot be read</source>
+        <translation>%1 &apos;%2&apos; kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>name at least one entry of %1 to poll</source>
+        <translation>mindestens einen Eintrag von %1 zum Abfragen angeben</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>&apos;%1&apos; is not FAMILY:ENTRY[,ENTRY...] (entries, &apos;faceplate&apos; or &apos;alarms&apos;)</source>
+        <translation>&apos;%1&apos; ist nicht FAMILIE:EINTRAG[,EINTRAG...] (Einträge, &apos;faceplate&apos; oder &apos;alarms&apos;)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>unknown family &apos;%1&apos; (families: %2)</source>
+        <translation>unbekannte Familie &apos;%1&apos; (Familien: %2)</translation>
+    </message>
+</context>
+<context>
     <name>jumo::PortAccess</name>
     <message>
         <location filename="../lib/bus/portaccess.cpp" line="+138"/>
@@ -4968,7 +4996,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::PublisherProgram</name>
     <message>
-        <location filename="../lib/mqtt/publisherprogram.cpp" line="+32"/>
+        <location filename="../lib/mqtt/publisherprogram.cpp" line="+33"/>
         <source>Publishes the devices of a station&apos;s lines to an MQTT broker: identity, values with their validity and status, alarm bits, line state. Owns the lines and only reads them.</source>
         <translation>Veröffentlicht die Geräte der Linien einer Station an einem MQTT-Broker: Identität, Werte mit Gültigkeit und Status, Alarmbits, Linienzustand. Ist Master der Linien und liest sie nur.</translation>
     </message>
@@ -5107,6 +5135,16 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Gerät</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>What the devices of a family poll and publish, instead of every readable entry: FAMILY:ENTRY[,ENTRY...], where &apos;faceplate&apos; stands for what the overview faceplate shows and &apos;alarms&apos; for every bit field with alarm bits (repeat for more families).</source>
+        <translation>Was die Geräte einer Familie abfragen und veröffentlichen, statt jedes lesbaren Eintrags: FAMILIE:EINTRAG[,EINTRAG...], wobei &apos;faceplate&apos; für das steht, was die Kachel der Übersicht zeigt, und &apos;alarms&apos; für jedes Bitfeld mit Alarmbits (für weitere Familien wiederholen).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>family:entries</source>
+        <translation>familie:einträge</translation>
+    </message>
+    <message>
         <location line="+1"/>
         <source>Heartbeat interval in ms (default 1000).</source>
         <translation>Heartbeat-Intervall in ms (Standard 1000).</translation>
@@ -5158,6 +5196,16 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+4"/>
+        <source>--poll %1: %2</source>
+        <translation>--poll %1: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--poll names %1 twice: give its entries in one</source>
+        <translation>--poll nennt %1 zweimal: ihre Einträge in einem angeben</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>a station file lists its devices: --device goes with --line or --port</source>
         <translation>eine Stationsdatei nennt ihre Geräte selbst: --device gehört zu --line oder --port</translation>
     </message>

@@ -194,6 +194,11 @@ void Bus::setPollEntries(DeviceId id, const QStringList &ids)
     schedule(now());
 }
 
+QStringList Bus::pollEntries(DeviceId id) const
+{
+    return m_scheduler.pollEntries(id);
+}
+
 void Bus::setPollInterval(DeviceId id, int ms)
 {
     m_scheduler.setPollInterval(id, ms);

@@ -83,6 +83,8 @@ public:
     // Which entries a poll cycle reads (empty: every readable entry) and how often a
     // cycle starts (0: as fast as the line allows).
     void setPollEntries(DeviceId id, const QStringList &ids);
+    // Which entries a poll cycle reads (empty: every readable entry).
+    QStringList pollEntries(DeviceId id) const;
     void setPollInterval(DeviceId id, int ms);
     // Cycles run continuously while polling is on; with it off, requestCycle() runs one.
     void setPolling(bool on);

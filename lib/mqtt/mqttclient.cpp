@@ -196,6 +196,19 @@ bool MqttClient::publish(const QString &topic, const QByteArray &payload, bool r
     return true;
 }
 
+void MqttClient::unsubscribe(const QString &filter)
+{
+    const qsizetype index = m_subscriptions.indexOf(filter);
+    if (index < 0)
+        return;
+    m_subscriptions.removeAt(index);
+    m_subscriptionQos.removeAt(index);
+    if (m_state == State::Connected) {
+        mosquitto_unsubscribe(m_mosq, nullptr, filter.toUtf8().constData());
+        syncNotifiers();
+    }
+}
+
 void MqttClient::subscribe(const QString &filter, int qos)
 {
     if (m_subscriptions.contains(filter))

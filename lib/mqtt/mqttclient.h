@@ -48,6 +48,8 @@ public:
     bool publish(const QString &topic, const QByteArray &payload, bool retain, int qos = 1, int *messageId = nullptr);
     // Kept and subscribed again on every connect.
     void subscribe(const QString &filter, int qos = 1);
+    // Ends a subscription (also for later reconnects).
+    void unsubscribe(const QString &filter);
 
     // The settings' client id, or one made from the program's name, the host, the process
     // and a count (unique within the process: a broker drops a client whose id comes again).

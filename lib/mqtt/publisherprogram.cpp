@@ -1,6 +1,7 @@
 #include "mqtt/publisherprogram.h"
 
 #include "bus/bus.h"
+#include "bus/pollselection.h"
 #include "jumoversion.h"
 #include "protocol/familyregistry.h"
 
@@ -70,6 +71,11 @@ std::optional<int> PublisherProgram::run(const QStringList &arguments)
     parser.addOption({QStringLiteral("device"),
                       tr("A device, FAMILY@ADDRESS, or LINE/FAMILY@ADDRESS with several lines (repeat for more)."),
                       tr("device")});
+    parser.addOption({QStringLiteral("poll"),
+                      tr("What the devices of a family poll and publish, instead of every readable entry: "
+                         "FAMILY:ENTRY[,ENTRY...], where 'faceplate' stands for what the overview faceplate shows "
+                         "and 'alarms' for every bit field with alarm bits (repeat for more families)."),
+                      tr("family:entries")});
     parser.addOption({QStringLiteral("heartbeat"), tr("Heartbeat interval in ms (default 1000)."), tr("ms"),
                       QStringLiteral("1000")});
 
@@ -147,6 +153,18 @@ std::optional<int> PublisherProgram::run(const QStringList &arguments)
     m_registry = std::make_unique<FamilyRegistry>(FamilyRegistry::loadDefault());
     for (const QString &e : m_registry->errors())
         m_err << tr("refused map file: %1").arg(e) << Qt::endl;
+    for (const QString &text : parser.values(QStringLiteral("poll"))) {
+        const std::optional<PollSelection> selection = PollSelection::parse(text, *m_registry, &error);
+        if (!selection) {
+            m_err << tr("--poll %1: %2").arg(text, error) << Qt::endl;
+            return 2;
+        }
+        if (m_poll.contains(selection->family)) {
+            m_err << tr("--poll names %1 twice: give its entries in one").arg(selection->family) << Qt::endl;
+            return 2;
+        }
+        m_poll.insert(selection->family, selection->entries);
+    }
     std::optional<StationConfig> config;
     if (byStation) {
         if (parser.isSet(QStringLiteral("device"))) {
@@ -233,7 +251,9 @@ std::optional<int> PublisherProgram::openLines(const QList<LineConfig> &lines)
             const auto map = m_registry->family(device.family);
             if (!map)
                 return 2;   // StationConfig checked the family
-            bus->addDevice(map, device.address);
+            const DeviceId id = bus->addDevice(map, device.address);
+            if (m_poll.contains(device.family))
+                bus->setPollEntries(id, m_poll.value(device.family));
         }
         if (!bus->open()) {
             // A service keeps trying: the adapter may be plugged in later.

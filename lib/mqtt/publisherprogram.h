@@ -47,6 +47,7 @@ private:
     QTextStream &m_err;
     std::unique_ptr<FamilyRegistry> m_registry;
     std::vector<std::unique_ptr<Bus>> m_buses;
+    QHash<QString, QStringList> m_poll;   // family -> the entries its devices' polls read (none: all)
     std::unique_ptr<StationPublisher> m_publisher;
     QTimer m_retry;   // lines whose port did not open at the start
     bool m_stopping = false;

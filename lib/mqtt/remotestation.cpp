@@ -48,7 +48,11 @@ bool RemoteStation::start(const MqttSettings &broker, QString *error)
     m_client.setSettings(broker);
     if (!m_stationFilter.isEmpty())
         m_client.setWill(m_scheme.viewer(m_stationFilter, clientId()), TopicScheme::viewerGonePayload());
-    m_client.subscribe(m_scheme.stationFilter(m_stationFilter));
+    // QoS 0: a broker holds at most max_queued_messages (Mosquitto: 1000) QoS 1 messages
+    // for a client beyond the 20 in flight and drops the rest, which would cut a station's
+    // retained state of some 100 topics per device short on subscribing. Over one TCP
+    // connection QoS 1 adds nothing else for a mirror that starts clean on every connect.
+    m_client.subscribe(m_scheme.stationFilter(m_stationFilter), 0);
     if (!m_client.connectToBroker()) {
         if (error)
             *error = m_client.lastError();

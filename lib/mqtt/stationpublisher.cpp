@@ -41,6 +41,10 @@ StationPublisher::StationPublisher(const MqttSettings &broker, const QString &pr
                                             << "- the two overwrite each other's topics: give each its own --name";
                 emit rivalHeard();
             });
+    connect(&m_client, &MqttClient::messageReceived, this, &StationPublisher::sweepRetained);
+    m_sweepEnd.setSingleShot(true);
+    m_sweepEnd.setInterval(30000);   // a broker that never passes our own messages back
+    connect(&m_sweepEnd, &QTimer::timeout, this, &StationPublisher::endSweep);
     connect(&m_client, &MqttClient::connected, this, &StationPublisher::onConnected);
     connect(&m_client, &MqttClient::disconnected, this, [this](const QString &reason) {
         if (m_stopping) {
@@ -169,6 +173,13 @@ void StationPublisher::syncDevices(const QString &lineName)
         d.map = line->bus->deviceMap(id);
         if (!d.map)
             continue;
+        const QStringList polled = line->bus->pollEntries(id);
+        for (const RegisterEntry &e : d.map->entries()) {
+            // Reserves are read with their neighbours but mean nothing to anyone.
+            if (!e.reserved && (polled.isEmpty() || polled.contains(e.id)))
+                d.entries << e.id;
+        }
+        d.entrySet = QSet<QString>(d.entries.cbegin(), d.entries.cend());
         m_devices.insert(id, d);
         publishDevice(id);
     }
@@ -224,6 +235,13 @@ void StationPublisher::onConnected()
     for (const QString &topic : std::as_const(m_pendingClears))
         m_client.publish(topic, QByteArray(), true);
     m_pendingClears.clear();
+    // Subscribed before anything is published: the broker sends what is retained now,
+    // then passes on what this run publishes, not retained; the first of those ends it.
+    m_sweepFilter = m_scheme.stationFilter(m_station);
+    m_sweeping = true;
+    m_swept = 0;
+    m_client.subscribe(m_sweepFilter, 0);   // QoS 0, as RemoteStation says why
+    m_sweepEnd.start();
     publishAll();
     if (!m_stopping)
         m_heartbeat.start();
@@ -279,10 +297,7 @@ void StationPublisher::publishDevice(DeviceId id)
     publish(m_scheme.deviceInfo(m_station, d.line, d.name),
             TopicScheme::deviceInfoPayload(d.line, *d.map, line->bus->deviceAddress(id)));
     publish(m_scheme.deviceCondition(m_station, d.line, d.name), TopicScheme::conditionPayload(line->bus->condition(id)));
-    QStringList ids;
-    for (const RegisterEntry &e : d.map->entries())
-        ids << e.id;
-    publishEntries(id, ids, true);
+    publishEntries(id, d.entries, true);
 }
 
 void StationPublisher::publishEntries(DeviceId id, const QStringList &entryIds, bool force)
@@ -306,8 +321,7 @@ void StationPublisher::publishEntries(DeviceId id, const QStringList &entryIds, 
     for (const QString &entryId : entryIds) {
         const EntryState *state = bus.entryState(id, entryId);
         const RegisterEntry *entry = d.map->entry(entryId);
-        // Reserves are read with their neighbours but mean nothing to anyone.
-        if (!state || !entry || entry->reserved)
+        if (!state || !entry || !d.entrySet.contains(entryId))
             continue;
         const QDateTime read = state->goodMs >= 0 ? now.addMSecs(state->goodMs - clockNow) : QDateTime();
         const QByteArray payload = TopicScheme::valuePayload(*state, *entry, read);
@@ -328,6 +342,55 @@ void StationPublisher::forgetDevice(DeviceId id)
     clear(m_scheme.deviceCondition(m_station, d.line, d.name));
     for (auto it = d.published.keyBegin(); it != d.published.keyEnd(); ++it)
         clear(m_scheme.value(m_station, d.line, d.name, *it));
+}
+
+void StationPublisher::sweepRetained(const QString &topic, const QByteArray &payload, bool retained)
+{
+    if (!m_sweeping || !topic.startsWith(m_sweepFilter.chopped(1)))
+        return;
+    if (!retained) {
+        endSweep();
+        return;
+    }
+    const std::optional<TopicScheme::Topic> parsed = m_scheme.parse(topic);
+    if (payload.isEmpty() || !parsed || parsed->station != m_station || owns(*parsed))
+        return;
+    m_client.publish(topic, QByteArray(), true);
+    ++m_swept;
+}
+
+void StationPublisher::endSweep()
+{
+    if (!m_sweeping)
+        return;
+    m_sweeping = false;
+    m_sweepEnd.stop();
+    m_client.unsubscribe(m_sweepFilter);
+    if (m_swept > 0)
+        qCInfo(lcMqtt).noquote() << "cleared" << m_swept
+                                 << "retained topics an earlier run left (lines, devices or values this station "
+                                    "no longer publishes)";
+}
+
+bool StationPublisher::owns(const TopicScheme::Topic &topic) const
+{
+    switch (topic.kind) {
+    case TopicScheme::Kind::Status:
+    case TopicScheme::Kind::Heartbeat:
+    case TopicScheme::Kind::Viewer:
+        return true;   // the station's own, or a viewer's
+    case TopicScheme::Kind::Line:
+        return std::any_of(m_lines.cbegin(), m_lines.cend(), [&](const Line &l) { return l.name == topic.line; });
+    case TopicScheme::Kind::DeviceInfo:
+    case TopicScheme::Kind::DeviceCondition:
+    case TopicScheme::Kind::Value:
+        for (const Device &d : m_devices) {
+            if (d.line == topic.line && d.name == topic.device)
+                return topic.kind != TopicScheme::Kind::Value || d.entrySet.contains(topic.entry);
+        }
+        return false;
+    }
+    return true;
 }
 
 void StationPublisher::clear(const QString &topic)

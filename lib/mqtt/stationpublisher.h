@@ -18,6 +18,8 @@
 #include <QPointer>
 #include <QTimer>
 
+#include <algorithm>
+
 namespace jumo {
 
 class Bus;
@@ -68,6 +70,8 @@ private:
         QString line;
         QString name;   // "family@address"
         std::shared_ptr<const RegisterMap> map;
+        QStringList entries;                 // what it publishes: what its bus polls, in map order
+        QSet<QString> entrySet;
         QHash<QString, QString> published;   // entry id -> text and status last published
     };
     struct Line
@@ -87,6 +91,12 @@ private:
     void publishDevice(DeviceId id);
     void publishEntries(DeviceId id, const QStringList &entryIds, bool force);
     void forgetDevice(DeviceId id);
+    // After each connect, what an earlier run left retained under the station and this
+    // run does not publish (a line, a device, an entry no longer polled) is cleared, so no
+    // viewer takes it for a current value of this station.
+    void sweepRetained(const QString &topic, const QByteArray &payload, bool retained);
+    void endSweep();
+    bool owns(const TopicScheme::Topic &topic) const;
     void clear(const QString &topic);
     Line *lineOf(const Bus *bus);
     void publish(const QString &topic, const QByteArray &payload, bool retain = true);
@@ -109,6 +119,10 @@ private:
     bool m_rivalSaid = false;
     QString m_saidLoss;            // the broker's last reason logged: a retry every 10 s does not repeat it
     int m_messages = 0;            // counting the messages of one full publication
+    QString m_sweepFilter;
+    bool m_sweeping = false;
+    int m_swept = 0;
+    QTimer m_sweepEnd;
 };
 
 } // namespace jumo

@@ -2,6 +2,7 @@
 // devices at 9600 and 38400 baud with replies paced at the baud rate, against the
 // theoretical wire-time limit of the same requests, and the cost of one dead device
 // once the bus has backed off from it.
+#include "benchsupport.h"
 #include "bus/bus.h"
 #include "protocol/familyregistry.h"
 #include "bus/linetiming.h"
@@ -18,23 +19,9 @@
 #include <cstdio>
 
 using namespace jumo;
+using namespace jumo::bench;
 
 namespace {
-
-// Runs the event loop until the condition holds or the time is up.
-bool waitUntil(const std::function<bool()> &condition, int timeoutMs)
-{
-    QElapsedTimer timer;
-    timer.start();
-    while (!condition()) {
-        if (timer.elapsed() > timeoutMs)
-            return false;
-        QEventLoop loop;
-        QTimer::singleShot(5, &loop, &QEventLoop::quit);
-        loop.exec();
-    }
-    return true;
-}
 
 struct Result
 {

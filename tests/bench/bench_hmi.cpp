@@ -2,6 +2,8 @@
 // monitors 31 simulated devices at full line speed, all 31 faceplates on screen (a
 // 1920x1080 window), with the simulator in a process of its own, and the time from
 // start to the first live value in demo mode.
+#include "benchsupport.h"
+
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -14,39 +16,9 @@
 #include <cstdio>
 #include <unistd.h>
 
+using namespace jumo::bench;
+
 namespace {
-
-void spin(int ms)
-{
-    QEventLoop loop;
-    QTimer::singleShot(ms, &loop, &QEventLoop::quit);
-    loop.exec();
-}
-
-// User + system CPU seconds of a process, from /proc.
-double cpuSeconds(qint64 pid)
-{
-    QFile stat(QStringLiteral("/proc/%1/stat").arg(pid));
-    if (!stat.open(QIODevice::ReadOnly))
-        return -1;
-    const QByteArray line = stat.readAll();
-    const QList<QByteArray> fields = line.mid(line.lastIndexOf(')') + 2).split(' ');
-    // Fields after the name: state is index 0, utime is 11, stime 12.
-    return (fields.value(11).toDouble() + fields.value(12).toDouble()) / double(sysconf(_SC_CLK_TCK));
-}
-
-// Peak resident memory (VmHWM) in MiB.
-double peakMiB(qint64 pid)
-{
-    QFile status(QStringLiteral("/proc/%1/status").arg(pid));
-    if (!status.open(QIODevice::ReadOnly))
-        return -1;
-    for (const QByteArray &line : status.readAll().split('\n')) {
-        if (line.startsWith("VmHWM:"))
-            return line.mid(6).trimmed().split(' ').first().toDouble() / 1024.0;
-    }
-    return -1;
-}
 
 bool waitForOutput(QProcess &process, const QByteArray &text, int timeoutMs, QByteArray *seen)
 {
@@ -137,7 +109,7 @@ int main(int argc, char *argv[])
     spin(seconds * 1000);
     const double cpu = cpuSeconds(hmi.processId()) - cpuBefore;
     const double wallSeconds = wall.elapsed() / 1000.0;
-    const double peak = peakMiB(hmi.processId());
+    const double peak = statusKiB("VmHWM", hmi.processId()) / 1024.0;
     const double simCpu = cpuSeconds(sim.processId());
     hmi.terminate();
     hmi.waitForFinished(5000);

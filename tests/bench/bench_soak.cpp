@@ -5,6 +5,7 @@
 // are attached. Every value the bus calls current is checked against the simulator's
 // registers. Prints cycles, values checked, wrong values (must be 0), recoveries, memory
 // after warm-up and at the end, and CPU.
+#include "benchsupport.h"
 #include "bus/bus.h"
 #include "logs/alarmjournal.h"
 #include "logs/datalogger.h"
@@ -30,44 +31,9 @@
 #include <unistd.h>
 
 using namespace jumo;
+using namespace jumo::bench;
 
 namespace {
-
-bool waitUntil(const std::function<bool()> &condition, int timeoutMs)
-{
-    QElapsedTimer timer;
-    timer.start();
-    while (!condition()) {
-        if (timer.elapsed() > timeoutMs)
-            return false;
-        QEventLoop loop;
-        QTimer::singleShot(5, &loop, &QEventLoop::quit);
-        loop.exec();
-    }
-    return true;
-}
-
-double processCpuSeconds()
-{
-    QFile stat(QStringLiteral("/proc/self/stat"));
-    if (!stat.open(QIODevice::ReadOnly))
-        return -1;
-    const QByteArray line = stat.readAll();
-    const QList<QByteArray> fields = line.mid(line.lastIndexOf(')') + 2).split(' ');
-    return (fields.value(11).toDouble() + fields.value(12).toDouble()) / double(sysconf(_SC_CLK_TCK));
-}
-
-double residentKiB()
-{
-    QFile status(QStringLiteral("/proc/self/status"));
-    if (!status.open(QIODevice::ReadOnly))
-        return -1;
-    for (const QByteArray &line : status.readAll().split('\n')) {
-        if (line.startsWith("VmRSS:"))
-            return line.mid(6).trimmed().split(' ').first().toDouble();
-    }
-    return -1;
-}
 
 // The truth of one varied entry: what the simulator holds now and held before, so a read
 // that crossed a change is right with either.
@@ -247,24 +213,24 @@ int main(int argc, char **argv)
     QObject::connect(&bus, &Bus::pollCycleFinished, [&](DeviceId, double) { ++cycles; });
     QObject::connect(&bus, &Bus::onlineChanged, [&](DeviceId, bool online) { recoveries += online; });
 
-    const double cpuStart = processCpuSeconds();
+    const double cpuStart = cpuSeconds();
     QElapsedTimer clock;
     clock.start();
     double warmRss = -1;
     QTimer warm;
     warm.setSingleShot(true);
-    QObject::connect(&warm, &QTimer::timeout, [&] { warmRss = residentKiB(); });
+    QObject::connect(&warm, &QTimer::timeout, [&] { warmRss = statusKiB("VmRSS"); });
     warm.start(int(warmupMinutes * 60000));
     QTimer progress;
     QObject::connect(&progress, &QTimer::timeout, [&] {
         std::fprintf(stderr, "%5.1f min: %lld cycles, %lld values checked, %lld wrong, %d recoveries, RSS %.0f KiB\n",
-                     clock.elapsed() / 60000.0, cycles, checked, wrong, recoveries, residentKiB());
+                     clock.elapsed() / 60000.0, cycles, checked, wrong, recoveries, statusKiB("VmRSS"));
     });
     progress.start(60000);
     waitUntil([&] { return clock.elapsed() >= qint64(minutes * 60000); }, int(minutes * 60000) + 60000);
     const double seconds = clock.elapsed() / 1000.0;
-    const double cpu = processCpuSeconds() - cpuStart;
-    const double endRss = residentKiB();
+    const double cpu = cpuSeconds() - cpuStart;
+    const double endRss = statusKiB("VmRSS");
     logger.stop();
     bus.close();
 

@@ -14,6 +14,7 @@
 #include "navigationlist.h"
 #include "overviewpage.h"
 #include "stationline.h"
+#include "sim/simulatorserver.h"
 #include "testpeers.h"
 
 #include <QAction>
@@ -73,6 +74,7 @@ private slots:
     void settingsRestoreBothLines();
     void oneLineSettingsBecomeLine1();
     void removingALineAsksAndTakesItsDevices();
+    void serialTcpAndRtuOverTcpLinesAtOnce();
 
 private:
     // A window with line1 (IPC 300 @ 1, Quantrol @ 3) and cabinet-b (TYA 200 @ 2, IPC 300 @ 1),
@@ -342,6 +344,78 @@ void tst_StationLines::removingALineAsksAndTakesItsDevices()
     window->close();
     const QSettings kept(m_dir.filePath(QStringLiteral("remove.ini")), QSettings::IniFormat);
     QCOMPARE(kept.value("lines/size").toInt(), 1);
+}
+
+void tst_StationLines::serialTcpAndRtuOverTcpLinesAtOnce()
+{
+    // One window, three kinds of line: the serial pty line, a Modbus TCP gateway (the unit
+    // id is the device's address) and a serial device server passing RTU frames through
+    // TCP, each with a simulated line behind it.
+    SimulatorLine gatewayLine;
+    gatewayLine.setFormat(testFormat());
+    gatewayLine.setTickInterval(100);
+    gatewayLine.addDevice(families().family("tya200"), 5);
+    SimulatorServer gateway(&gatewayLine, SimulatorServer::Mode::ModbusTcp);
+    QVERIFY(gateway.listen(QHostAddress::LocalHost, 0));
+    SimulatorLine serverLine;
+    serverLine.setFormat(testFormat());
+    serverLine.setTickInterval(100);
+    serverLine.addDevice(families().family("dtron300"), 7);
+    SimulatorServer deviceServer(&serverLine, SimulatorServer::Mode::RtuOverTcp);
+    QVERIFY(deviceServer.listen(QHostAddress::LocalHost, 0));
+
+    MainWindow::Options options;
+    options.settingsFile = m_dir.filePath(QStringLiteral("kinds.ini"));
+    options.logFolder = m_dir.filePath(QStringLiteral("kinds-logs"));
+    MainWindow window(families(), options);
+    window.resize(1280, 800);
+    window.show();
+    StationLine *serial = window.lines().value(0);
+    QVERIFY(serial);
+    serial->setSettings(lineSettings(m_lineA.masterEnd()));
+    const QString gatewayAddress = QStringLiteral("tcp://127.0.0.1:%1").arg(gateway.port());
+    const QString serverAddress = QStringLiteral("rtu+tcp://127.0.0.1:%1").arg(deviceServer.port());
+    StationLine *tcp = window.addLine(QStringLiteral("gateway"), lineSettings(gatewayAddress));
+    StationLine *rtuTcp = window.addLine(QStringLiteral("devserver"), lineSettings(serverAddress));
+    QVERIFY(tcp && rtuTcp);
+    QVERIFY(window.connectLine(serial));
+    QVERIFY(window.connectLine(tcp));
+    QVERIFY(window.connectLine(rtuTcp));
+    window.addDevice(serial, families().family("ipc300"), 1);
+    window.addDevice(tcp, families().family("tya200"), 5);
+    window.addDevice(rtuTcp, families().family("dtron300"), 7);
+    window.showOverview();
+
+    const QList<std::tuple<QString, QString, int, QString>> devices{{"line1", "ipc300", 1, m_lineA.masterEnd()},
+                                                                    {"gateway", "tya200", 5, gatewayAddress},
+                                                                    {"devserver", "dtron300", 7, serverAddress}};
+    for (const auto &[line, family, address, where] : devices) {
+        DeviceTile *tile = window.deviceTile(line, family, quint8(address));
+        QVERIFY2(tile, qPrintable(line + "/" + family));
+        QTRY_VERIFY_WITH_TIMEOUT(tile->stateText() == "Online", 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(!tile->valuesText().contains(QStringLiteral("\u2014")), 20000);
+        LineHeader *header = window.lineHeader(line);
+        QVERIFY2(header && header->isVisible(), qPrintable(line));
+        QCOMPARE(header->stateText(), QString("\u25CF Connected"));
+        QVERIFY2(header->toolTip().contains(where), qPrintable(header->toolTip()));
+    }
+    // A setpoint changed behind each kind of line reaches its own faceplate.
+    m_simA.line().device(1)->setNumber("input_setpoint", 33);
+    gatewayLine.device(5)->setNumber("setpoint", 44);
+    serverLine.device(7)->setNumber("setpoint", 155);
+    QTRY_VERIFY_WITH_TIMEOUT(window.deviceTile("line1", "ipc300", 1)->valuesText().contains("Setpoint: 33"), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(window.deviceTile("gateway", "tya200", 5)->valuesText().contains("Setpoint: 44"), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(window.deviceTile("devserver", "dtron300", 7)->valuesText().contains("Setpoint: 155"),
+                             20000);
+    auto *status = window.findChild<ElidedLabel *>("lineStatus");
+    QTRY_COMPARE(status->fullText(), QString("Lines: 3 connected"));
+
+    // The gateway gone: its line is lost, the other two stay live.
+    gateway.close();
+    gateway.dropConnections();
+    QTRY_VERIFY_WITH_TIMEOUT(window.deviceTile("gateway", "tya200", 5)->stateText() != "Online", 20000);
+    QCOMPARE(window.deviceTile("line1", "ipc300", 1)->stateText(), QString("Online"));
+    QCOMPARE(window.deviceTile("devserver", "dtron300", 7)->stateText(), QString("Online"));
 }
 
 QTEST_MAIN(tst_StationLines)

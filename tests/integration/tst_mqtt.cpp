@@ -5,6 +5,7 @@
 // follow each time.
 #include "mosquittobroker.h"
 #include "bus/bus.h"
+#include "bus/pollselection.h"
 #include "models/livevaluesmodel.h"
 #include "mqtt/remotelines.h"
 #include "mqtt/remotestation.h"
@@ -59,6 +60,7 @@ private slots:
     void brokerRestartLosesNothing();
     void twoLinesFromAStationFile();
     void removedLineIsCleared();
+    void pollSelectionAndAnEarlierRunsLeftovers();
     void twoPublishersOfOneNameHearEachOther();
     void garbageMakesNoDeviceAndNoHeartbeat();
     void stalledBrokerIsNoRival();
@@ -520,6 +522,85 @@ void TstMqtt::removedLineIsCleared()
         QVERIFY2(!it.key().contains(QLatin1String("/devices/")) && !it.key().contains(QLatin1String("/lines/")),
                  qPrintable(it.key()));
     QVERIFY(retained.contains(QStringLiteral("jumo/inproc/status")));
+}
+
+void TstMqtt::pollSelectionAndAnEarlierRunsLeftovers()
+{
+    // A first run publishes both devices whole.
+    QVERIFY(m_broker->start());
+    QVERIFY(startPublisher(brokerUrl()));
+    {
+        auto mirror = startMirror();
+        QVERIFY(mirror);
+        QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 30000);
+    }
+    m_publisher->terminate();
+    QVERIFY(m_publisher->waitForFinished(10000));
+
+    // The next run has the IPC 300 only, and polls what its faceplate shows and its alarms.
+    QFile file(m_broker->file(QStringLiteral("one.json")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(QStringLiteral(R"({"format": "jumo-station", "version": 1, "name": "%1",
+        "lines": [{"name": "line1", "port": "%2", "baud": 19200, "devices": ["ipc300@1"]}]})")
+                       .arg(station, m_line->masterEnd())
+                       .toUtf8());
+    file.close();
+    const QStringList wanted = *PollSelection::expand(*families().family("ipc300"), {"faceplate", "alarms"}, nullptr);
+    QVERIFY(wanted.contains("load_voltage") && wanted.contains("malfunction_signal_1"));
+    const int requestsBefore = m_peer->line().requestsReceived();
+    QVERIFY(startPublisher(brokerUrl(), {"--station", file.fileName(), "--poll", "ipc300:faceplate,alarms"}));
+
+    // What the first run left and this one does not publish is gone from the broker: a
+    // new subscriber sees the IPC 300's selection, each value current, and nothing else.
+    const QString base = QStringLiteral("jumo/%1/devices/").arg(station);
+    QHash<QString, QByteArray> retained;
+    const auto onlyTheSelection = [&] {
+        retained = retainedMessages(m_broker->port(), QStringLiteral("jumo/%1/#").arg(station), {}, 3);
+        if (json(retained.value(QStringLiteral("jumo/%1/status").arg(station))).value("state") != "online")
+            return false;
+        QStringList values;
+        for (auto it = retained.cbegin(); it != retained.cend(); ++it) {
+            if (it.key().startsWith(base + "line1/tya200@2"))
+                return false;
+            if (it.key().startsWith(base + "line1/ipc300@1/values/")) {
+                if (json(it.value()).value("validity") != "current")
+                    return false;
+                values << it.key().section('/', -1);
+            }
+        }
+        values.sort();
+        QStringList expected = wanted;
+        expected.sort();
+        return values == expected;
+    };
+    QTRY_VERIFY2_WITH_TIMEOUT(onlyTheSelection(), qPrintable(QStringList(retained.keys()).join('\n')), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(publisherErrors().contains("cleared"), 10000);
+
+    // A viewer's mirror has the one device, its selection current, nothing more.
+    auto mirror = startMirror();
+    QVERIFY(mirror);
+    QTRY_VERIFY_WITH_TIMEOUT(mirror->devices().size() == 1 && mirror->isLive(station), 20000);
+    const DeviceId id = mirror->devices().constFirst();
+    QTRY_COMPARE_WITH_TIMEOUT(mirror->entryIds(id).size(), wanted.size(), 10000);
+    for (const QString &entry : wanted)
+        QTRY_COMPARE_WITH_TIMEOUT(mirror->entryState(id, entry)->validity, Validity::Current, 10000);
+    // The line carries the selection's blocks only: no read reaches the identity texts at
+    // 0x0000, which every whole-map cycle reads.
+    QVERIFY(m_peer->line().requestsReceived() > requestsBefore);
+    int reads = 0;
+    int identityReads = 0;
+    const auto watch = connect(&m_peer->line(), &SimulatorLine::requestReceived, this, [&](const QByteArray &frame) {
+        if (frame.size() == 8 && (frame.at(1) == 3 || frame.at(1) == 4)) {
+            ++reads;
+            identityReads += frame.at(2) == 0 && frame.at(3) == 0 ? 1 : 0;
+        }
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(reads >= 20, 20000);
+    disconnect(watch);
+    QCOMPARE(identityReads, 0);
+    // A value of the selection still follows the device.
+    m_peer->line().device(1)->setNumber("load_voltage", 123.4);
+    QTRY_VERIFY_WITH_TIMEOUT(mirror->published(id, "load_voltage")->text.startsWith("123.4"), 20000);
 }
 
 void TstMqtt::twoPublishersOfOneNameHearEachOther()

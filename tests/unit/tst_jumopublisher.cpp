@@ -59,6 +59,19 @@ void TstJumoPublisher::refused_data()
                                               << "a station file lists its devices";
     QTest::newRow("missing station file") << QStringList{"--broker", "mqtt://host", "--station", "/nonexistent.json"}
                                           << "/nonexistent.json";
+    QTest::newRow("poll without a family") << QStringList{"--broker", "mqtt://host", "--poll", "load_voltage"} + line
+                                           << "is not FAMILY:ENTRY";
+    QTest::newRow("poll of an unknown family") << QStringList{"--broker", "mqtt://host", "--poll", "s7:x"} + line
+                                               << "unknown family 's7'";
+    QTest::newRow("poll of an unknown entry") << QStringList{"--broker", "mqtt://host", "--poll", "ipc300:faceplate,nope"}
+                    + line << "'nope' is no entry of ipc300";
+    QTest::newRow("poll of a write-only entry")
+            << QStringList{"--broker", "mqtt://host", "--poll", "ipc300:binary_signal_write"} + line << "cannot be read";
+    QTest::newRow("poll of nothing") << QStringList{"--broker", "mqtt://host", "--poll", "ipc300:"} + line
+                                     << "name at least one entry of ipc300";
+    QTest::newRow("poll of a family twice")
+            << QStringList{"--broker", "mqtt://host", "--poll", "ipc300:alarms", "--poll", "ipc300:faceplate"} + line
+            << "names ipc300 twice";
     QTest::newRow("heartbeat too fast") << QStringList{"--broker", "mqtt://host", "--heartbeat", "5"} + line
                                         << "--heartbeat must be";
 }
