@@ -3815,7 +3815,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Der letzte Wille (Last Will) lässt sich nicht setzen: %1</translation>
     </message>
     <message>
-        <location line="+154"/>
+        <location line="+159"/>
         <source>the broker refused the connection: %1</source>
         <translation>Der Broker hat die Verbindung abgelehnt: %1</translation>
     </message>
@@ -4859,6 +4859,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>%1 &apos;%2&apos; kann nicht gelesen werden</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>%1 &apos;%2&apos; is a reserve: it means nothing and is never published</source>
+        <translation>%1 &apos;%2&apos; ist eine Reserve: sie bedeutet nichts und wird nie veröffentlicht</translation>
+    </message>
+    <message>
         <location line="+18"/>
         <source>name at least one entry of %1 to poll</source>
         <translation>mindestens einen Eintrag von %1 zum Abfragen angeben</translation>
@@ -4996,7 +5001,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::PublisherProgram</name>
     <message>
-        <location filename="../lib/mqtt/publisherprogram.cpp" line="+33"/>
+        <location filename="../lib/mqtt/publisherprogram.cpp" line="+35"/>
         <source>Publishes the devices of a station&apos;s lines to an MQTT broker: identity, values with their validity and status, alarm bits, line state. Owns the lines and only reads them.</source>
         <translation>Veröffentlicht die Geräte der Linien einer Station an einem MQTT-Broker: Identität, Werte mit Gültigkeit und Status, Alarmbits, Linienzustand. Ist Master der Linien und liest sie nur.</translation>
     </message>
@@ -5215,7 +5220,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>%1 ist doppelt genannt</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+15"/>
+        <source>--poll %1: no device of the station is a %1</source>
+        <translation>--poll %1: kein Gerät der Station ist ein %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>name at least one device: --device FAMILY@ADDRESS (LINE/FAMILY@ADDRESS with several lines)</source>
         <translation>mindestens ein Gerät nennen: --device FAMILIE@ADRESSE (LINIE/FAMILIE@ADRESSE bei mehreren Linien)</translation>
     </message>
@@ -5848,18 +5858,18 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::StationConfig</name>
     <message>
-        <location filename="../lib/bus/stationconfig.cpp" line="+47"/>
+        <location filename="../lib/bus/stationconfig.cpp" line="+50"/>
         <source>the line address (serial port or URL) is empty</source>
         <translation>die Adresse der Leitung (serielle Schnittstelle oder URL) ist leer</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location line="+115"/>
+        <location line="+150"/>
         <source>&apos;name&apos; must be 1..%1 of the letters A-Z, a-z, digits, &apos;_&apos;, &apos;.&apos; and &apos;-&apos;, not &apos;%2&apos;</source>
         <translation>&apos;name&apos; muss aus 1..%1 der Zeichen A-Z, a-z, Ziffern, &apos;_&apos;, &apos;.&apos; und &apos;-&apos; bestehen, nicht &apos;%2&apos;</translation>
     </message>
     <message>
-        <location line="-108"/>
+        <location line="-143"/>
         <source>&apos;%1&apos; must be 4800, 9600, 19200 or 38400, not %2</source>
         <translation>&apos;%1&apos; muss 4800, 9600, 19200 oder 38400 sein, nicht %2</translation>
     </message>
@@ -5884,7 +5894,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>der Leitungsname &apos;%1&apos; wird auch von lines[%2] verwendet</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+33"/>
+        <source>&apos;port&apos; %1 is the port of lines[%2] (%3) too: a line has one master, so give the devices of both to one line</source>
+        <translation>&apos;port&apos; %1 ist auch der Anschluss von lines[%2] (%3): eine Leitung hat einen Master, daher die Geräte beider einer Leitung geben</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>malformed JSON at byte %1: %2</source>
         <translation>fehlerhaftes JSON bei Byte %1: %2</translation>
     </message>

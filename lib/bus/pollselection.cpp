@@ -70,11 +70,16 @@ std::optional<QStringList> PollSelection::expand(const RegisterMap &map, const Q
                     *error = tr("%1 '%2' cannot be read").arg(map.family, word);
                 return std::nullopt;
             }
+            if (entry->reserved) {
+                if (error)
+                    *error = tr("%1 '%2' is a reserve: it means nothing and is never published").arg(map.family, word);
+                return std::nullopt;
+            }
             ids << word;
         }
         for (const QString &id : std::as_const(ids)) {
             const RegisterEntry *entry = map.entry(id);
-            if (entry && entry->isReadable())
+            if (entry && entry->isReadable() && !entry->reserved)
                 wanted.insert(id);
         }
     }

@@ -7,6 +7,9 @@
 #include "protocol/jsonfieldreader.h"
 #include "protocol/regularfile.h"
 
+#include <QDir>
+#include <QFileInfo>
+#include <QHash>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -129,6 +132,41 @@ QStringList nameLines(QList<LineConfig> &lines)
     return problems;
 }
 
+// A serial port or a serial device server has one master: two lines of one station on
+// it would talk over each other. (Two lines through one Modbus TCP gateway are two
+// connections the gateway orders, and allowed.)
+QStringList sharedAddresses(const QList<LineConfig> &lines)
+{
+    const auto identity = [](const QString &text) -> QString {
+        const std::optional<LineAddress> address = LineAddress::parse(text, nullptr);
+        if (!address || address->kind == LineAddress::Kind::ModbusTcp)
+            return QString();
+        if (address->kind == LineAddress::Kind::RtuOverTcp)
+            return QStringLiteral("rtu+tcp://%1:%2").arg(address->host.toLower()).arg(address->port);
+        const QString canonical = QFileInfo(text).canonicalFilePath();   // by-id links, ./ and ../
+        return canonical.isEmpty() ? QDir::cleanPath(text) : canonical;
+    };
+    QStringList problems;
+    QHash<QString, qsizetype> first;
+    for (qsizetype i = 0; i < lines.size(); ++i) {
+        const QString key = identity(lines[i].settings.portName);
+        if (key.isEmpty())
+            continue;
+        if (const auto it = first.constFind(key); it != first.cend()) {
+            problems << QStringLiteral("%1: %2").arg(
+                    lineWhere(i, lines[i].name),
+                    StationConfig::tr("'port' %1 is the port of lines[%2] (%3) too: a line has one master, so give "
+                                      "the devices of both to one line")
+                            .arg(lines[i].settings.portName)
+                            .arg(*it)
+                            .arg(lines[*it].name));
+        } else {
+            first.insert(key, i);
+        }
+    }
+    return problems;
+}
+
 class StationParser : private JsonFieldReader
 {
 public:
@@ -186,7 +224,7 @@ public:
         qsizetype index = 0;
         for (const QJsonValue &line : lines.toArray())
             station.lines << parseLine(line, index++);
-        for (const QString &problem : nameLines(station.lines))
+        for (const QString &problem : nameLines(station.lines) + sharedAddresses(station.lines))
             fail(QString(), problem);
         if (!errors().isEmpty())
             return std::nullopt;
@@ -465,7 +503,7 @@ std::optional<LineConfig> StationConfig::parseLineSpec(const QString &spec, cons
 
 std::optional<StationConfig> StationConfig::fromLines(QList<LineConfig> lines, QString *error)
 {
-    QStringList problems = nameLines(lines);
+    QStringList problems = nameLines(lines) + sharedAddresses(lines);
     for (qsizetype i = 0; i < lines.size(); ++i) {
         for (const QString &duplicate : duplicateAddresses(lines[i].devices))
             problems << QStringLiteral("%1: %2").arg(lineWhere(i, lines[i].name), duplicate);

@@ -196,6 +196,11 @@ bool MqttClient::publish(const QString &topic, const QByteArray &payload, bool r
     return true;
 }
 
+bool MqttClient::hasPendingWrites() const
+{
+    return m_mosq && m_state == State::Connected && mosquitto_want_write(m_mosq);
+}
+
 void MqttClient::unsubscribe(const QString &filter)
 {
     const qsizetype index = m_subscriptions.indexOf(filter);

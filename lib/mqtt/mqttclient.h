@@ -48,6 +48,8 @@ public:
     bool publish(const QString &topic, const QByteArray &payload, bool retain, int qos = 1, int *messageId = nullptr);
     // Kept and subscribed again on every connect.
     void subscribe(const QString &filter, int qos = 1);
+    // Messages handed over that the socket has not taken yet.
+    bool hasPendingWrites() const;
     // Ends a subscription (also for later reconnects).
     void unsubscribe(const QString &filter);
 

@@ -9,6 +9,8 @@
 #include <QFileInfo>
 #include <QLoggingCategory>
 
+#include <algorithm>
+
 Q_DECLARE_LOGGING_CATEGORY(lcMqtt)
 
 namespace jumo {
@@ -213,6 +215,12 @@ std::optional<int> PublisherProgram::run(const QStringList &arguments)
     if (!config) {
         m_err << error << Qt::endl;
         return 2;
+    }
+    for (auto it = m_poll.cbegin(); it != m_poll.cend(); ++it) {
+        const QList<StationDevice> devices = config->devices();
+        if (std::none_of(devices.cbegin(), devices.cend(),
+                         [&](const StationDevice &d) { return d.device.family == it.key(); }))
+            m_err << tr("--poll %1: no device of the station is a %1").arg(it.key()) << Qt::endl;
     }
     if (config->devices().isEmpty()) {
         m_err << tr("name at least one device: --device FAMILY@ADDRESS (LINE/FAMILY@ADDRESS with several lines)")

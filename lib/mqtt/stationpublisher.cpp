@@ -14,7 +14,8 @@ namespace jumo {
 
 StationPublisher::StationPublisher(const MqttSettings &broker, const QString &prefix, const QString &station,
                                    QObject *parent)
-    : QObject(parent), m_scheme(prefix), m_station(station)
+    : QObject(parent), m_scheme(prefix), m_station(station),
+      m_sweep(broker, m_scheme, station, [this](const TopicScheme::Topic &topic) { return owns(topic); })
 {
     m_client.setSettings(broker);
     m_heartbeat.setInterval(1000);
@@ -41,10 +42,17 @@ StationPublisher::StationPublisher(const MqttSettings &broker, const QString &pr
                                             << "- the two overwrite each other's topics: give each its own --name";
                 emit rivalHeard();
             });
-    connect(&m_client, &MqttClient::messageReceived, this, &StationPublisher::sweepRetained);
-    m_sweepEnd.setSingleShot(true);
-    m_sweepEnd.setInterval(30000);   // a broker that never passes our own messages back
-    connect(&m_sweepEnd, &QTimer::timeout, this, &StationPublisher::endSweep);
+    connect(&m_sweep, &RetainedSweep::finished, this, [](int cleared, int left, int passes) {
+        // A clear lost with a pass's connection is sent again in the next: the count is of
+        // messages sent, not of topics.
+        if (cleared > 0)
+            qCInfo(lcMqtt).noquote() << "cleared what an earlier run left retained (lines, devices or values this "
+                                        "station no longer publishes):"
+                                     << cleared << "empty retained messages in" << passes << "passes";
+        if (left > 0)
+            qCWarning(lcMqtt).noquote() << left << "retained topics an earlier run left are still there after" << passes
+                                        << "passes; they are cleared after the next connect";
+    });
     connect(&m_client, &MqttClient::connected, this, &StationPublisher::onConnected);
     connect(&m_client, &MqttClient::disconnected, this, [this](const QString &reason) {
         if (m_stopping) {
@@ -205,6 +213,7 @@ bool StationPublisher::start(QString *error)
 void StationPublisher::stop()
 {
     m_heartbeat.stop();
+    m_sweep.stop();
     m_stopping = true;
     if (!m_client.isConnected()) {
         m_stopSignalled = true;
@@ -235,14 +244,9 @@ void StationPublisher::onConnected()
     for (const QString &topic : std::as_const(m_pendingClears))
         m_client.publish(topic, QByteArray(), true);
     m_pendingClears.clear();
-    // Subscribed before anything is published: the broker sends what is retained now,
-    // then passes on what this run publishes, not retained; the first of those ends it.
-    m_sweepFilter = m_scheme.stationFilter(m_station);
-    m_sweeping = true;
-    m_swept = 0;
-    m_client.subscribe(m_sweepFilter, 0);   // QoS 0, as RemoteStation says why
-    m_sweepEnd.start();
     publishAll();
+    if (!m_stopping)
+        m_sweep.start(std::max(3000, 2 * m_heartbeat.interval()));
     if (!m_stopping)
         m_heartbeat.start();
 }
@@ -342,34 +346,6 @@ void StationPublisher::forgetDevice(DeviceId id)
     clear(m_scheme.deviceCondition(m_station, d.line, d.name));
     for (auto it = d.published.keyBegin(); it != d.published.keyEnd(); ++it)
         clear(m_scheme.value(m_station, d.line, d.name, *it));
-}
-
-void StationPublisher::sweepRetained(const QString &topic, const QByteArray &payload, bool retained)
-{
-    if (!m_sweeping || !topic.startsWith(m_sweepFilter.chopped(1)))
-        return;
-    if (!retained) {
-        endSweep();
-        return;
-    }
-    const std::optional<TopicScheme::Topic> parsed = m_scheme.parse(topic);
-    if (payload.isEmpty() || !parsed || parsed->station != m_station || owns(*parsed))
-        return;
-    m_client.publish(topic, QByteArray(), true);
-    ++m_swept;
-}
-
-void StationPublisher::endSweep()
-{
-    if (!m_sweeping)
-        return;
-    m_sweeping = false;
-    m_sweepEnd.stop();
-    m_client.unsubscribe(m_sweepFilter);
-    if (m_swept > 0)
-        qCInfo(lcMqtt).noquote() << "cleared" << m_swept
-                                 << "retained topics an earlier run left (lines, devices or values this station "
-                                    "no longer publishes)";
 }
 
 bool StationPublisher::owns(const TopicScheme::Topic &topic) const

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "mqtt/mqttclient.h"
+#include "mqtt/retainedsweep.h"
 #include "mqtt/topicscheme.h"
 
 #include <QDateTime>
@@ -91,11 +92,8 @@ private:
     void publishDevice(DeviceId id);
     void publishEntries(DeviceId id, const QStringList &entryIds, bool force);
     void forgetDevice(DeviceId id);
-    // After each connect, what an earlier run left retained under the station and this
-    // run does not publish (a line, a device, an entry no longer polled) is cleared, so no
-    // viewer takes it for a current value of this station.
-    void sweepRetained(const QString &topic, const QByteArray &payload, bool retained);
-    void endSweep();
+    // What this run publishes (or, status, heartbeat and viewers, leaves alone): after each
+    // connect, m_sweep clears every other retained topic under the station.
     bool owns(const TopicScheme::Topic &topic) const;
     void clear(const QString &topic);
     Line *lineOf(const Bus *bus);
@@ -119,10 +117,7 @@ private:
     bool m_rivalSaid = false;
     QString m_saidLoss;            // the broker's last reason logged: a retry every 10 s does not repeat it
     int m_messages = 0;            // counting the messages of one full publication
-    QString m_sweepFilter;
-    bool m_sweeping = false;
-    int m_swept = 0;
-    QTimer m_sweepEnd;
+    RetainedSweep m_sweep;
 };
 
 } // namespace jumo

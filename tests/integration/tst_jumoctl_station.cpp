@@ -364,8 +364,11 @@ void tst_JumoctlStation::lostLineShowsLineLostWhileTheOtherGoesOn()
     // Line a keeps going, with current values.
     QTRY_VERIFY_WITH_TIMEOUT(readRecords() && count("a/ipc300@1", "online", lost + 1) >= 3, 30000);
     QCOMPARE(count("b/ipc300@1", "online", lost + 1), 0);
-    for (qsizetype i = lost + 1; i < records.size(); ++i)
-        QCOMPARE(records[i]["values"].toObject()["input_setpoint"].toDouble(), 11.0);
+    // (Line b may say more than once that it is lost while it tries to reopen its port.)
+    for (qsizetype i = lost + 1; i < records.size(); ++i) {
+        if (records[i]["device"].toString() == "a/ipc300@1")
+            QCOMPARE(records[i]["values"].toObject()["input_setpoint"].toDouble(), 11.0);
+    }
     QVERIFY(monitor.state() == QProcess::Running);
 
     // The adapter of line b is back: the bus reopens it by itself and its records resume.

@@ -61,6 +61,7 @@ private slots:
     void twoLinesFromAStationFile();
     void removedLineIsCleared();
     void pollSelectionAndAnEarlierRunsLeftovers();
+    void aHugeLeftoverNeverHoldsUpTheStation();
     void twoPublishersOfOneNameHearEachOther();
     void garbageMakesNoDeviceAndNoHeartbeat();
     void stalledBrokerIsNoRival();
@@ -601,6 +602,60 @@ void TstMqtt::pollSelectionAndAnEarlierRunsLeftovers()
     // A value of the selection still follows the device.
     m_peer->line().device(1)->setNumber("load_voltage", 123.4);
     QTRY_VERIFY_WITH_TIMEOUT(mirror->published(id, "load_voltage")->text.startsWith("123.4"), 20000);
+}
+
+void TstMqtt::aHugeLeftoverNeverHoldsUpTheStation()
+{
+    // 60000 retained values an earlier run (or anyone) left under the station, far more
+    // than a broker queues for a client: the publisher's clean-up takes them in and clears
+    // them over a connection of its own, while the station's heartbeat and values go on.
+    QVERIFY(m_broker->start());
+    const MqttSettings broker = *MqttSettings::fromUrl(brokerUrl(), nullptr);
+    {
+        MqttClient junk;
+        junk.setSettings(broker);
+        QSignalSpy connected(&junk, &MqttClient::connected);
+        QVERIFY(junk.connectToBroker());
+        QTRY_COMPARE_WITH_TIMEOUT(connected.size(), 1, 10000);
+        const QByteArray payload = R"({"value":1,"text":"1","unit":"","status":"ok","validity":"current",)"
+                                   R"("words":[1],"read":"2026-12-01T00:00:00.000Z"})";
+        for (int i = 0; i < 60000; ++i) {
+            QVERIFY(junk.publish(QStringLiteral("jumo/%1/devices/line1/ipc300@1/values/junk%2").arg(station).arg(i),
+                                 payload, true, 0));
+            if (i % 1000 == 999)
+                QTRY_VERIFY_WITH_TIMEOUT(!junk.hasPendingWrites(), 30000);
+        }
+        QTRY_VERIFY_WITH_TIMEOUT(!junk.hasPendingWrites(), 30000);
+        junk.disconnectFromBroker();
+    }
+    QCOMPARE(retainedMessages(m_broker->port(), QStringLiteral("jumo/%1/devices/line1/ipc300@1/values/junk1").arg(station),
+                              {}, 3)
+                     .size(),
+             1);
+
+    // Heartbeats from the start, while the clean-up runs.
+    MqttClient listener;
+    listener.setSettings(broker);
+    int heartbeats = 0;
+    connect(&listener, &MqttClient::messageReceived, this, [&](const QString &topic) {
+        heartbeats += topic.endsWith(QLatin1String("/heartbeat")) ? 1 : 0;
+    });
+    listener.subscribe(QStringLiteral("jumo/%1/heartbeat").arg(station), 0);
+    QVERIFY(listener.connectToBroker());
+    QTRY_VERIFY_WITH_TIMEOUT(listener.isConnected(), 10000);
+    QVERIFY(startPublisher(brokerUrl()));
+    QTRY_VERIFY_WITH_TIMEOUT(heartbeats >= 3, 30000);
+
+    // In the end nothing of it is left, and a viewer has exactly the station's entries.
+    QTRY_VERIFY_WITH_TIMEOUT(publisherErrors().contains(QLatin1String("cleared")), 120000);
+    QVERIFY2(!publisherErrors().contains(QLatin1String("still there")), qPrintable(publisherErrors()));
+    QVERIFY(retainedMessages(m_broker->port(), QStringLiteral("jumo/%1/devices/+/+/values/+").arg(station), {}, 5)
+                    .size()
+            == publishedEntries("ipc300") + publishedEntries("tya200"));
+    auto mirror = startMirror();
+    QVERIFY(mirror);
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 60000);
+    QVERIFY(m_publisher->state() == QProcess::Running);
 }
 
 void TstMqtt::twoPublishersOfOneNameHearEachOther()

@@ -92,6 +92,7 @@ void tst_PollSelection::refused_data()
     QTest::newRow("unknown entry") << "quantrol:faceplate,load_voltage" << "'load_voltage' is no entry of quantrol";
     QTest::newRow("write-only entry") << "ipc300:binary_signal_write" << "cannot be read";
     QTest::newRow("nothing") << "tya200:," << "name at least one entry of tya200";
+    QTest::newRow("a reserve") << "ipc300:load_voltage,reserve_0023" << "ipc300 'reserve_0023' is a reserve";
 }
 
 void tst_PollSelection::refused()

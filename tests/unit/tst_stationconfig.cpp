@@ -28,9 +28,12 @@ QByteArray stationJson(const QByteArrayList &lines, const QByteArray &top = QByt
     return json + "]}";
 }
 
+// A line on a port of its own (two lines cannot share a serial port).
 QByteArray line(const QByteArray &name, const QByteArray &rest = QByteArray())
 {
-    return "\"name\": \"" + name + "\", \"port\": \"/dev/ttyUSB0\"" + (rest.isEmpty() ? "" : ", " + rest);
+    static int ports = 0;
+    return "\"name\": \"" + name + "\", \"port\": \"/dev/ttyUSB" + QByteArray::number(ports++) + "\""
+            + (rest.isEmpty() ? "" : ", " + rest);
 }
 
 const QString nameRule = QStringLiteral("'name' must be 1..32 of the letters A-Z, a-z, digits, '_', '.' and '-', not ");
@@ -145,6 +148,10 @@ void tst_StationConfig::refusesBadFiles_data()
                                 << "lines[0] (a): 'port' is missing or not a non-empty string";
     QTest::newRow("blank port") << stationJson({"\"name\": \"a\", \"port\": \"  \""})
                                 << "lines[0] (a): 'port': the line address (serial port or URL) is empty";
+    QTest::newRow("one port on two lines")
+            << stationJson({"\"name\": \"a\", \"port\": \"/dev/ttyS4\"", "\"name\": \"b\", \"port\": \"/dev/ttyS4\""})
+            << "lines[1] (b): 'port' /dev/ttyS4 is the port of lines[0] (a) too: a line has one master, so give the "
+               "devices of both to one line";
     QTest::newRow("duplicate line names") << stationJson({line("a"), line("b"), line("a")})
                                           << "lines[2] (a): the line name 'a' is used by lines[0] too";
     QTest::newRow("a name equal to a default name") << stationJson({line("line2"), "\"port\": \"/dev/ttyS1\""})
@@ -496,6 +503,14 @@ void tst_StationConfig::fromLinesRefuses_data()
                                   << "lines[1] (a): the line name 'a' is used by lines[0] too";
     QTest::newRow("a name that is another's default") << QStringList{"/dev/ttyS0", "/dev/ttyS1,name=line1"}
                                                       << "lines[1] (line1): the line name 'line1' is used by lines[0] too";
+    QTest::newRow("one serial port twice")
+            << QStringList{"/dev/ttyS0,name=a", "/dev/ttyS1,name=b", "/dev/../dev/ttyS0,name=c"}
+            << "lines[2] (c): 'port' /dev/../dev/ttyS0 is the port of lines[0] (a) too: a line has one master, so "
+               "give the devices of both to one line";
+    QTest::newRow("one device server twice")
+            << QStringList{"rtu+tcp://Server.local:4001,name=a", "rtu+tcp://server.local:4001,name=b"}
+            << "lines[1] (b): 'port' rtu+tcp://server.local:4001 is the port of lines[0] (a) too: a line has one "
+               "master, so give the devices of both to one line";
 }
 
 void tst_StationConfig::fromLinesRefuses()
