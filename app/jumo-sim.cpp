@@ -10,6 +10,7 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <QHostAddress>
 #include <QTextStream>
 
@@ -182,7 +183,8 @@ int main(int argc, char *argv[])
             err << reason << Qt::endl;
             QCoreApplication::exit(1);
         });
-        pty.start(parser.value(QStringLiteral("pty")));
+        // Absolute: Qt takes a relative port name as one under /dev.
+        pty.start(QFileInfo(parser.value(QStringLiteral("pty"))).absoluteFilePath());
     } else {
         serve(parser.value(QStringLiteral("port")));
         if (!line.isOpen())

@@ -9,6 +9,8 @@
 
 #include <mosquitto.h>
 
+#include <sys/ioctl.h>
+
 #include <cerrno>
 #include <cstring>
 #include <atomic>
@@ -171,6 +173,10 @@ void MqttClient::disconnectFromBroker()
     if (!m_mosq)
         return;
     if (m_state == State::Connected) {
+        // What the broker sent and nobody read yet is read first: a socket closed with
+        // unread data is reset by the kernel, and the broker may lose the DISCONNECT
+        // with it and send the will after all.
+        drainIncoming();
         // Sends DISCONNECT now; the broker drops the will. onDisconnect(0) follows.
         mosquitto_disconnect(m_mosq);
         service();
@@ -194,6 +200,17 @@ bool MqttClient::publish(const QString &topic, const QByteArray &payload, bool r
     }
     ++m_published;
     return true;
+}
+
+void MqttClient::drainIncoming()
+{
+    m_inLibrary = true;
+    int available = 0;
+    for (int i = 0; i < 100000 && m_socket >= 0 && ::ioctl(m_socket, FIONREAD, &available) == 0 && available > 0; ++i) {
+        if (mosquitto_loop_read(m_mosq, 1) != MOSQ_ERR_SUCCESS)
+            break;
+    }
+    m_inLibrary = false;
 }
 
 bool MqttClient::hasPendingWrites() const

@@ -86,6 +86,7 @@ private:
     void handleConnect(int rc);
     void handleDisconnect(int rc);
     void attempt();
+    void drainIncoming();
     void service();
     void syncNotifiers();
     void lost(const QString &reason);

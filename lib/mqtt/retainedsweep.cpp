@@ -22,8 +22,18 @@ RetainedSweep::RetainedSweep(const MqttSettings &broker, const TopicScheme &sche
     connect(&m_client, &MqttClient::connected, this, &RetainedSweep::beginPass);
     connect(&m_client, &MqttClient::messageReceived, this, &RetainedSweep::onMessage);
     connect(&m_client, &MqttClient::disconnected, this, [this](const QString &reason) {
-        if (!reason.isEmpty())
-            m_inPass = false;   // lost during a pass: the client reconnects, and the pass begins again
+        if (reason.isEmpty() || !m_running)
+            return;
+        // Lost during a pass, or not let in (a broker's connection limit): the client tries
+        // again, and the pass begins again; after three failures in a row it is given up.
+        m_inPass = false;
+        m_passEnd.stop();
+        if (++m_failures < 3)
+            return;
+        qCWarning(lcMqtt).noquote() << "the clean-up of retained topics gave up after three failed connections ("
+                                           + reason + QStringLiteral("): what an earlier run left stays until the "
+                                                                     "station connects again");
+        stop();
     });
     connect(&m_client, &MqttClient::refused, this, [this](const QString &reason) {
         qCWarning(lcMqtt).noquote() << "the clean-up of retained topics cannot connect:" << reason;
@@ -38,6 +48,7 @@ void RetainedSweep::start(int passMs)
     m_running = true;
     m_pass = 0;
     m_cleared = 0;
+    m_failures = 0;
     if (!m_client.connectToBroker()) {
         qCWarning(lcMqtt).noquote() << "the clean-up of retained topics cannot connect:" << m_client.lastError();
         m_running = false;
@@ -58,6 +69,7 @@ void RetainedSweep::beginPass()
     if (!m_running)
         return;
     m_inPass = true;
+    m_failures = 0;
     m_found = 0;
     ++m_pass;
     m_client.subscribe(m_filter, 0);

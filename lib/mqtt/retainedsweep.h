@@ -62,6 +62,7 @@ private:
     int m_pass = 0;
     int m_found = 0;     // this pass
     int m_cleared = 0;   // all passes
+    int m_failures = 0;  // connections lost or refused in a row
 };
 
 } // namespace jumo

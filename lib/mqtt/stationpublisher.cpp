@@ -51,7 +51,7 @@ StationPublisher::StationPublisher(const MqttSettings &broker, const QString &pr
                                      << cleared << "empty retained messages in" << passes << "passes";
         if (left > 0)
             qCWarning(lcMqtt).noquote() << left << "retained topics an earlier run left are still there after" << passes
-                                        << "passes; they are cleared after the next connect";
+                                        << "passes (someone keeps publishing them?); the next connect tries again";
     });
     connect(&m_client, &MqttClient::connected, this, &StationPublisher::onConnected);
     connect(&m_client, &MqttClient::disconnected, this, [this](const QString &reason) {
@@ -223,7 +223,9 @@ void StationPublisher::stop()
     }
     // Disconnected once the broker has the "stopped": closing a socket with its
     // acknowledgement still unread makes the kernel reset the connection, and the broker
-    // loses the DISCONNECT with it and sends the will after all.
+    // loses the DISCONNECT with it and sends the will after all. Our own heartbeats would
+    // come back meanwhile: no longer asked for.
+    m_client.unsubscribe(m_scheme.heartbeat(m_station));
     int messageId = -1;
     if (!m_client.publish(m_scheme.status(m_station), TopicScheme::statusOffline(QStringLiteral("stopped")), true, 1,
                           &messageId)) {
@@ -388,6 +390,9 @@ StationPublisher::Line *StationPublisher::lineOf(const Bus *bus)
 
 void StationPublisher::publish(const QString &topic, const QByteArray &payload, bool retain)
 {
+    // After "stopped", nothing: a value published behind it would be the last word.
+    if (m_stopping)
+        return;
     if (m_client.publish(topic, payload, retain))
         ++m_messages;
 }
