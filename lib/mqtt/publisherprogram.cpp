@@ -216,13 +216,13 @@ std::optional<int> PublisherProgram::run(const QStringList &arguments)
         m_err << error << Qt::endl;
         return 2;
     }
+    const QList<StationDevice> devices = config->devices();
     for (auto it = m_poll.cbegin(); it != m_poll.cend(); ++it) {
-        const QList<StationDevice> devices = config->devices();
         if (std::none_of(devices.cbegin(), devices.cend(),
                          [&](const StationDevice &d) { return d.device.family == it.key(); }))
             m_err << tr("--poll %1: no device of the station is a %1").arg(it.key()) << Qt::endl;
     }
-    if (config->devices().isEmpty()) {
+    if (devices.isEmpty()) {
         m_err << tr("name at least one device: --device FAMILY@ADDRESS (LINE/FAMILY@ADDRESS with several lines)")
               << Qt::endl;
         return 2;

@@ -36,7 +36,6 @@ public:
     // of the retained messages (a little more than the station's heartbeat interval).
     void start(int passMs);
     void stop();
-    bool isRunning() const { return m_running; }
 
 signals:
     // cleared: empty retained messages sent; left: topics the last pass still found.
