@@ -4,7 +4,9 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QFileInfo>
 #include <QMap>
+#include <QSet>
 #include <QStandardPaths>
 
 #include <algorithm>
@@ -27,7 +29,15 @@ FamilyRegistry FamilyRegistry::load(const QStringList &folders, bool withBuiltin
     // User files: two of one family leave it open which the user meant, so neither is
     // taken (the built-in family, if any, stays).
     QMap<QString, QList<std::shared_ptr<const RegisterMap>>> userMaps;
+    QSet<QString> seen;
     for (const QString &folder : folders) {
+        // A folder named twice (JUMO_MAP_PATH=a:a, a/, a link to it) is read once: its
+        // files are not two definitions of their families.
+        const QFileInfo info(folder);
+        const QString canonical = info.canonicalFilePath().isEmpty() ? info.absoluteFilePath() : info.canonicalFilePath();
+        if (seen.contains(canonical))
+            continue;
+        seen.insert(canonical);
         const QDir dir(folder);
         for (const QString &name : dir.entryList({QStringLiteral("*.json")}, QDir::Files | QDir::System, QDir::Name)) {
             MapLoadResult result = MapLoader::loadFile(dir.filePath(name));

@@ -3,6 +3,7 @@
 #include "protocol/jsonfieldreader.h"
 #include "protocol/overlapcheck.h"
 #include "protocol/regularfile.h"
+#include "protocol/valuecodec.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -20,6 +21,23 @@ Q_LOGGING_CATEGORY(lcMap, "jumo.map", QtWarningMsg)
 namespace jumo {
 
 namespace {
+
+// The values a type can hold: what min, max and a default must lie within.
+std::pair<double, double> typeRange(ValueType type)
+{
+    switch (type) {
+    case ValueType::Int16: return {-32768, 32767};
+    case ValueType::UInt16: return {0, 65535};
+    case ValueType::Int32: return {-2147483648.0, 2147483647.0};
+    case ValueType::UInt32: return {0, 4294967295.0};
+    case ValueType::Enum:
+    case ValueType::Bitfield: return {0, 65535};
+    case ValueType::Bool: return {0, 1};
+    case ValueType::Float:
+    case ValueType::Text: break;
+    }
+    return {-double(std::numeric_limits<float>::max()), double(std::numeric_limits<float>::max())};
+}
 
 // Walks one JSON document and collects every problem instead of stopping at the first,
 // so a user fixing a file sees all that is wrong in one go.
@@ -80,7 +98,9 @@ private:
         if (!map.family.isEmpty() && !isId(map.family))
             fail(QString(), tr("family id '%1' must be lower case letters, digits and '_'").arg(map.family));
         map.name = requireString(root, "name", QString());
+        checkShownText(map.name, QStringLiteral("name"), QString());
         map.shortName = optionalString(root, "shortName", QString());
+        checkShownText(map.shortName, QStringLiteral("shortName"), QString());
         if (root.contains("shortName") && (map.shortName.trimmed().isEmpty() || map.shortName.size() > 24))
             fail(QString(), tr("'shortName' must be 1 to 24 characters, not '%1'").arg(map.shortName.left(40)));
         if (map.shortName.isEmpty())
@@ -199,6 +219,7 @@ private:
             FaceplateState state;
             state.when = requireString(s, "when", stateWhere);
             state.text = requireString(s, "text", stateWhere);
+            checkShownText(state.text, QStringLiteral("text"), stateWhere);
             state.progress = optionalBool(s, "progress", true, stateWhere);
             if (!state.when.isEmpty())
                 checkStateReference(map, state.when, stateWhere);
@@ -271,6 +292,7 @@ private:
                 FaceplateValue fv;
                 fv.entry = requireString(vo, "entry", valueWhere);
                 fv.label = optionalString(vo, "label", valueWhere);
+                checkShownText(fv.label, QStringLiteral("label"), valueWhere);
                 const QString scale = optionalString(vo, "scale", valueWhere);
                 if (scale == QLatin1String("range")) {
                     fv.scale = FaceplateValue::Scale::Range;
@@ -501,6 +523,20 @@ private:
         }
     }
 
+    // A text shown in lists, tables and on terminals: a control character in it (a line
+    // end, an escape sequence) would break the row or drive the screen.
+    void checkShownText(const QString &text, const QString &key, const QString &where)
+    {
+        for (const QChar c : text) {
+            if (c.category() == QChar::Other_Control) {
+                fail(where, tr("'%1' contains a control character (U+%2)")
+                                    .arg(key)
+                                    .arg(int(c.unicode()), 4, 16, QLatin1Char('0')));
+                return;
+            }
+        }
+    }
+
     std::optional<RegisterEntry> parseEntry(const QJsonValue &value, int index)
     {
         if (!value.isObject()) {
@@ -525,6 +561,8 @@ private:
             fail(where, tr("id must be lower case letters, digits and '_'"));
         e.label = requireString(o, "label", where);
         e.group = requireString(o, "group", where);
+        checkShownText(e.label, QStringLiteral("label"), where);
+        checkShownText(e.group, QStringLiteral("group"), where);
 
         const QString typeName = optionalString(o, "type", where);
         if (const std::optional<ValueType> t = valueTypeFromName(typeName))
@@ -565,6 +603,7 @@ private:
         }
 
         e.unit = optionalString(o, "unit", where);
+        checkShownText(e.unit, QStringLiteral("unit"), where);
         e.configuredUnit = optionalString(o, "configuredUnit", where);
         if (!e.configuredUnit.isEmpty() && !e.unit.isEmpty())
             fail(where, tr("give 'unit' or 'configuredUnit', not both"));
@@ -577,6 +616,19 @@ private:
         e.maximum = optionalNumber(o, "max", where);
         if (e.minimum && e.maximum && *e.minimum > *e.maximum)
             fail(where, tr("'min' is greater than 'max'"));
+        // A bound the type cannot hold checks nothing, or refuses every value.
+        for (const auto &[key, bound] : {std::pair{"min", e.minimum}, std::pair{"max", e.maximum}}) {
+            const auto [low, high] = typeRange(e.type);
+            if (bound && e.type == ValueType::Text)
+                fail(where, tr("'%1' is only for numbers").arg(QLatin1String(key)));
+            else if (bound && (*bound < low || *bound > high))
+                fail(where, tr("'%1' %2 is outside what a %3 holds (%4..%5)")
+                                    .arg(QLatin1String(key))
+                                    .arg(*bound)
+                                    .arg(valueTypeName(e.type))
+                                    .arg(low)
+                                    .arg(high));
+        }
         e.control = optionalString(o, "control", where);
         static const QStringList controls{"setpoint", "analog_output", "digital_output", "external_input", "alpha",
                                           "setpoint_select", "parameter_set_select", "binary_outputs", "switches", "command",
@@ -597,6 +649,10 @@ private:
         e.action = optionalBool(o, "action", false, where);
         if (e.action && !e.isWritable())
             fail(where, tr("an action needs a writable entry"));
+        // A command word goes out whole, once: a number of 16 bits, never a measured value.
+        if (e.action && (e.type == ValueType::Float || e.type == ValueType::Text))
+            fail(where, tr("'action' is for command words (bit fields, enums, integers), not for a %1")
+                                .arg(valueTypeName(e.type)));
 
         parseEnumValues(o, e, where);
         parseBits(o, e, where);
@@ -627,6 +683,23 @@ private:
                 fail(where, tr("enum value '%1' must be a number 0..65535 with a text").arg(it.key()));
             else
                 e.enumValues.insert(*key, it.value().toString());
+        }
+        // A label is what a user types to write its value: typed, it must give that value,
+        // not another's number ("0": "1") nor another label in other case ("On", "on").
+        RegisterEntry asTyped;
+        asTyped.id = e.id;
+        asTyped.type = ValueType::Enum;
+        asTyped.access = Access::ReadWrite;
+        asTyped.enumValues = e.enumValues;
+        for (auto it = e.enumValues.cbegin(); it != e.enumValues.cend(); ++it) {
+            checkShownText(it.value(), QStringLiteral("values"), where);
+            const EncodeResult typed = ValueCodec::encode(asTyped, RegisterMap(), it.value());
+            if (typed.ok() && typed.words.value(0) != it.key())
+                fail(where, tr("'values': the label '%1' of %2 would be written as %3 (a label must not be another "
+                               "value's number, nor another label in other case)")
+                                    .arg(it.value())
+                                    .arg(it.key())
+                                    .arg(typed.words.value(0)));
         }
     }
 
@@ -672,15 +745,7 @@ private:
                 e.defaultValue = d;
             return;
         }
-        double low = -std::numeric_limits<float>::max();
-        double high = std::numeric_limits<float>::max();
-        switch (e.type) {
-        case ValueType::Int16: low = -32768; high = 32767; break;
-        case ValueType::UInt16: low = 0; high = 65535; break;
-        case ValueType::Int32: low = -2147483648.0; high = 2147483647.0; break;
-        case ValueType::UInt32: low = 0; high = 4294967295.0; break;
-        default: break;
-        }
+        auto [low, high] = typeRange(e.type);
         if (e.type != ValueType::Float && d != std::floor(d)) {
             fail(where, tr("'default' of a %1 must be a whole number, not %2").arg(valueTypeName(e.type), shown()));
             return;
@@ -746,6 +811,7 @@ private:
             ids.insert(def.id);
             if (def.label.isEmpty())
                 fail(bitWhere, tr("a bit needs a label"));
+            checkShownText(def.label, QStringLiteral("label"), bitWhere);
             const QString kindText = optionalString(b, "kind", bitWhere);
             if (const std::optional<BitKind> k = bitKindFromName(kindText))
                 def.kind = *k;
@@ -787,7 +853,16 @@ private:
                     fail(where, tr("'stateFrom' is only for write-only words (a readable word reports its own bits)"));
                     continue;
                 }
-                if (b.width != 1 || !b.stateFrom.contains(QLatin1Char('.')) || !checkReference(map, b.stateFrom, where))
+                // Without a bit it names a whole word, whose state a single bit cannot take.
+                if (b.width != 1) {
+                    fail(where, tr("'stateFrom' is only for single bits, not for a field of %1").arg(b.width));
+                    continue;
+                }
+                if (!b.stateFrom.contains(QLatin1Char('.'))) {
+                    fail(where, tr("'stateFrom' must name a single bit as ENTRY.BIT, not '%1'").arg(b.stateFrom));
+                    continue;
+                }
+                if (!checkReference(map, b.stateFrom, where))
                     continue;
                 const RegisterEntry *source = map.entry(b.stateFrom.section(QLatin1Char('.'), 0, 0));
                 const BitDefinition *sourceBit = source->bitById(b.stateFrom.section(QLatin1Char('.'), 1));

@@ -102,6 +102,7 @@ private slots:
     void twoUserFilesOfOneFamilyAreRefused();
     void overlapsAreReportedOncePerGroup();
     void onlyRegularFilesAreRead();
+    void aFolderNamedTwiceIsReadOnce();
 };
 
 void tst_MapLoader::acceptsValidMap()
@@ -143,6 +144,50 @@ void tst_MapLoader::refusesBadMap_data()
                                    QJsonObject{{"bit", 3}, {"id", "y"}, {"label", "Y"}, {"kind", "alarm"}}};
         });
     }) << "entry 'alarms' (0x0003), bit 3" << "bit defined twice";
+    // A user map whose labels or bounds would make a write send another value.
+    QTest::newRow("enum label that is another value's number") << Mutation([](QJsonObject &m) {
+        editEntry(m, 1, [](QJsonObject &e) { e["values"] = QJsonObject{{"0", "1"}, {"1", "0"}}; });
+    }) << "entry 'mode' (0x0002)" << "'values': the label '1' of 0 would be written as 1";
+    QTest::newRow("enum labels differing in case only") << Mutation([](QJsonObject &m) {
+        editEntry(m, 1, [](QJsonObject &e) { e["values"] = QJsonObject{{"0", "On"}, {"1", "on"}}; });
+    }) << "entry 'mode' (0x0002)" << "'values': the label 'On' of 0 would be written as 1";
+    QTest::newRow("stateFrom without a bit") << Mutation([](QJsonObject &m) {
+        appendEntry(m, QJsonObject{{"address", "0x0010"}, {"id", "switches"}, {"label", "Switches"}, {"type", "bitfield"},
+                                   {"access", "W"}, {"group", "1 Test"},
+                                   {"bits", QJsonArray{QJsonObject{{"bit", 0}, {"id", "low"}, {"label", "Low"},
+                                                                   {"kind", "command"}, {"stateFrom", "alarms"}}}}});
+    }) << "entry 'switches', bit 0" << "'stateFrom' must name a single bit as ENTRY.BIT, not 'alarms'";
+    QTest::newRow("action on a float") << Mutation([](QJsonObject &m) {
+        editEntry(m, 0, [](QJsonObject &e) {
+            e["access"] = "RW";
+            e["action"] = true;
+        });
+    }) << "entry 'value_a' (0x0000)" << "'action' is for command words (bit fields, enums, integers), not for a float";
+    QTest::newRow("min below what the type holds") << Mutation([](QJsonObject &m) {
+        appendEntry(m, QJsonObject{{"address", "0x0010"}, {"id", "count"}, {"label", "Count"}, {"type", "uint16"},
+                                   {"access", "RW"}, {"group", "1 Test"}, {"min", -5}});
+    }) << "entry 'count' (0x0010)" << "'min' -5 is outside what a uint16 holds (0..65535)";
+    QTest::newRow("max above what the type holds") << Mutation([](QJsonObject &m) {
+        appendEntry(m, QJsonObject{{"address", "0x0010"}, {"id", "offset"}, {"label", "Offset"}, {"type", "int16"},
+                                   {"access", "RW"}, {"group", "1 Test"}, {"max", 40000}});
+    }) << "entry 'offset' (0x0010)" << "'max' 40000 is outside what a int16 holds (-32768..32767)";
+    QTest::newRow("max beyond a float") << Mutation([](QJsonObject &m) {
+        editEntry(m, 0, [](QJsonObject &e) { e["max"] = 1e39; });
+    }) << "entry 'value_a' (0x0000)" << "'max' 1e+39 is outside what a float holds";
+    QTest::newRow("escape sequence in a label") << Mutation([](QJsonObject &m) {
+        editEntry(m, 0, [](QJsonObject &e) { e["label"] = QString("Value \x1b[2J"); });
+    }) << "entry 'value_a' (0x0000)" << "'label' contains a control character (U+001b)";
+    QTest::newRow("line end in a unit") << Mutation([](QJsonObject &m) {
+        editEntry(m, 0, [](QJsonObject &e) { e["unit"] = QString("V\nA"); });
+    }) << "entry 'value_a' (0x0000)" << "'unit' contains a control character (U+000a)";
+    QTest::newRow("control character in an enum label") << Mutation([](QJsonObject &m) {
+        editEntry(m, 1, [](QJsonObject &e) { e["values"] = QJsonObject{{"0", "Off"}, {"1", QString("O\rn")}}; });
+    }) << "entry 'mode' (0x0002)" << "'values' contains a control character (U+000d)";
+    QTest::newRow("control character in a bit's label") << Mutation([](QJsonObject &m) {
+        editEntry(m, 2, [](QJsonObject &e) {
+            e["bits"] = QJsonArray{QJsonObject{{"bit", 0}, {"id", "low"}, {"label", QString("Lo\tw")}, {"kind", "alarm"}}};
+        });
+    }) << "entry 'alarms' (0x0003), bit 0" << "'label' contains a control character (U+0009)";
     QTest::newRow("overlapping words") << Mutation([](QJsonObject &m) {
         appendEntry(m, QJsonObject{{"address", "0x0001"}, {"id", "stray"}, {"label", "Stray"}, {"type", "uint16"},
                                    {"access", "R"}, {"group", "1 Test"}});
@@ -704,6 +749,26 @@ void tst_MapLoader::onlyRegularFilesAreRead()
     QVERIFY2(errors.contains(dir.filePath("zero.json") + ": not a regular file"), qPrintable(errors));
     QVERIFY2(errors.contains(dir.filePath("fifo.json") + ": not a regular file"), qPrintable(errors));
     QVERIFY2(errors.contains(dir.filePath("big.json") + ": too big"), qPrintable(errors));
+}
+
+void tst_MapLoader::aFolderNamedTwiceIsReadOnce()
+{
+    // JUMO_MAP_PATH=a:a (or a:a/, or the data folder named as well): its files are not
+    // two definitions of their families.
+    QTemporaryDir dir;
+    QFile f(dir.filePath("testdev.json"));
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(QJsonDocument(validMap()).toJson());
+    f.close();
+    FamilyRegistry registry = FamilyRegistry::load({dir.path(), dir.path() + "/", dir.path() + "/."}, true);
+    QVERIFY2(registry.errors().isEmpty(), qPrintable(registry.errors().join('\n')));
+    QVERIFY(registry.family("testdev"));
+    const QByteArray before = qgetenv("JUMO_MAP_PATH");
+    qputenv("JUMO_MAP_PATH", QFile::encodeName(dir.path() + ":" + dir.path()));
+    registry = FamilyRegistry::loadDefault();
+    qputenv("JUMO_MAP_PATH", before);
+    QVERIFY2(registry.errors().isEmpty(), qPrintable(registry.errors().join('\n')));
+    QVERIFY(registry.family("testdev"));
 }
 
 QTEST_GUILESS_MAIN(tst_MapLoader)
