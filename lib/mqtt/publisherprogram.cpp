@@ -4,6 +4,7 @@
 #include "bus/pollselection.h"
 #include "jumoversion.h"
 #include "protocol/familyregistry.h"
+#include "protocol/printable.h"
 
 #include <QCommandLineParser>
 #include <QFileInfo>
@@ -118,7 +119,10 @@ std::optional<int> PublisherProgram::run(const QStringList &arguments)
 
     const QString prefix = parser.value(QStringLiteral("prefix"));
     if (!TopicScheme::isValidPrefix(prefix)) {
-        m_err << tr("'%1' cannot be a topic prefix").arg(prefix) << Qt::endl;
+        m_err << tr("'%1' cannot be a topic prefix: one or more levels joined by '/', without '+', '#' or control "
+                    "characters, not starting with '$'")
+                         .arg(printable(prefix))
+              << Qt::endl;
         return 2;
     }
     bool ok = false;

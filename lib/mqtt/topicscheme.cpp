@@ -48,6 +48,11 @@ bool TopicScheme::isTopicLevel(const QString &name)
 
 bool TopicScheme::isValidPrefix(const QString &prefix)
 {
+    // Topics starting with '$' are the broker's own ($SYS): a station does not publish
+    // there. A control character (a line end) would hide in logs and ACL files.
+    if (prefix.startsWith(QLatin1Char('$'))
+        || std::any_of(prefix.begin(), prefix.end(), [](QChar c) { return c.category() == QChar::Other_Control; }))
+        return false;
     const QStringList levels = prefix.split(QLatin1Char('/'));
     return std::all_of(levels.begin(), levels.end(), [](const QString &level) { return isTopicLevel(level); });
 }

@@ -79,7 +79,8 @@ public:
 
     // A name that is one topic level: not empty, no '/', '+', '#' and no NUL.
     static bool isTopicLevel(const QString &name);
-    // A prefix of one or more levels ("jumo", "plant/jumo").
+    // A prefix of one or more levels ("jumo", "plant/jumo"), without control characters
+    // and not in the broker's own '$' topics.
     static bool isValidPrefix(const QString &prefix);
 
     QString status(const QString &station) const;

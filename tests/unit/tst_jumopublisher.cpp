@@ -39,6 +39,12 @@ void TstJumoPublisher::refused_data()
                                                << "cannot be a station name";
     QTest::newRow("wildcard prefix") << QStringList{"--broker", "mqtt://host", "--prefix", "jumo/#"} + line
                                      << "cannot be a topic prefix";
+    QTest::newRow("prefix with a line end") << QStringList{"--broker", "mqtt://host", "--prefix", "jumo\nplant"} + line
+                                            << "'jumo\\x0aplant' cannot be a topic prefix";
+    QTest::newRow("prefix in the broker's own topics") << QStringList{"--broker", "mqtt://host", "--prefix", "$SYS"} + line
+                                                       << "'$SYS' cannot be a topic prefix";
+    QTest::newRow("prefix starting with $") << QStringList{"--broker", "mqtt://host", "--prefix", "$jumo/a"} + line
+                                            << "not starting with '$'";
     QTest::newRow("no lines") << QStringList{"--broker", "mqtt://host", "--device", "ipc300@1"}
                               << "give the lines by one of --station";
     QTest::newRow("port and line") << QStringList{"--broker", "mqtt://host", "--line", "/dev/null"} + line
