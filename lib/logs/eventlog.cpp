@@ -106,11 +106,22 @@ EventLog::~EventLog()
     closeFile();
 }
 
-QString EventLog::defaultFolder()
+QString EventLog::defaultFolder(QString *error)
 {
     QString folder = qEnvironmentVariable("JUMO_LOG_DIR");
-    if (folder.isEmpty())
+    if (folder.isEmpty()) {
+        // Without a home (HOME unset, as a service may run) Qt names /.local/share: logs
+        // of everyone's writes in the root folder, or none at all. No folder is the
+        // honest answer, and the caller says so.
+        if (!QDir::isAbsolutePath(qEnvironmentVariable("XDG_DATA_HOME"))
+            && !QDir::isAbsolutePath(qEnvironmentVariable("HOME"))) {
+            if (error)
+                *error = tr("no folder for the logs: neither JUMO_LOG_DIR, XDG_DATA_HOME nor HOME is set to an "
+                            "absolute folder");
+            return {};
+        }
         folder = QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation) + QStringLiteral("/jumo");
+    }
     QDir().mkpath(folder);
     return folder;
 }

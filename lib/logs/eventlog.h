@@ -31,8 +31,9 @@ public:
     ~EventLog() override;
 
     // The folder where the HMI and jumoctl keep their logs ($JUMO_LOG_DIR, else the
-    // application data folder + /jumo), created when missing.
-    static QString defaultFolder();
+    // application data folder + /jumo), created when missing. Empty (and why in error)
+    // when there is none: no JUMO_LOG_DIR, and neither XDG_DATA_HOME nor HOME is set.
+    static QString defaultFolder(QString *error = nullptr);
     // The files of the log at path that exist, oldest first: the rotated ones
     // (path's name + "-" + UTC time of the rotation), then path itself.
     static QStringList files(const QString &path);

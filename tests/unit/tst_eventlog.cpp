@@ -9,6 +9,7 @@
 #include "smalldisk.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -53,6 +54,8 @@ private slots:
     void readerGoesBackAcrossFiles();
     void linesBackwardAreLinesForward_data();
     void linesBackwardAreLinesForward();
+    void defaultFolderNeedsAHome_data();
+    void defaultFolderNeedsAHome();
 };
 
 void tst_EventLog::recordsSurviveARestart()
@@ -398,6 +401,57 @@ void tst_EventLog::linesBackwardAreLinesForward()
             });
         }
         QCOMPARE(backward, starts);
+    }
+}
+
+void tst_EventLog::defaultFolderNeedsAHome_data()
+{
+    QTest::addColumn<QString>("logDir");    // JUMO_LOG_DIR; empty: unset
+    QTest::addColumn<QString>("dataHome");  // XDG_DATA_HOME
+    QTest::addColumn<QString>("home");      // HOME
+    QTest::addColumn<QString>("folder");    // the logs' folder below the test's; "-": none
+    QTest::newRow("JUMO_LOG_DIR") << "logs" << "" << "" << "logs";
+    QTest::newRow("XDG_DATA_HOME") << "" << "data" << "" << "data/jumo";
+    QTest::newRow("HOME") << "" << "" << "home" << "home/.local/share/jumo";
+    QTest::newRow("nothing set") << "" << "" << "" << "-";
+    QTest::newRow("a relative HOME") << "" << "" << "RELATIVE" << "-";
+}
+
+void tst_EventLog::defaultFolderNeedsAHome()
+{
+    // Without any of them Qt names /.local/share: logs of everyone's writes in the root
+    // folder. No folder is the answer then, with the reason.
+    QFETCH(QString, logDir);
+    QFETCH(QString, dataHome);
+    QFETCH(QString, home);
+    QFETCH(QString, folder);
+    QTemporaryDir dir;
+    const QHash<const char *, QString> values{{"JUMO_LOG_DIR", logDir}, {"XDG_DATA_HOME", dataHome}, {"HOME", home}};
+    QHash<const char *, QByteArray> before;
+    for (auto it = values.cbegin(); it != values.cend(); ++it) {
+        before.insert(it.key(), qgetenv(it.key()));
+        if (it.value() == "RELATIVE")
+            qputenv(it.key(), "relative/home");
+        else if (it.value().isEmpty())
+            qunsetenv(it.key());
+        else
+            qputenv(it.key(), QFile::encodeName(dir.filePath(it.value())));
+    }
+    QString error;
+    const QString found = EventLog::defaultFolder(&error);
+    for (auto it = before.cbegin(); it != before.cend(); ++it) {
+        if (it.value().isNull())
+            qunsetenv(it.key());
+        else
+            qputenv(it.key(), it.value());
+    }
+    if (folder == "-") {
+        QVERIFY2(found.isEmpty(), qPrintable(found));
+        QCOMPARE(error, QString("no folder for the logs: neither JUMO_LOG_DIR, XDG_DATA_HOME nor HOME is set to an "
+                                "absolute folder"));
+    } else {
+        QCOMPARE(found, dir.filePath(folder));
+        QVERIFY(QFileInfo(found).isDir());
     }
 }
 
