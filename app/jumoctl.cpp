@@ -27,7 +27,8 @@ int main(int argc, char *argv[])
     QTextStream out(stdout);
     QTextStream err(stderr);
     jumo::CommandLineTool tool(out, err);
-    // Ctrl-C and SIGTERM end a command with 130 or 143 and what it got done.
+    // Ctrl-C, SIGTERM, SIGHUP and a closed output (SIGPIPE) end a command with 130, 143,
+    // 129 or 141 and what it got done.
     jumo::onTerminationSignals([&tool](int signal) { tool.interrupt(signal); });
     if (const std::optional<int> code = tool.run(app.arguments().mid(1)))
         return *code;

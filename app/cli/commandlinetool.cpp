@@ -5,6 +5,7 @@
 #include "linecommands.h"
 #include "mapcommands.h"
 #include "modbuslogging.h"
+#include "outputcheck.h"
 #include "portcommands.h"
 #include "stationcommands.h"
 
@@ -58,6 +59,10 @@ QString CommandLineTool::usage() const
               "                           write what differs, each verified by read-back\n"
               "  report DEVICE FILE       commissioning report as PDF (.pdf) or HTML\n"
               "\n"
+              "Exit codes: 0 done, 1 failed, 2 wrong arguments or files, 3 a write's outcome is\n"
+              "unknown, 4 another family at the address; 129, 130, 141 and 143 after SIGHUP,\n"
+              "SIGINT, a closed output (SIGPIPE) and SIGTERM, each with a summary on stderr.\n"
+              "\n"
               "'jumoctl COMMAND --help' describes a command.\n");
 }
 
@@ -79,13 +84,15 @@ int CommandLineTool::checkOutput(int code)
 {
     // Output that went nowhere (stdout on a full disk) is no success: a script reading
     // the file would take a part for the whole.
-    m_out.flush();
-    const auto *file = qobject_cast<const QFileDevice *>(m_out.device());
-    if (m_out.status() != QTextStream::WriteFailed && (!file || file->error() == QFileDevice::NoError))
+    if (!OutputCheck::failed(m_out))
         return code;
+    const auto *file = qobject_cast<const QFileDevice *>(m_out.device());
     m_err << tr("jumoctl: the output could not be written: %1")
                      .arg(file && file->error() != QFileDevice::NoError ? file->errorString() : tr("write failed"))
           << Qt::endl;
+    // A reader that went away (| head) ends every command alike, as SIGPIPE would.
+    if (OutputCheck::closed(m_out) && code < exitcode::HungUp)
+        return exitcode::OutputClosed;
     return code == exitcode::Ok ? exitcode::Failed : code;
 }
 

@@ -26,7 +26,8 @@ public:
     // Runs a command. Returns its exit code, or nullopt when the command works on the
     // event loop and will emit finished() later.
     std::optional<int> run(const QStringList &arguments);
-    // SIGINT or SIGTERM while a command runs: it ends with 130 or 143 and a summary.
+    // A signal while a command runs (SIGINT, SIGTERM, SIGHUP, SIGPIPE): it ends with 128 +
+    // the signal's number and a summary.
     void interrupt(int signal);
 
 signals:

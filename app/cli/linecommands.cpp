@@ -22,6 +22,7 @@
 #include "jumoversion.h"
 #include "logs/writeaudit.h"
 #include "modbuslogging.h"
+#include "outputcheck.h"
 #include "systemsettings.h"
 
 #include <QDateTime>
@@ -58,6 +59,15 @@ bool isFailure(const EntryState *state)
     return !state || !state->isCurrent();
 }
 
+// The status read and dump report, in the words README lists for them: a device that
+// stopped answering during the read (offline after two lost blocks) timed out.
+QString readStatus(const EntryState *state)
+{
+    if (!state || (state->validity == Validity::Unknown && state->error == ReadError::DeviceOffline))
+        return QStringLiteral("timeout");
+    return state->statusName();
+}
+
 // The words of the monitor's JSON contract (and of the MQTT topics).
 QString conditionName(DeviceCondition::State state)
 {
@@ -92,8 +102,10 @@ QString absolutePort(const QString &port, const QString &folder)
 LineCommands::LineCommands(const FamilyRegistry &registry, QTextStream &out, QTextStream &err, QObject *parent)
     : QObject(parent), m_registry(registry), m_out(out), m_err(err)
 {
-    // Writes from the command line are audited like the HMI's, in the same log.
-    m_audit = new EventLog(EventLog::defaultFolder() + QStringLiteral("/write-audit.jsonl"), this);
+    // Writes from the command line are audited like the HMI's, in the same log. Without
+    // a folder for it, nothing is written (auditLogMissing()).
+    m_logFolder = EventLog::defaultFolder(&m_logFolderError);
+    m_audit = new EventLog(m_logFolder + QStringLiteral("/write-audit.jsonl"), this);
     // Rotated as the HMI rotates it: the same settings.
     m_audit->setRotation(EventLog::Rotation::fromSettings(QSettings(QStringLiteral("jumo"), QStringLiteral("jumo-hmi"))));
     connect(m_audit, &EventLog::writeFailed, this, [this](const QString &message) {
@@ -271,6 +283,8 @@ std::optional<int> LineCommands::readStation(const CommandParser &parser)
     }
     // As in the HMI: the system configuration can make every tool read-only; --read-only
     // makes every line of this command read-only, a station file one line.
+    for (const QString &warning : SystemSettings::warnings())
+        m_err << tr("warning: %1").arg(warning) << Qt::endl;
     const bool readOnly = parser.isSet(QStringLiteral("read-only")) || SystemSettings::readOnly();
     for (LineConfig &line : m_station.lines)
         line.settings.readOnly = line.settings.readOnly || readOnly;
@@ -403,7 +417,10 @@ void LineCommands::interrupt(int signal)
 {
     if (m_finished || m_interruptCode)
         return;
-    m_interruptCode = signal == SIGTERM ? exitcode::Terminated : exitcode::Interrupted;
+    m_interruptCode = signal == SIGTERM  ? exitcode::Terminated
+            : signal == SIGHUP            ? exitcode::HungUp
+            : signal == SIGPIPE           ? exitcode::OutputClosed
+                                          : exitcode::Interrupted;
     m_interruptSummary = progressSummary();
     // Jobs stop asking; closing the line drops what has not gone out, and a write under
     // way ends as unknown. Their outcomes (and audit records) arrive from the event loop:
@@ -461,6 +478,16 @@ QString LineCommands::progressSummary() const
     return tr("nothing was written");
 }
 
+bool LineCommands::stopIfOutputClosed()
+{
+    // SIGPIPE arrives through the event loop, after the step that raised it: the next
+    // write is not sent for a reader that is gone.
+    if (!OutputCheck::closed(m_out))
+        return false;
+    interrupt(SIGPIPE);
+    return true;
+}
+
 void LineCommands::finish(int code)
 {
     if (m_finished)
@@ -468,12 +495,21 @@ void LineCommands::finish(int code)
     m_finished = true;
     if (m_interruptCode) {
         code = m_interruptCode;
+        const QString summary = code == exitcode::Terminated ? tr("terminated: %1")
+                : code == exitcode::HungUp                    ? tr("hangup: %1")
+                : code == exitcode::OutputClosed              ? tr("output closed: %1")
+                                                              : tr("interrupted: %1");
         m_err << '\n'   // after a prompt or a progress line
-              << (code == exitcode::Terminated ? tr("terminated: %1") : tr("interrupted: %1")).arg(m_interruptSummary)
-              << Qt::endl;
+              << summary.arg(m_interruptSummary) << Qt::endl;
     }
     if (m_auditFailed && code == exitcode::Ok)
         code = exitcode::Failed;
+    // diff as diff(1): 1 says the two differ; any other failure (no answer, a lost line)
+    // is trouble.
+    if (m_command == QLatin1String("diff") && code == exitcode::Failed && !m_differs)
+        code = exitcode::Usage;
+    if (m_monitoring)
+        code = reportUnconfirmed(code);
     m_out.flush();
     m_err.flush();
     for (const std::unique_ptr<Line> &line : m_lines) {
@@ -526,7 +562,10 @@ std::optional<int> LineCommands::scan(const QStringList &arguments)
                               << Qt::endl;
                         return;
                     }
-                    const Target target{map, quint8(address), 0, 0, i};
+                    Target target;
+                    target.map = map;
+                    target.address = quint8(address);
+                    target.line = i;
                     m_out << targetName(target) << '\t' << map->name << Qt::endl;
                     ++m_lines[size_t(i)]->found;
                 });
@@ -595,7 +634,7 @@ void LineCommands::printValues(const Target &target, const QStringList &ids)
                                      {"register", formatAddress(e->address)},
                                      {"value", s ? jsonValue(*s) : QJsonValue()},
                                      {"unit", e->unit},
-                                     {"status", s ? s->statusName() : QStringLiteral("timeout")}});
+                                     {"status", readStatus(s)}});
         }
         m_out << QJsonDocument(array).toJson(QJsonDocument::Indented);
         return;
@@ -615,8 +654,7 @@ void LineCommands::printValues(const Target &target, const QStringList &ids)
             if (s->value.isOk() && !e->unit.isEmpty())
                 shown += QLatin1Char(' ') + e->unit;
         }
-        m_out << formatAddress(e->address) << "  " << id << " = " << shown << "  [" << (s ? s->statusName() : QStringLiteral("timeout"))
-              << ']' << Qt::endl;
+        m_out << formatAddress(e->address) << "  " << id << " = " << shown << "  [" << readStatus(s) << ']' << Qt::endl;
     }
 }
 
@@ -763,6 +801,8 @@ std::optional<int> LineCommands::write(const QStringList &arguments)
         m_err << error << Qt::endl;
         return 2;
     }
+    if (auditLogMissing())
+        return exitcode::Failed;
     m_assignments = *assignments;
     m_targets = {target};
     Line &line = prepareLine(target.line);
@@ -803,6 +843,7 @@ void LineCommands::startWrites(Target target, bool broadcast, const QList<quint8
     connect(&bus(), &Bus::writeFinished, this, [this](int ticket, const WriteOutcome &outcome) {
         if (ticket != m_writeTicket)
             return;
+        m_writeTicket = -1;
         reportWrite(m_assignments.takeFirst().entryId, outcome);
         writeNext();
     });
@@ -844,7 +885,7 @@ void LineCommands::reportWrite(const QString &id, const WriteOutcome &outcome)
 
 void LineCommands::writeNext()
 {
-    if (m_interruptCode)
+    if (m_interruptCode || stopIfOutputClosed())
         return;
     if (m_assignments.isEmpty()) {
         // An unknown outcome outweighs a failure: the device has to be looked at.
@@ -858,6 +899,14 @@ void LineCommands::writeNext()
     else
         m_writeTicket = target.address == 0 ? bus().writeBroadcast(target.map->family, next.entryId, next.value)
                                             : bus().write(target.id, next.entryId, next.value);
+}
+
+bool LineCommands::auditLogMissing()
+{
+    if (!m_logFolder.isEmpty())
+        return false;
+    m_err << tr("%1; writes are kept in the audit log, so nothing is written").arg(m_logFolderError) << Qt::endl;
+    return true;
 }
 
 QString LineCommands::readOnlyNote(const CommandParser &parser, const Target &target) const
@@ -877,7 +926,15 @@ std::optional<int> LineCommands::monitor(const QStringList &arguments)
 {
     CommandParser parser(QStringLiteral("monitor"),
                          tr("Polls devices continuously and prints every poll cycle; devices of several lines are "
-                            "polled at once, each line on its own."));
+                            "polled at once, each line on its own.\n"
+                            "\n"
+                            "A device that does not answer does not stop the others: its records say so\n"
+                            "(condition offline), and its family is checked whenever it answers (again);\n"
+                            "until then it has no values. Devices never confirmed are named at the end.\n"
+                            "\n"
+                            "Exit code: 0 every value read; 1 a value could not be read, a line was lost,\n"
+                            "or a device was never confirmed; 4 another family answered at a device's\n"
+                            "address and it was never confirmed; 129, 130, 141, 143 after a signal."));
     addLineOptions(parser);
     parser.addOption({QStringLiteral("interval"), tr("Poll interval per device in ms (default 0: as fast as the line allows)."),
                       tr("ms"), QStringLiteral("0")});
@@ -939,28 +996,10 @@ std::optional<int> LineCommands::monitor(const QStringList &arguments)
     m_monitorIds = ids;
     if (const auto stop = openLines(parser))
         return stop;
-    passIdentities([this, interval] { startMonitor(m_monitorIds, interval); });
+    // Devices come and go while they are monitored: none is checked once before, each is
+    // checked by its bus whenever it answers (again), as in the HMI.
+    startMonitor(m_monitorIds, interval);
     return std::nullopt;
-}
-
-void LineCommands::passIdentities(const std::function<void()> &next)
-{
-    // Every line checks its own devices, all at once; the command goes on when all passed.
-    auto waiting = std::make_shared<int>(0);
-    QHash<qsizetype, QList<IdentityCheck::Claim>> claimsByLine;
-    for (const Target &t : std::as_const(m_targets))
-        claimsByLine[t.line] << IdentityCheck::Claim{t.address, t.map};
-    *waiting = int(claimsByLine.size());
-    for (auto it = claimsByLine.cbegin(); it != claimsByLine.cend(); ++it) {
-        m_lines.at(size_t(it.key()))
-                ->identity->pass(
-                        it.value(),
-                        [this, waiting, next] {
-                            if (--*waiting == 0 && !m_finished)
-                                next();
-                        },
-                        [this](int code) { finish(code); });
-    }
 }
 
 QStringList LineCommands::monitorEntries(const Target &target) const
@@ -980,6 +1019,10 @@ void LineCommands::startMonitor(const QStringList &ids, int interval)
     m_monitoring = true;
     if (m_csv)
         m_out << "time,device,id,value,unit,status" << Qt::endl;
+    for (const std::unique_ptr<Line> &line : m_lines) {
+        if (line && !line->identity->isSkipped())
+            line->bus->setIdentityCheck(m_registry.families());
+    }
     for (Target &target : m_targets) {
         Bus &bus = busOf(target);
         target.id = bus.addDevice(target.map, target.address);
@@ -991,12 +1034,13 @@ void LineCommands::startMonitor(const QStringList &ids, int interval)
             continue;
         connect(m_lines[i]->bus.get(), &Bus::pollCycleFinished, this, [this](DeviceId id, double cycleMs) {
             auto target = std::find_if(m_targets.begin(), m_targets.end(), [id](const Target &t) { return t.id == id; });
-            if (target == m_targets.end())
+            if (target == m_targets.end() || !noteIdentity(*target))
                 return;
             printRecord(*target, monitorEntries(*target), cycleMs);
             // Polling on into output that goes nowhere would only hide the failure.
-            const auto *output = qobject_cast<const QFileDevice *>(m_out.device());
-            if (m_out.status() == QTextStream::WriteFailed || (output && output->error() != QFileDevice::NoError)) {
+            if (stopIfOutputClosed())
+                return;
+            if (OutputCheck::failed(m_out)) {
                 finish(exitcode::Failed);
                 return;
             }
@@ -1040,6 +1084,55 @@ void LineCommands::printRecord(const Target &target, const QStringList &entryIds
         m_failed |= isFailure(s);
     }
     m_out.flush();
+}
+
+bool LineCommands::noteIdentity(Target &target)
+{
+    const DeviceCondition condition = busOf(target).condition(target.id);
+    switch (condition.state) {
+    case DeviceCondition::State::Online:
+        // The cycle under way when it was confirmed: what it read before is not its own
+        // yet; the next cycle reads it all.
+        for (const QString &id : monitorEntries(target)) {
+            const EntryState *s = busOf(target).entryState(target.id, id);
+            if (s && !s->isCurrent() && s->error == ReadError::Unconfirmed)
+                return false;
+        }
+        target.confirmed = true;
+        target.identityProblem.clear();
+        break;
+    case DeviceCondition::State::Identifying:
+        // Its first check is under way: nothing to tell of it yet.
+        if (condition.detail.isEmpty())
+            return false;
+        target.identityProblem = condition.detail;
+        break;
+    case DeviceCondition::State::WrongDevice:
+        if (target.identityProblem != condition.detail)
+            m_err << lineMessage(target.line, condition.detail) << Qt::endl;
+        target.identityProblem = condition.detail;
+        target.otherFamily = true;
+        break;
+    default:
+        break;
+    }
+    return true;
+}
+
+int LineCommands::reportUnconfirmed(int code)
+{
+    bool otherFamily = false;
+    for (const Target &t : std::as_const(m_targets)) {
+        if (t.confirmed)
+            continue;
+        m_err << lineMessage(t.line, t.identityProblem.isEmpty()
+                                             ? tr("never confirmed: %1 did not answer").arg(deviceName(*t.map, t.address))
+                                             : tr("never confirmed: %1").arg(t.identityProblem))
+              << Qt::endl;
+        otherFamily |= t.otherFamily;
+        code = code == exitcode::Ok ? exitcode::Failed : code;
+    }
+    return otherFamily && code == exitcode::Failed ? exitcode::WrongDevice : code;
 }
 
 void LineCommands::checkMonitorDone()
@@ -1103,7 +1196,12 @@ std::optional<int> LineCommands::parameters(const QString &command, const QStrin
     CommandParser parser(command, backup ? tr("Saves every parameter of a device to a file.")
                                   : restore ? tr("Writes the parameters of a file that differ from the device, each "
                                                  "verified by read-back.")
-                                            : tr("Compares a device with a parameter file, or two files."));
+                                            : tr("Compares a device with a parameter file, or two files.\n"
+                                                 "\n"
+                                                 "Exit code (as diff(1)): 0 nothing differs; 1 something does; 2 a\n"
+                                                 "problem: a file that cannot be read or compared (another family,\n"
+                                                 "unknown ids, invalid values, another software version), a device\n"
+                                                 "that does not answer; 4 another family at the address."));
     addLineOptions(parser);
     if (restore)
         parser.addOption({QStringLiteral("yes"), tr("Write without asking.")});
@@ -1160,20 +1258,26 @@ std::optional<int> LineCommands::parameters(const QString &command, const QStrin
     Target target;
     if (!parseDevice(first, target))
         return 2;
+    // A file that cannot be compared is a problem of diff's (2, as diff(1)), not a
+    // difference; restore refuses it (1). Checked before the line is opened, as diff
+    // FILE FILE checks its files; the software version once the device has told it.
+    const int refusedCode = restore ? exitcode::Failed : exitcode::Usage;
     std::optional<ParameterSet> file;
     if (!backup) {
         file = load(path);
         if (!file)
             return 2;
-        if (file->family != target.map->family) {
-            m_err << tr("refused: %1").arg(file->incompatibility(*target.map, QString())) << Qt::endl;
-            return 1;
+        if (const QString problem = file->incompatibility(*target.map, QString()); !problem.isEmpty()) {
+            m_err << tr("refused: %1").arg(problem) << Qt::endl;
+            return refusedCode;
         }
     }
     if (const QString note = restore ? readOnlyNote(parser, target) : QString(); !note.isEmpty()) {
         m_err << note << Qt::endl << tr("read-only mode: nothing would be restored") << Qt::endl;
         return 1;
     }
+    if (restore && auditLogMissing())
+        return exitcode::Failed;
     m_targets = {target};
     prepareLine(target.line);
     if (const auto stop = openLines(parser))
@@ -1181,7 +1285,8 @@ std::optional<int> LineCommands::parameters(const QString &command, const QStrin
     if (restore)
         identity().recordSkipsIn(m_audit);
     const bool yes = restore && parser.isSet(QStringLiteral("yes"));
-    readParameters([this, backup, restore, path, file, yes, first](const ParameterSet &device, const QStringList &failed) {
+    readParameters([this, backup, restore, path, file, yes, first, refusedCode](const ParameterSet &device,
+                                                                              const QStringList &failed) {
         if (!failed.isEmpty()) {
             m_err << tr("these parameters could not be read, nothing was done: %1").arg(failed.join(QStringLiteral(", ")))
                   << Qt::endl;
@@ -1204,13 +1309,14 @@ std::optional<int> LineCommands::parameters(const QString &command, const QStrin
         const QString refused = file->incompatibility(map, device.softwareVersion);
         if (!refused.isEmpty()) {
             m_err << tr("refused: %1").arg(refused) << Qt::endl;
-            finish(1);
+            finish(refusedCode);
             return;
         }
         const QList<ParameterDifference> shown = device.differences(*file, map);
         printDifferences(shown, first, path);
         if (!restore) {
-            finish(shown.isEmpty() ? 0 : 1);
+            m_differs = !shown.isEmpty();
+            finish(m_differs ? exitcode::Failed : exitcode::Ok);
             return;
         }
         const QList<ParameterDifference> differences = ParameterSet::toRestore(shown);
@@ -1314,7 +1420,7 @@ void LineCommands::startReport(const QString &path, const ReportTitle &title)
         // The command line has no session: its writes of today stand in for one.
         // Read back from the newest to the first record before today, so that a large
         // log costs no more than its recent part.
-        EventLogReader audit(EventLog::defaultFolder() + QStringLiteral("/write-audit.jsonl"));
+        EventLogReader audit(m_audit->path());
         const QString device = deviceName(*t.map, t.address);
         const QDateTime since = QDateTime(QDate::currentDate(), QTime(0, 0));
         QList<QJsonObject> writes;
@@ -1325,8 +1431,10 @@ void LineCommands::startReport(const QString &path, const ReportTitle &title)
             if (r->value("device").toString() == device)
                 writes.prepend(*r);
         }
-        if (!audit.lastError().isEmpty()) {
-            m_err << tr("no report written: its writes of today are unknown: %1").arg(audit.lastError()) << Qt::endl;
+        if (!audit.lastError().isEmpty() || m_logFolder.isEmpty()) {
+            m_err << tr("no report written: its writes of today are unknown: %1")
+                             .arg(m_logFolder.isEmpty() ? m_logFolderError : audit.lastError())
+                  << Qt::endl;
             finish(exitcode::Failed);
             return;
         }
@@ -1357,7 +1465,7 @@ QList<IdentityCheck::Claim> LineCommands::claims() const
 
 void LineCommands::restoreNext()
 {
-    if (m_interruptCode)
+    if (m_interruptCode || stopIfOutputClosed())
         return;
     if (m_pendingWrites.isEmpty()) {
         m_out << tr("%n parameter(s) restored and verified", nullptr, m_restored) << Qt::endl;

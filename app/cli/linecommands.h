@@ -40,8 +40,8 @@ public:
     static QStringList commands();
     // Starts a command; an exit code when it ended at once (help, bad arguments).
     std::optional<int> run(const QString &command, const QStringList &arguments);
-    // SIGINT or SIGTERM: stops what is under way and ends with 130 or 143 and a summary
-    // of what was done.
+    // SIGINT, SIGTERM, SIGHUP or SIGPIPE: stops what is under way and ends with 130, 143,
+    // 129 or 141 and a summary of what was done.
     void interrupt(int signal);
 
 signals:
@@ -55,6 +55,10 @@ private:
         DeviceId id = 0;
         int cycles = 0;
         qsizetype line = 0;   // index into m_station.lines
+        // monitor: the identity as the bus found it
+        bool confirmed = false;    // of its family, at some time of the run
+        bool otherFamily = false;  // another family answered at its address
+        QString identityProblem;   // why it is not confirmed now, empty when it did not answer
     };
 
     // One line of the command at work. Declared after the bus, the gate and the scanner
@@ -108,9 +112,14 @@ private:
     // One monitor record; without a cycle time when the line is lost.
     void printRecord(const Target &target, const QStringList &entryIds, std::optional<double> cycleMs);
     QStringList monitorEntries(const Target &target) const;
+    // Takes the target's identity from its bus's condition; false while its first check
+    // runs, and for the cycle it was confirmed in (no record then: nothing is known of it
+    // yet).
+    bool noteIdentity(Target &target);
+    // The devices never confirmed during a monitor, named on stderr; the exit code with
+    // them (1, or 4 where another family answered).
+    int reportUnconfirmed(int code);
     void checkMonitorDone();
-    // Runs the identity check of every line with targets, then next().
-    void passIdentities(const std::function<void()> &next);
     std::optional<int> report(const QStringList &arguments);
     void startReport(const QString &path, const ReportTitle &title);
     // The targets as claims for the identity check.
@@ -128,7 +137,12 @@ private:
     // Why nothing will be written on the target's line (the system configuration,
     // --read-only or the station file), or empty.
     QString readOnlyNote(const CommandParser &parser, const Target &target) const;
+    // There is no folder for the audit log (no HOME): says so; the command writes nothing.
+    bool auditLogMissing();
     void finish(int code);
+    // The output's reader is gone: ends the command as SIGPIPE does (true), before it
+    // takes a step that nobody would see.
+    bool stopIfOutputClosed();
     QString progressSummary() const;
 
     const FamilyRegistry &m_registry;
@@ -137,6 +151,8 @@ private:
     StationConfig m_station;
     bool m_stationRead = false;
     std::vector<std::unique_ptr<Line>> m_lines;   // by index of m_station.lines; null: not used
+    QString m_logFolder;        // of the audit log; empty: there is none
+    QString m_logFolderError;   // why there is none
     EventLog *m_audit = nullptr;
     std::unique_ptr<BroadcastGate> m_broadcast;   // declared after the lines: it goes before the bus it uses
     QStringList m_monitorIds;
@@ -149,6 +165,7 @@ private:
     int m_writeTicket = -1;
     bool m_failed = false;
     bool m_uncertain = false;   // a write ended unknown or unverified
+    bool m_differs = false;     // diff: the device and the file differ
     bool m_json = false;
     bool m_csv = false;
     bool m_monitoring = false;

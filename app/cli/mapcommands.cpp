@@ -62,6 +62,16 @@ QString bitNotes(const BitDefinition &b)
     return parts.join(QStringLiteral(" | "));
 }
 
+// The manual's default as the map gives it: a number (an enum's value), true or false.
+QString defaultText(const RegisterEntry &e)
+{
+    if (!e.defaultValue)
+        return {};
+    if (e.type == ValueType::Bool)
+        return *e.defaultValue ? QStringLiteral("true") : QStringLiteral("false");
+    return ValueCodec::formatFloat(*e.defaultValue);
+}
+
 QJsonObject entryJson(const RegisterEntry &e)
 {
     QJsonObject o{{"address", formatAddress(e.address)}, {"id", e.id}, {"label", e.label},
@@ -78,6 +88,8 @@ QJsonObject entryJson(const RegisterEntry &e)
         o.insert("min", *e.minimum);
     if (e.maximum)
         o.insert("max", *e.maximum);
+    if (e.defaultValue)
+        o.insert("default", e.type == ValueType::Bool ? QJsonValue(*e.defaultValue != 0) : QJsonValue(*e.defaultValue));
     if (!e.enumValues.isEmpty()) {
         QJsonObject values;
         for (auto it = e.enumValues.cbegin(); it != e.enumValues.cend(); ++it)
@@ -153,7 +165,7 @@ int MapCommands::families(const QStringList &arguments)
 
 QString MapCommands::csvHeader()
 {
-    return QStringLiteral("address,bit,id,label,type,words,access,storage,unit,group,notes,precision");
+    return QStringLiteral("address,bit,id,label,type,words,access,storage,unit,group,notes,precision,default");
 }
 
 QStringList MapCommands::csvRows(const RegisterMap &map)
@@ -164,13 +176,13 @@ QStringList MapCommands::csvRows(const RegisterMap &map)
         rows << QStringList{address, QString(), e.id, csvField(e.label), valueTypeName(e.type),
                             QString::number(e.wordCount()), accessName(e.access), storageName(e.storage),
                             csvField(e.unit), csvField(e.group), csvField(entryNotes(e)),
-                            e.type == ValueType::Float ? e.precision.name() : QString()}
+                            e.type == ValueType::Float ? e.precision.name() : QString(), defaultText(e)}
                         .join(QLatin1Char(','));
         for (const BitDefinition &b : e.bits) {
             rows << QStringList{address, QString::number(b.bit), e.id + QLatin1Char('.') + b.id, csvField(b.label),
                                 b.width > 1 ? QStringLiteral("uint16") : QStringLiteral("bool"), QStringLiteral("1"),
                                 accessName(e.access), storageName(e.storage), QString(), csvField(e.group),
-                                csvField(bitNotes(b)), QString()}
+                                csvField(bitNotes(b)), QString(), QString()}
                             .join(QLatin1Char(','));
         }
     }

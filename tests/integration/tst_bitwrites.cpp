@@ -7,10 +7,12 @@
 #include "clirun.h"
 #include "testpeers.h"
 
+#include <QDir>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace jumo;
@@ -61,6 +63,8 @@ private slots:
     void commandWithEveryAnswerLostGoesOutOnce_data();
     void commandWithEveryAnswerLostGoesOutOnce();
     void systemReadOnlyKeepsWritesOffTheLine();
+    void systemReadOnlyFailsClosed_data();
+    void systemReadOnlyFailsClosed();
 
 private:
     QStringList port(const TestLine &line) const { return {"--port", line.masterEnd(), "--baud", "19200"}; }
@@ -386,6 +390,48 @@ void tst_BitWrites::systemReadOnlyKeepsWritesOffTheLine()
     QCOMPARE(m_sim.writeFrames(), writesBefore);
     QCOMPARE(m_sim.words(1, 0x00D5, 2), setpoint);
     QVERIFY(ipc()->flag("binary_signal_1.external_inhibit_input"));
+    QCOMPARE(lastAudit().value("result").toString(), QString("read_only"));
+}
+
+void tst_BitWrites::systemReadOnlyFailsClosed_data()
+{
+    QTest::addColumn<QByteArray>("conf");      // jumo/jumo-hmi.conf; empty: a folder there
+    QTest::addColumn<QString>("warning");
+    QTest::newRow("lower case key") << QByteArray("[General]\nreadonly=true\n") << "'readonly' is taken as readOnly";
+    QTest::newRow("capitalised key") << QByteArray("[General]\nReadOnly=true\n") << "'ReadOnly' is taken as readOnly";
+    QTest::newRow("the file is a folder") << QByteArray() << "cannot be read (it is a folder)";
+}
+
+void tst_BitWrites::systemReadOnlyFailsClosed()
+{
+    // A slip of the administrator's must not let writes through without a word.
+    QFETCH(QByteArray, conf);
+    QFETCH(QString, warning);
+    QTemporaryDir config;
+    const QString path = config.filePath("jumo/jumo-hmi.conf");
+    if (conf.isEmpty()) {
+        QVERIFY(QDir().mkpath(path));
+    } else {
+        QVERIFY(QDir(config.path()).mkpath("jumo"));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(conf);
+    }
+    const QList<quint16> setpoint = m_sim.words(1, 0x00D5, 2);
+    const int writesBefore = m_sim.writeFrames();
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("XDG_CONFIG_DIRS", config.path());
+    QProcess write;
+    write.setProcessEnvironment(env);
+    write.start(QStringLiteral(JUMOCTL_PATH), QStringList{"write"} + port() + QStringList{"ipc300@1", "input_setpoint=10"});
+    // The simulator lives in this process: keep its event loop running meanwhile.
+    QTRY_VERIFY_WITH_TIMEOUT(write.state() == QProcess::NotRunning, 60000);
+    const QString err = QString::fromUtf8(write.readAllStandardError());
+    QCOMPARE(write.exitCode(), 1);
+    QVERIFY2(err.contains("warning: " + path) && err.contains(warning), qPrintable(err));
+    QVERIFY2(err.contains("read-only mode is set by the system configuration (" + path), qPrintable(err));
+    QCOMPARE(m_sim.writeFrames(), writesBefore);
+    QCOMPARE(m_sim.words(1, 0x00D5, 2), setpoint);
     QCOMPARE(lastAudit().value("result").toString(), QString("read_only"));
 }
 

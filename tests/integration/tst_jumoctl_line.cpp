@@ -32,6 +32,12 @@ private slots:
     void monitorJsonl();
     void monitorCsv();
     void monitorIntoAFullDiskStops();
+    void monitorGoesOnWithoutASilentDevice();
+    void monitorConfirmsADeviceThatAnswersLater();
+    void monitorNamesAWrongDeviceAndGoesOn();
+    void dumpStatusesAreTheDocumentedOnes();
+    void diffOfAFileThatCannotBeComparedIsAProblem_data();
+    void diffOfAFileThatCannotBeComparedIsAProblem();
     void absentDeviceIsATimeout();
     void badPortIsAClearError();
     void backupChangeDiffRestore();
@@ -46,6 +52,7 @@ private slots:
     void auditFailureIsAFailure();
     void signalEndsWithASummary_data();
     void signalEndsWithASummary();
+    void closedOutputEndsARestoreWithItsRecords();
     void largestFloatRoundTrips();
     void deviceTextsCannotDriveTheTerminal();
     void alwaysAnsweringAddressIsNoDevice();
@@ -56,6 +63,9 @@ private:
     TestLine m_line;
     SimulatorPeer m_sim;
     QList<QJsonObject> auditRecords() const;
+    // A backup of the dTRON at 4 into file, then three of its parameters changed on the
+    // device, so that a restore writes three.
+    bool backupThreeApart(const QString &file);
     QStringList port() const { return {"--port", m_line.masterEnd(), "--baud", "19200"}; }
 };
 
@@ -79,6 +89,19 @@ QList<QJsonObject> tst_JumoctlLine::auditRecords() const
         }
     }
     return records;
+}
+
+bool tst_JumoctlLine::backupThreeApart(const QString &file)
+{
+    SimulatedDevice *dtron = m_sim.line().device(4);
+    const QList<std::pair<const char *, double>> saved{{"setpoint_w2", 120}, {"setpoint_w3", 60}, {"ps1_pb1", 10}};
+    for (const auto &[id, value] : saved)
+        dtron->setNumber(id, value);
+    if (run(QStringList{"backup"} + port() + QStringList{"dtron300@4", file}).code != 0)
+        return false;
+    for (const auto &[id, value] : saved)
+        dtron->setNumber(id, value + 1);
+    return true;
 }
 
 void tst_JumoctlLine::scanFindsEveryFamily()
@@ -210,6 +233,174 @@ void tst_JumoctlLine::monitorIntoAFullDiskStops()
     QCOMPARE(p.exitCode(), 1);
     const QByteArray err = p.readAllStandardError();
     QVERIFY2(err.contains("jumoctl: the output could not be written: No space left on device"), err.constData());
+}
+
+void tst_JumoctlLine::monitorGoesOnWithoutASilentDevice()
+{
+    // Nothing answers at 7: the others are monitored, the silent one said to be so.
+    const Run r = run(QStringList{"monitor"} + port()
+                      + QStringList{"ipc300@1", "tya200@7", "--ids", "load_voltage", "--cycles", "2", "--retries", "0",
+                                    "--jsonl"});
+    QCOMPARE(r.code, 1);
+    int online = 0;
+    int silent = 0;
+    for (const QString &line : r.out.split('\n', Qt::SkipEmptyParts)) {
+        const QJsonObject o = QJsonDocument::fromJson(line.toUtf8()).object();
+        if (o["device"].toString() == "ipc300@1") {
+            QCOMPARE(o["condition"].toString(), QString("online"));
+            QVERIFY(o["values"].toObject()["load_voltage"].isDouble());
+            ++online;
+        } else {
+            QCOMPARE(o["device"].toString(), QString("tya200@7"));
+            QVERIFY2(o["condition"].toString() == "offline", qPrintable(line));
+            QVERIFY(o["values"].toObject()["load_voltage"].isNull());
+            ++silent;
+        }
+    }
+    QVERIFY2(online >= 2 && silent >= 2, qPrintable(r.out));
+    QVERIFY2(r.err.contains("never confirmed: tya200@7 did not answer"), qPrintable(r.err));
+    QVERIFY2(!r.err.contains("ipc300@1"), qPrintable(r.err));
+
+    // The other line commands keep refusing a device whose family is not confirmed.
+    for (const QStringList &command : {QStringList{"read", "tya200@7", "load_voltage"},
+                                       QStringList{"write", "tya200@7", "setpoint=10"}}) {
+        const Run refused = run(command + port() + QStringList{"--retries", "0"});
+        QCOMPARE(refused.code, 1);
+    }
+}
+
+void tst_JumoctlLine::monitorConfirmsADeviceThatAnswersLater()
+{
+    // The TYA 200 is off when the monitor starts, and switched on while it runs: its
+    // family is checked when it answers, and its values follow.
+    QVERIFY(m_sim.setFault(2, "dead", -1, 0));
+    auto alive = qScopeGuard([&] { m_sim.setFault(2, "none", -1, 0); });
+    QProcess monitor;
+    monitor.start(QStringLiteral(JUMOCTL_PATH),
+                  QStringList{"monitor"} + port()
+                          + QStringList{"ipc300@1", "tya200@2", "--ids", "load_voltage", "--interval", "100",
+                                        "--retries", "0", "--jsonl"});
+    auto stop = qScopeGuard([&] {
+        if (monitor.state() != QProcess::NotRunning) {
+            monitor.kill();
+            monitor.waitForFinished(5000);
+        }
+    });
+    QList<QJsonObject> records;
+    const auto count = [&](const QString &device, const QString &condition) {
+        while (monitor.canReadLine())
+            records << QJsonDocument::fromJson(monitor.readLine()).object();
+        int n = 0;
+        for (const QJsonObject &o : std::as_const(records))
+            n += o["device"].toString() == device && o["condition"].toString() == condition;
+        return n;
+    };
+    // The simulator lives in this process: QTRY keeps its event loop running.
+    QTRY_VERIFY_WITH_TIMEOUT(count("ipc300@1", "online") >= 3 && count("tya200@2", "offline") >= 1, 60000);
+    QCOMPARE(count("tya200@2", "online"), 0);
+    m_sim.setFault(2, "none", -1, 0);
+    QTRY_VERIFY_WITH_TIMEOUT(count("tya200@2", "online") >= 2, 120000);
+    for (const QJsonObject &o : std::as_const(records)) {
+        if (o["device"].toString() == "tya200@2" && o["condition"].toString() == "online")
+            QVERIFY(o["values"].toObject()["load_voltage"].isDouble());
+        else if (o["device"].toString() == "tya200@2")
+            QVERIFY(o["values"].toObject()["load_voltage"].isNull());   // nothing of it before it was confirmed
+    }
+    ::kill(pid_t(monitor.processId()), SIGTERM);
+    QTRY_VERIFY_WITH_TIMEOUT(monitor.state() == QProcess::NotRunning, 30000);
+    QCOMPARE(monitor.exitCode(), 143);
+    const QString err = QString::fromLocal8Bit(monitor.readAllStandardError());
+    QVERIFY2(!err.contains("never confirmed"), qPrintable(err));
+}
+
+void tst_JumoctlLine::monitorNamesAWrongDeviceAndGoesOn()
+{
+    // A dTRON answers at 4, the command names a Quantrol there: the other device is
+    // monitored, the wrong one named, nothing of it shown as a Quantrol's, exit code 4.
+    const int writesBefore = m_sim.writeFrames();
+    const Run r = run(QStringList{"monitor"} + port()
+                      + QStringList{"quantrol@3", "quantrol@4", "--ids", "controller_status", "--cycles", "1", "--jsonl"});
+    QCOMPARE(r.code, 4);
+    QVERIFY2(r.err.contains("quantrol@4 refused: the device at address 4 is a dtron300"), qPrintable(r.err));
+    QVERIFY2(r.err.contains("never confirmed: quantrol@4 refused"), qPrintable(r.err));
+    bool wrong = false;
+    bool good = false;
+    for (const QString &line : r.out.split('\n', Qt::SkipEmptyParts)) {
+        const QJsonObject o = QJsonDocument::fromJson(line.toUtf8()).object();
+        if (o["device"].toString() == "quantrol@4") {
+            QCOMPARE(o["condition"].toString(), QString("wrong_device"));
+            QVERIFY(o["values"].toObject()["controller_status"].isNull());
+            QCOMPARE(o["status"].toObject()["controller_status"].toString(), QString("wrong_device"));
+            wrong = true;
+        } else {
+            QCOMPARE(o["condition"].toString(), QString("online"));
+            good = true;
+        }
+    }
+    QVERIFY2(wrong && good, qPrintable(r.out));
+    QCOMPARE(m_sim.writeFrames(), writesBefore);
+}
+
+void tst_JumoctlLine::dumpStatusesAreTheDocumentedOnes()
+{
+    // Nothing answers at 9 and its identity is not checked: every block times out, and
+    // the device goes offline halfway. README's statuses for dump --json are these.
+    const Run r = run(QStringList{"dump", "--no-identify"} + port() + QStringList{"ipc300@9", "--retries", "0", "--json"});
+    QCOMPARE(r.code, 1);
+    static const QRegularExpression documented("^(ok|underrange|overrange|invalid|timeout|unavailable|exception:[0-9]+)$");
+    const QJsonArray rows = QJsonDocument::fromJson(r.out.toUtf8()).array();
+    QCOMPARE(rows.size(), 111);
+    for (const QJsonValue &row : rows) {
+        const QString status = row.toObject()["status"].toString();
+        QVERIFY2(documented.match(status).hasMatch(), qPrintable(status));
+        QCOMPARE(status, QString("timeout"));
+    }
+}
+
+void tst_JumoctlLine::diffOfAFileThatCannotBeComparedIsAProblem_data()
+{
+    QTest::addColumn<QString>("device");    // in a good backup of this device,
+    QTest::addColumn<QString>("from");      // this text replaced
+    QTest::addColumn<QString>("to");        // by this one,
+    QTest::addColumn<QString>("problem");   // and what stderr says
+    QTest::newRow("another family") << "dtron300@4" << "\"family\": \"dtron300\"" << "\"family\": \"quantrol\""
+                                    << "the file is for the family quantrol, the device is dtron300";
+    QTest::newRow("an unknown id") << "dtron300@4" << "\"setpoint_w2\":" << "\"setpoint_w9\":"
+                                   << "'setpoint_w9' in the file is no parameter of dtron300";
+    QTest::newRow("an invalid value") << "dtron300@4" << "\"setpoint_w2\": \"120\"" << "\"setpoint_w2\": \"warm\""
+                                      << "'setpoint_w2' in the file:";
+    // Known only once the device has told its version.
+    QTest::newRow("another software version") << "ipc300@1" << "\"softwareVersion\": \""
+                                              << "\"softwareVersion\": \"9" << "the file is from software version 9";
+}
+
+void tst_JumoctlLine::diffOfAFileThatCannotBeComparedIsAProblem()
+{
+    QFETCH(QString, device);
+    QFETCH(QString, from);
+    QFETCH(QString, to);
+    QFETCH(QString, problem);
+    QTemporaryDir dir;
+    const QString file = dir.filePath("backup.json");
+    SimulatedDevice *dtron = m_sim.line().device(4);
+    const double w2 = dtron->number("setpoint_w2");
+    const auto back = qScopeGuard([&] { dtron->setNumber("setpoint_w2", w2); });
+    QVERIFY(dtron->setNumber("setpoint_w2", 120));
+    QCOMPARE(run(QStringList{"backup"} + port() + QStringList{device, file}).code, 0);
+    QFile f(file);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QString json = QString::fromUtf8(f.readAll());
+    f.close();
+    QVERIFY2(json.contains(from), qPrintable(json.left(400)));
+    json.replace(from, to);
+    QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    f.write(json.toUtf8());
+    f.close();
+    // diff(1): 1 would say "they differ"; a file that cannot be compared is trouble, 2.
+    const Run r = run(QStringList{"diff"} + port() + QStringList{device, file});
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains(problem), qPrintable(r.err));
+    QVERIFY2(!r.out.contains("differ"), qPrintable(r.out));
 }
 
 void tst_JumoctlLine::absentDeviceIsATimeout()
@@ -382,7 +573,6 @@ void tst_JumoctlLine::wrongFamilyIsRefused_data()
     QTest::newRow("write") << QStringList{"write", "quantrol@4", "controller_setpoint=50"};
     QTest::newRow("broadcast read-back") << QStringList{"write", "quantrol@0", "controller_setpoint=50", "--verify", "3,4",
                                                     "--line-has-only", "quantrol"};
-    QTest::newRow("monitor") << QStringList{"monitor", "quantrol@3", "quantrol@4", "--cycles", "1", "--jsonl"};
     QTest::newRow("backup") << QStringList{"backup", "quantrol@4", "NEW"};
     QTest::newRow("diff") << QStringList{"diff", "quantrol@4", "FILE"};
     QTest::newRow("restore") << QStringList{"restore", "--yes", "quantrol@4", "FILE"};
@@ -547,6 +737,9 @@ void tst_JumoctlLine::signalEndsWithASummary_data()
     QTest::newRow("restore under way, Ctrl-C") << QStringList{"restore", "--yes", "dtron300@4", "FILE"}
                                                << "confirmed by read-back" << SIGINT << 130
                                                << " of 3 write(s) done (" << 2;
+    QTest::newRow("restore under way, SIGHUP") << QStringList{"restore", "--yes", "dtron300@4", "FILE"}
+                                               << "confirmed by read-back" << SIGHUP << 129
+                                               << "hangup: " << 2;
     QTest::newRow("scan, SIGTERM") << QStringList{"scan", "--from", "1", "--to", "200"} << "dtron300@4" << SIGTERM << 143
                                    << "terminated: 4 device(s) found before the scan stopped" << 0;
     QTest::newRow("monitor, Ctrl-C") << QStringList{"monitor", "ipc300@1", "--jsonl"} << "ipc300@1" << SIGINT << 130
@@ -563,19 +756,14 @@ void tst_JumoctlLine::signalEndsWithASummary()
     QFETCH(int, writes);
     QTemporaryDir dir;
     const QString file = dir.filePath("dtron.json");
-    SimulatedDevice *dtron = m_sim.line().device(4);
-    const QList<std::pair<const char *, double>> saved{{"setpoint_w2", 120}, {"setpoint_w3", 60}, {"ps1_pb1", 10}};
-    for (const auto &[id, value] : saved)
-        dtron->setNumber(id, value);
-    QCOMPARE(run(QStringList{"backup"} + port() + QStringList{"dtron300@4", file}).code, 0);
-    for (const auto &[id, value] : saved)
-        dtron->setNumber(id, value + 1);
+    QVERIFY(backupThreeApart(file));
     arguments.replaceInStrings(QRegularExpression("^FILE$"), file);
     // Slow replies, so the command is still at work when the signal comes.
     m_sim.line().setProcessingDelayMs(150);
     const auto restoreDelay = qScopeGuard([&] { m_sim.line().setProcessingDelayMs(2); });
 
     const int writesBefore = m_sim.writeFrames();
+    const qsizetype auditBefore = auditRecords().size();
     QProcess p;
     QSignalSpy finished(&p, &QProcess::finished);
     p.start(QStringLiteral(JUMOCTL_PATH), arguments + port());   // stdin stays open: nobody answers
@@ -592,6 +780,48 @@ void tst_JumoctlLine::signalEndsWithASummary()
     QVERIFY2(m_sim.writeFrames() - writesBefore <= writes, qPrintable(QString::number(m_sim.writeFrames() - writesBefore)));
     QTest::qWait(500);   // nothing more goes out after the end
     QVERIFY(m_sim.writeFrames() - writesBefore <= writes);
+    // Every write begun has its audit record: those done, and the one under way (unknown).
+    static const QRegularExpression done("(\\d+) of \\d+ write\\(s\\) done");
+    if (const QRegularExpressionMatch m = done.match(err); m.hasMatch()) {
+        const int begun = m.captured(1).toInt() + int(err.contains("was being written"));
+        QCOMPARE(auditRecords().size() - auditBefore, qsizetype(begun));
+    }
+}
+
+void tst_JumoctlLine::closedOutputEndsARestoreWithItsRecords()
+{
+    // jumoctl restore ... | head -n 1: the reader goes after the first line; the restore
+    // stops before its next write, says so, and every write it made is audited.
+    QTemporaryDir dir;
+    const QString file = dir.filePath("dtron.json");
+    QVERIFY(backupThreeApart(file));
+    m_sim.line().setProcessingDelayMs(150);
+    const auto restoreDelay = qScopeGuard([&] { m_sim.line().setProcessingDelayMs(2); });
+
+    const int writesBefore = m_sim.writeFrames();
+    const qsizetype auditBefore = auditRecords().size();
+    QProcess restore;
+    QProcess head;
+    restore.setStandardOutputProcess(&head);
+    QSignalSpy finished(&restore, &QProcess::finished);
+    head.start("head", {"-n", "1"});
+    restore.start(QStringLiteral(JUMOCTL_PATH), QStringList{"restore", "--yes", "dtron300@4", file} + port());
+    QVERIFY2(finished.wait(60000), "the restore did not end when its output was closed");
+    QTRY_VERIFY_WITH_TIMEOUT(head.state() == QProcess::NotRunning, 30000);
+    const QString err = QString::fromLocal8Bit(restore.readAllStandardError());
+    QCOMPARE(restore.exitStatus(), QProcess::NormalExit);   // not killed by SIGPIPE
+    QCOMPARE(restore.exitCode(), 141);
+    static const QRegularExpression summary("output closed: (\\d+) of 3 write\\(s\\) done \\((\\d+) restored and verified\\)");
+    const QRegularExpressionMatch m = summary.match(err);
+    QVERIFY2(m.hasMatch(), qPrintable(err));
+    const int done = m.captured(1).toInt();
+    QVERIFY2(done < 3 && !err.contains("was being written"), qPrintable(err));   // it stopped between writes
+    QCOMPARE(m_sim.writeFrames() - writesBefore, done);
+    QCOMPARE(auditRecords().size() - auditBefore, qsizetype(done));
+    for (qsizetype i = auditBefore; i < auditRecords().size(); ++i)
+        QCOMPARE(auditRecords().at(i).value("result").toString(), QString("confirmed"));
+    QTest::qWait(500);   // nothing more goes out after the end
+    QCOMPARE(m_sim.writeFrames() - writesBefore, done);
 }
 
 void tst_JumoctlLine::largestFloatRoundTrips()

@@ -7,6 +7,7 @@
 #include "jumoversion.h"
 #include "protocol/familyregistry.h"
 #include "mapcommands.h"
+#include "systemsettings.h"
 
 #include <QDir>
 #include <QJsonArray>
@@ -14,8 +15,11 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <unistd.h>
 
 using namespace jumo;
 using namespace jumo::test;
@@ -69,6 +73,11 @@ private slots:
     void simulatorRefusesBadNumbers();
     void portsByTheirStableNames();
     void versionIsTheProjectVersion();
+    void mapShowsTheDefaults();
+    void closedOutputIsSaid();
+    void noHomeNoWrites();
+    void systemSettingsFailClosed_data();
+    void systemSettingsFailClosed();
 };
 
 void tst_Jumoctl::initTestCase()
@@ -100,7 +109,7 @@ void tst_Jumoctl::mapCsvContract()
     QCOMPARE(r.code, 0);
     QVERIFY2(r.err.isEmpty(), qPrintable(r.err));
     const QStringList lines = r.out.split('\n', Qt::SkipEmptyParts);
-    QCOMPARE(lines.first(), QString("address,bit,id,label,type,words,access,storage,unit,group,notes,precision"));
+    QCOMPARE(lines.first(), QString("address,bit,id,label,type,words,access,storage,unit,group,notes,precision,default"));
     bool found = false;
     for (const QString &line : lines)
         found |= line.startsWith(row);
@@ -117,7 +126,7 @@ void tst_Jumoctl::mapCsvContract()
     for (qsizetype i = 1; i < lines.size(); ++i) {
         QVERIFY2(address.match(lines[i]).hasMatch(), qPrintable(lines[i]));
         const QStringList fields = splitCsv(lines[i]);
-        QCOMPARE(fields.size(), 12);
+        QCOMPARE(fields.size(), 13);
         QVERIFY2(types.contains(fields[4]), qPrintable(lines[i]));
         // Every float shows its display precision, nothing else has one.
         static const QRegularExpression precision("^(decimals:[0-6]|significant:[1-7])$");
@@ -366,6 +375,129 @@ void tst_Jumoctl::versionIsTheProjectVersion()
     QVERIFY(p.waitForFinished(30000));
     QCOMPARE(p.readAllStandardOutput(), QByteArray("jumoctl " JUMO_VERSION "\n"));
     QVERIFY(QByteArray(JUMO_VERSION).count('.') == 2);
+}
+
+void tst_Jumoctl::mapShowsTheDefaults()
+{
+    // The manual's defaults, as the maps give them: a number, an enum's value, a boolean.
+    Run r = run({"map", "ipc300", "--csv"});
+    QCOMPARE(r.code, 0);
+    QHash<QString, QStringList> rows;
+    for (const QString &line : r.out.split('\n', Qt::SkipEmptyParts))
+        rows.insert(splitCsv(line).value(2), splitCsv(line));
+    const auto map = FamilyRegistry::load({}, true).family("ipc300");
+    int withDefault = 0;
+    for (const RegisterEntry &e : map->entries()) {
+        const QString shown = rows.value(e.id).value(12);
+        if (!e.defaultValue) {
+            QVERIFY2(shown.isEmpty(), qPrintable(e.id));
+            continue;
+        }
+        ++withDefault;
+        if (e.type == ValueType::Bool)
+            QCOMPARE(shown, QString(*e.defaultValue ? "true" : "false"));
+        else
+            QCOMPARE(shown.toDouble(), *e.defaultValue);
+    }
+    QVERIFY(withDefault >= 3);
+    r = run({"map", "ipc300", "--json"});
+    QCOMPARE(r.code, 0);
+    int inJson = 0;
+    for (const QJsonValue &v : QJsonDocument::fromJson(r.out.toUtf8()).object().value("entries").toArray()) {
+        const QJsonObject o = v.toObject();
+        const RegisterEntry *e = map->entry(o.value("id").toString());
+        QCOMPARE(o.contains("default"), bool(e->defaultValue));
+        if (!e->defaultValue)
+            continue;
+        ++inJson;
+        if (e->type == ValueType::Bool)
+            QCOMPARE(o.value("default").toBool(), *e->defaultValue != 0);
+        else
+            QCOMPARE(o.value("default").toDouble(), *e->defaultValue);
+    }
+    QCOMPARE(inJson, withDefault);
+}
+
+void tst_Jumoctl::closedOutputIsSaid()
+{
+    // jumoctl map ... | head, with head gone before anything is written: stdout is a
+    // pipe without a reader. Said, and the exit code says so; no death by SIGPIPE.
+    int ends[2];
+    QCOMPARE(::pipe(ends), 0);
+    ::close(ends[0]);
+    const int writeEnd = ends[1];
+    QProcess map;
+    map.setChildProcessModifier([writeEnd] { ::dup2(writeEnd, STDOUT_FILENO); });
+    map.start(QStringLiteral(JUMOCTL_PATH), {"map", "quantrol", "--csv"});
+    QVERIFY(map.waitForFinished(30000));
+    ::close(writeEnd);
+    QCOMPARE(map.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(map.exitCode(), 141);
+    const QByteArray err = map.readAllStandardError();
+    QVERIFY2(err.contains("jumoctl: the output could not be written"), err.constData());
+}
+
+void tst_Jumoctl::noHomeNoWrites()
+{
+    // Without HOME (a service, a cron job) the audit log has no folder: a write is refused
+    // before the line is opened, never kept in /.local/share/jumo.
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    for (const char *name : {"HOME", "XDG_DATA_HOME", "JUMO_LOG_DIR"})
+        env.remove(name);
+    QProcess p;
+    p.setProcessEnvironment(env);
+    p.start(QStringLiteral(JUMOCTL_PATH), {"write", "--port", "/nonexistent/ttyUSB9", "ipc300@1", "input_setpoint=10"});
+    QVERIFY(p.waitForFinished(30000));
+    QCOMPARE(p.exitCode(), 1);
+    const QString err = QString::fromLocal8Bit(p.readAllStandardError());
+    QVERIFY2(err.contains("no folder for the logs: neither JUMO_LOG_DIR, XDG_DATA_HOME nor HOME is set"), qPrintable(err));
+    QVERIFY2(err.contains("nothing is written"), qPrintable(err));
+    QVERIFY2(!err.contains("/nonexistent/ttyUSB9"), qPrintable(err));   // the line was never opened
+    QVERIFY(!QFileInfo::exists("/.local/share/jumo"));
+}
+
+void tst_Jumoctl::systemSettingsFailClosed_data()
+{
+    QTest::addColumn<QByteArray>("file");       // jumo/jumo-hmi.conf; "FOLDER": a folder there
+    QTest::addColumn<bool>("readOnly");
+    QTest::addColumn<QString>("warning");       // empty: none
+    QTest::newRow("no file") << QByteArray() << false << QString();
+    QTest::newRow("readOnly=true") << QByteArray("[General]\nreadOnly=true\n") << true << QString();
+    QTest::newRow("readOnly=false") << QByteArray("[General]\nreadOnly=false\n") << false << QString();
+    QTest::newRow("lower case key") << QByteArray("[General]\nreadonly=true\n") << true << "'readonly' is taken as readOnly";
+    QTest::newRow("capitalised key") << QByteArray("[General]\nReadOnly=true\n") << true << "'ReadOnly' is taken as readOnly";
+    QTest::newRow("key with an underscore") << QByteArray("read_only=yes\n") << true << "'read_only' is taken as readOnly";
+    QTest::newRow("value no boolean") << QByteArray("readOnly=ture\n") << true << "'readOnly=ture' is no true or false";
+    QTest::newRow("in a section") << QByteArray("[hmi]\nreadOnly=1\n") << true << "'hmi/readOnly' is taken as readOnly";
+    QTest::newRow("unknown key") << QByteArray("readOnly=false\ncolour=red\n") << false << "unknown key 'colour'";
+    QTest::newRow("log rotation") << QByteArray("[logs]\nmaxFileMiB=8\nkeepFiles=3\n") << false << QString();
+    QTest::newRow("a folder") << QByteArray("FOLDER") << true << "cannot be read (it is a folder)";
+}
+
+void tst_Jumoctl::systemSettingsFailClosed()
+{
+    QFETCH(QByteArray, file);
+    QFETCH(bool, readOnly);
+    QFETCH(QString, warning);
+    QTemporaryDir config;
+    // In-process, as XDG_CONFIG_DIRS is for a new process (QSettings reads it once).
+    QSettings::setPath(QSettings::NativeFormat, QSettings::SystemScope, config.path());
+    const QString path = config.filePath("jumo/jumo-hmi.conf");
+    QCOMPARE(SystemSettings::fileName(), path);
+    QVERIFY(QDir(config.path()).mkpath("jumo"));
+    if (file == "FOLDER") {
+        QVERIFY(QDir().mkpath(path));
+    } else if (!file.isEmpty()) {
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(file);
+    }
+    QCOMPARE(SystemSettings::readOnly(), readOnly);
+    const QString warnings = SystemSettings::warnings().join('\n');
+    if (warning.isEmpty())
+        QVERIFY2(warnings.isEmpty(), qPrintable(warnings));
+    else
+        QVERIFY2(warnings.contains(warning) && warnings.contains(path), qPrintable(warnings));
 }
 
 QTEST_GUILESS_MAIN(tst_Jumoctl)
