@@ -4,8 +4,10 @@
 #include "connectionbar.h"
 #include "devicepage.h"
 #include "mainwindow.h"
+#include "logs/eventlog.h"
 #include "modbuslogging.h"
 #include "quitonsignal.h"
+#include "systemsettings.h"
 #include "protocol/translations.h"
 #include "mqtt/topicscheme.h"
 #include "remotewindow.h"
@@ -16,10 +18,17 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QTextStream>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTabWidget>
+
+#include <cstdio>
+#include <memory>
+#include <tuple>
+
+#include <unistd.h>
 
 namespace {
 
@@ -63,23 +72,66 @@ int runRemote(QApplication &app, const QCommandLineParser &parser, const jumo::F
     return app.exec();
 }
 
-} // namespace
+// A real start needs a display. Without one Qt aborts (exit 134) with a paragraph about
+// reinstalling; the user gets one sentence and exit code 1 instead. Qt's own messages of
+// a failed start are held back, those of a start that worked are passed on.
+QtMessageHandler qtHandler = nullptr;
+bool openingDisplay = false;
+QString noDisplaySentence;
+QList<std::tuple<QtMsgType, QString>> heldMessages;
 
-int main(int argc, char *argv[])
+void onQtMessage(QtMsgType type, const QMessageLogContext &context, const QString &message)
 {
-    QElapsedTimer started;
-    started.start();
-    QApplication app(argc, argv);
-    QApplication::setApplicationName(QStringLiteral("jumo-hmi"));
-    QApplication::setApplicationVersion(QStringLiteral(JUMO_VERSION));
-    QApplication::setOrganizationName(QStringLiteral("jumo"));
-    QGuiApplication::setDesktopFileName(QStringLiteral(JUMO_APP_ID));   // the window's icon and name on Wayland
-    const QString language = QSettings(QStringLiteral("jumo"), QStringLiteral("jumo-hmi")).value(QStringLiteral("language")).toString();
-    // Texts and numbers in one language: the one chosen in the Language menu, or the system's.
-    jumo::useLanguage(app, language.isEmpty() ? QLocale::system() : QLocale(language));
-    jumo::quitOnTerminationSignals();   // SIGTERM closes the window properly, settings included
+    if (!openingDisplay) {
+        qtHandler(type, context, message);
+        return;
+    }
+    if (type == QtFatalMsg && message.contains(QLatin1String("platform plugin"))) {
+        std::fputs(qPrintable(noDisplaySentence + QLatin1Char('\n')), stderr);
+        std::fflush(stderr);
+        ::_exit(1);   // inside QApplication's constructor: nothing to clean up that exit() could
+    }
+    if (type == QtFatalMsg)
+        qtHandler(type, context, message);
+    heldMessages.append({type, message});
+}
 
-    QCommandLineParser parser;
+std::unique_ptr<QApplication> openDisplay(int &argc, char **argv)
+{
+    qtHandler = qInstallMessageHandler(onQtMessage);
+    openingDisplay = true;
+    auto app = std::make_unique<QApplication>(argc, argv);
+    openingDisplay = false;
+    qInstallMessageHandler(qtHandler);
+    for (const auto &[type, message] : std::as_const(heldMessages))
+        qtHandler(type, QMessageLogContext(), message);
+    heldMessages.clear();
+    return app;
+}
+
+// Settings that cannot be saved are lost when the HMI closes: said once, at the start.
+QString unsavedSettingsProblem()
+{
+    QSettings settings(QStringLiteral("jumo"), QStringLiteral("jumo-hmi"));
+    const QFileInfo file(settings.fileName());
+    // QSettings replaces the file through a new one beside it: the folder must take it.
+    if (settings.isWritable() && QFileInfo(file.absolutePath()).isWritable())
+        return {};
+    return QApplication::translate("main", "Settings cannot be saved (%1 is not writable): what is changed in this "
+                                           "run is lost when it ends")
+            .arg(file.absoluteFilePath());
+}
+
+void setIdentity()
+{
+    QCoreApplication::setApplicationName(QStringLiteral("jumo-hmi"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(JUMO_VERSION));
+    QCoreApplication::setOrganizationName(QStringLiteral("jumo"));
+}
+
+// The one option list: read before QApplication (--help, --version) and after it.
+void addOptions(QCommandLineParser &parser)
+{
     parser.setApplicationDescription(QApplication::translate("main", "JUMO commissioning and monitoring HMI."));
     parser.addHelpOption();
     parser.addVersionOption();
@@ -154,9 +206,51 @@ int main(int argc, char *argv[])
                       QApplication::translate("main", "Print on stderr when the first live value arrives.")});
     parser.addOption({QStringLiteral("verbose"),
                       QApplication::translate("main", "Show Qt's Modbus messages (CRC errors, timeouts, frames) on stderr.")});
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QElapsedTimer started;
+    started.start();
+    const auto language = [] {
+        // Texts and numbers in one language: the one chosen in the Language menu, or the system's.
+        const QString chosen = QSettings(QStringLiteral("jumo"), QStringLiteral("jumo-hmi")).value(QStringLiteral("language")).toString();
+        return chosen.isEmpty() ? QLocale::system() : QLocale(chosen);
+    };
+    QCommandLineParser parser;
+    {
+        // --help and --version answer anywhere (over ssh, right after installing the
+        // package): they are read before QApplication, which needs a display.
+        QCoreApplication core(argc, argv);
+        setIdentity();
+        jumo::useLanguage(core, language());
+        addOptions(parser);
+        // Qt's own options (-platform, -style) are unknown here: only QApplication takes them.
+        parser.parse(core.arguments());
+        if (parser.isSet(QStringLiteral("help")) || parser.isSet(QStringLiteral("help-all"))
+            || parser.isSet(QStringLiteral("version")))
+            parser.process(core);   // prints, and exits with 0
+        noDisplaySentence = QCoreApplication::translate("main", "jumo-hmi: no display to open the window on (DISPLAY or "
+                                                                "WAYLAND_DISPLAY is not set or cannot be reached): start "
+                                                                "it in a desktop session");
+    }
+    const std::unique_ptr<QApplication> application = openDisplay(argc, argv);
+    QApplication &app = *application;
+    setIdentity();
+    QGuiApplication::setDesktopFileName(QStringLiteral(JUMO_APP_ID));   // the window's icon and name on Wayland
+    jumo::useLanguage(app, language());
+    jumo::quitOnTerminationSignals();   // SIGTERM closes the window properly, settings included
     parser.process(app);
     jumo::showModbusLogging(parser.isSet(QStringLiteral("verbose")));
 
+    // Logs in the root folder, or none at all: without a home the HMI does not start.
+    QString noLogs;
+    if (jumo::EventLog::defaultFolder(&noLogs).isEmpty()) {
+        QTextStream(stderr) << QStringLiteral("jumo-hmi: ") << noLogs << Qt::endl;
+        return 1;
+    }
     const jumo::FamilyRegistry registry = jumo::FamilyRegistry::loadDefault();
     jumo::MainWindow::Options options;
     options.demo = parser.isSet(QStringLiteral("demo"));
@@ -180,6 +274,19 @@ int main(int argc, char *argv[])
                                 << Qt::endl;
             return 2;
         }
+    }
+    // What the user is told once at the start, in the status bar and on stderr.
+    QStringList notes = jumo::SystemSettings::warnings();
+    // The administrator's read-only mode; the command line cannot lift it.
+    if (jumo::SystemSettings::readOnly()) {
+        options.readOnly = true;
+        notes << QApplication::translate("main", "read-only mode is set by the system configuration (%1): nothing is "
+                                                 "written to the devices")
+                         .arg(jumo::SystemSettings::fileName());
+    }
+    if (!options.demo) {   // the demo keeps nothing
+        if (const QString unsaved = unsavedSettingsProblem(); !unsaved.isEmpty())
+            notes << unsaved;
     }
     // --line and --station make the station of this run; --port stays one line as before.
     if (parser.isSet(QStringLiteral("line")) || parser.isSet(QStringLiteral("station"))) {
@@ -228,9 +335,12 @@ int main(int argc, char *argv[])
         for (const QString &failure : window.connectAllLines())
             QTextStream(stderr) << failure << Qt::endl;
     }
+    for (const QString &note : std::as_const(notes))
+        QTextStream(stderr) << QStringLiteral("jumo-hmi: ") << note << Qt::endl;
     if (!registry.errors().isEmpty())
-        window.statusBar()->showMessage(QApplication::translate("main", "Map files refused: %1")
-                                                .arg(registry.errors().join(QStringLiteral("; "))));
+        notes << QApplication::translate("main", "Map files refused: %1").arg(registry.errors().join(QStringLiteral("; ")));
+    if (!notes.isEmpty())
+        window.statusBar()->showMessage(notes.join(QStringLiteral("; ")));
     if (parser.isSet(QStringLiteral("port"))) {
         window.connectionBar()->setSettings(parser.value(QStringLiteral("port")), parser.value(QStringLiteral("baud")).toInt(),
                                             parser.value(QStringLiteral("format")));

@@ -64,6 +64,15 @@ constexpr int trafficRow = 1;
 constexpr int journalRow = 2;
 constexpr int auditRow = 3;
 
+// The demo's simulated devices keep logs of their own: none of their alarms and writes
+// among the plant's.
+QString logFolder(const MainWindow::Options &options)
+{
+    if (!options.logFolder.isEmpty())
+        return options.logFolder;
+    return EventLog::defaultFolder() + (options.demo ? QStringLiteral("/demo") : QString());
+}
+
 } // namespace
 
 MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, QWidget *parent)
@@ -72,12 +81,8 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
                                        tr("Write audit log")},
                                       this)),
       m_pages(new QStackedWidget(this)), m_overview(new OverviewPage(this)), m_traffic(new TrafficView(this)),
-      m_journalLog(new EventLog((options.logFolder.isEmpty() ? EventLog::defaultFolder() : options.logFolder)
-                                        + QStringLiteral("/alarm-journal.jsonl"),
-                                this)),
-      m_auditLog(new EventLog((options.logFolder.isEmpty() ? EventLog::defaultFolder() : options.logFolder)
-                                      + QStringLiteral("/write-audit.jsonl"),
-                              this)),
+      m_journalLog(new EventLog(logFolder(options) + QStringLiteral("/alarm-journal.jsonl"), this)),
+      m_auditLog(new EventLog(logFolder(options) + QStringLiteral("/write-audit.jsonl"), this)),
       m_journalView(new EventLogView(m_journalLog, AlarmJournal::columns(),
                                      {tr("Time"), tr("Device"), tr("Register"), tr("Bit"), tr("Id"), tr("Signal"),
                                       tr("Kind"), tr("State")},
@@ -97,10 +102,8 @@ MainWindow::MainWindow(const FamilyRegistry &registry, const Options &options, Q
         Theme::apply(*kind);
     else
         Theme::apply(Theme::Kind::System);
-    // An administrator can fix read-only mode for a control room in the system-wide
-    // configuration; the command line cannot lift it.
-    const QSettings system(QSettings::SystemScope, QStringLiteral("jumo"), QStringLiteral("jumo-hmi"));
-    m_readOnly = options.readOnly || system.value(QStringLiteral("readOnly"), false).toBool();
+    // options.readOnly includes the system-wide configuration's, which jumo-hmi reads.
+    m_readOnly = options.readOnly;
     setWindowTitle(m_readOnly ? tr("JUMO HMI [read-only]") : tr("JUMO HMI"));
 
     auto *toolbar = addToolBar(tr("Connection"));

@@ -49,11 +49,11 @@ public:
     struct Options
     {
         bool demo = false;
-        bool readOnly = false;
+        bool readOnly = false;  // --read-only or the system configuration's readOnly
         // Each device is checked to be of its family when it answers (off: --no-identify).
         bool identify = true;
         QString settingsFile;   // empty: the user's settings
-        QString logFolder;      // empty: EventLog::defaultFolder()
+        QString logFolder;      // empty: EventLog::defaultFolder(), its demo/ for the demo
         QString theme;          // a Theme name for this run; empty: the one last chosen in the View menu
         // Lines given on the command line (--line, --station): used instead of the kept
         // ones, and not kept.

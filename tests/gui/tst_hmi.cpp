@@ -230,6 +230,7 @@ private slots:
     void parameterEditorWaitsForAnOfflineDevice();
     void parameterEditorClosedMidWriteSendsNoMore();
     void commissioningReportFromTheMenu();
+    void demoKeepsItsOwnLogs();
 
 private:
     // A window connected to the line with the IPC 300 at address 1 on its page.
@@ -1890,6 +1891,38 @@ void tst_Hmi::commissioningReportFromTheMenu()
     QVERIFY2(error.contains("No space left on device"), qPrintable(error));
     QVERIFY(before.open(QIODevice::ReadOnly));
     QCOMPARE(before.readAll(), earlier);
+}
+
+void tst_Hmi::demoKeepsItsOwnLogs()
+{
+    // The demo's simulated devices write into a log folder of their own: none of their
+    // records among the plant's.
+    QTemporaryDir logs;
+    const QByteArray before = qgetenv("JUMO_LOG_DIR");
+    qputenv("JUMO_LOG_DIR", QFile::encodeName(logs.path()));
+    const auto back = qScopeGuard([&] { qputenv("JUMO_LOG_DIR", before); });
+    MainWindow::Options options;
+    options.demo = true;
+    options.settingsFile = m_dir.filePath("demo.ini");
+    MainWindow window(families(), options);
+    QSignalSpy ready(&window, &MainWindow::demoReady);
+    window.show();
+    QVERIFY(ready.wait(60000));
+    DevicePage *page = window.devicePage("dtron300", 4);
+    QVERIFY(page);
+    QTRY_VERIFY_WITH_TIMEOUT(window.bus()->identities().isTrusted(page->device()), 60000);
+    QSignalSpy written(window.bus(), &Bus::writeFinished);
+    window.bus()->write(page->device(), "setpoint_w2", "55");
+    QVERIFY(written.wait(30000));
+    const QString demoAudit = logs.filePath("demo/write-audit.jsonl");
+    QTRY_VERIFY_WITH_TIMEOUT(QFileInfo::exists(demoAudit), 30000);
+    const QList<QJsonObject> records = logRecords(demoAudit);
+    QVERIFY(!records.isEmpty());
+    QCOMPARE(records.last().value("device").toString(), QString("dtron300@4"));
+    QCOMPARE(records.last().value("entry").toString(), QString("setpoint_w2"));
+    // The plant's logs: not one record of the demo.
+    for (const char *name : {"write-audit.jsonl", "alarm-journal.jsonl"})
+        QVERIFY2(!QFileInfo::exists(logs.filePath(name)), name);
 }
 
 QTEST_MAIN(tst_Hmi)
