@@ -26,7 +26,6 @@
 
 #include <cstdio>
 #include <memory>
-#include <tuple>
 
 #include <unistd.h>
 
@@ -78,7 +77,7 @@ int runRemote(QApplication &app, const QCommandLineParser &parser, const jumo::F
 QtMessageHandler qtHandler = nullptr;
 bool openingDisplay = false;
 QString noDisplaySentence;
-QList<std::tuple<QtMsgType, QString>> heldMessages;
+QList<std::pair<QtMsgType, QString>> heldMessages;
 
 void onQtMessage(QtMsgType type, const QMessageLogContext &context, const QString &message)
 {

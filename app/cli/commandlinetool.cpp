@@ -61,7 +61,8 @@ QString CommandLineTool::usage() const
               "\n"
               "Exit codes: 0 done, 1 failed, 2 wrong arguments or files, 3 a write's outcome is\n"
               "unknown, 4 another family at the address; 129, 130, 141 and 143 after SIGHUP,\n"
-              "SIGINT, a closed output (SIGPIPE) and SIGTERM, each with a summary on stderr.\n"
+              "SIGINT, a closed output (SIGPIPE) and SIGTERM, a command on lines then saying\n"
+              "on stderr what it got done.\n"
               "\n"
               "'jumoctl COMMAND --help' describes a command.\n");
 }

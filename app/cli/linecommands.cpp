@@ -1420,6 +1420,11 @@ void LineCommands::startReport(const QString &path, const ReportTitle &title)
         // The command line has no session: its writes of today stand in for one.
         // Read back from the newest to the first record before today, so that a large
         // log costs no more than its recent part.
+        if (m_logFolder.isEmpty()) {
+            m_err << tr("no report written: its writes of today are unknown: %1").arg(m_logFolderError) << Qt::endl;
+            finish(exitcode::Failed);
+            return;
+        }
         EventLogReader audit(m_audit->path());
         const QString device = deviceName(*t.map, t.address);
         const QDateTime since = QDateTime(QDate::currentDate(), QTime(0, 0));
@@ -1431,10 +1436,8 @@ void LineCommands::startReport(const QString &path, const ReportTitle &title)
             if (r->value("device").toString() == device)
                 writes.prepend(*r);
         }
-        if (!audit.lastError().isEmpty() || m_logFolder.isEmpty()) {
-            m_err << tr("no report written: its writes of today are unknown: %1")
-                             .arg(m_logFolder.isEmpty() ? m_logFolderError : audit.lastError())
-                  << Qt::endl;
+        if (!audit.lastError().isEmpty()) {
+            m_err << tr("no report written: its writes of today are unknown: %1").arg(audit.lastError()) << Qt::endl;
             finish(exitcode::Failed);
             return;
         }

@@ -35,7 +35,7 @@ says_at_start() {
     wait "$pid"
     local code=$?
     if ! grep -qF -- "$expected" "$work/err" || [ "$code" -ne 0 ]; then
-        echo "FAIL: $* did not say '$expected' and go on (exit $code): $(cat "$work/err")"
+        echo "FAIL: did not say '$expected' and go on (exit $code): $(cat "$work/err")"
         fail=1
     fi
 }
