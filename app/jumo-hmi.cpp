@@ -274,14 +274,17 @@ int main(int argc, char *argv[])
             return 2;
         }
     }
-    // What the user is told once at the start, in the status bar and on stderr.
+    // What goes wrong at the start is said once, in the status bar and on stderr.
     QStringList notes = jumo::SystemSettings::warnings();
-    // The administrator's read-only mode; the command line cannot lift it.
+    // The administrator's read-only mode; the command line cannot lift it. Said on stderr
+    // only: the window shows READ-ONLY.
     if (jumo::SystemSettings::readOnly()) {
         options.readOnly = true;
-        notes << QApplication::translate("main", "read-only mode is set by the system configuration (%1): nothing is "
-                                                 "written to the devices")
-                         .arg(jumo::SystemSettings::fileName());
+        QTextStream(stderr) << QStringLiteral("jumo-hmi: ")
+                            << QApplication::translate("main", "read-only mode is set by the system configuration (%1): "
+                                                               "nothing is written to the devices")
+                                       .arg(jumo::SystemSettings::fileName())
+                            << Qt::endl;
     }
     if (!options.demo) {   // the demo keeps nothing
         if (const QString unsaved = unsavedSettingsProblem(); !unsaved.isEmpty())
@@ -338,8 +341,9 @@ int main(int argc, char *argv[])
         QTextStream(stderr) << QStringLiteral("jumo-hmi: ") << note << Qt::endl;
     if (!registry.errors().isEmpty())
         notes << QApplication::translate("main", "Map files refused: %1").arg(registry.errors().join(QStringLiteral("; ")));
+    // For a minute: a message hides the line's state in the status bar while it shows.
     if (!notes.isEmpty())
-        window.statusBar()->showMessage(notes.join(QStringLiteral("; ")));
+        window.statusBar()->showMessage(notes.join(QStringLiteral("; ")), 60000);
     if (parser.isSet(QStringLiteral("port"))) {
         window.connectionBar()->setSettings(parser.value(QStringLiteral("port")), parser.value(QStringLiteral("baud")).toInt(),
                                             parser.value(QStringLiteral("format")));
