@@ -937,7 +937,7 @@ void MainWindow::updateStatus()
                                                     .arg(lost.join(QStringLiteral(", ")))
                                           : tr("no values read: the line is lost");
         if (!m_shownError.isEmpty())
-            text += QStringLiteral("; ") + tr("%n error(s); last: %1", nullptr, errors).arg(m_shownError);
+            text += QStringLiteral("; ") + tr("last error: %1").arg(m_shownError);
         m_errorStatus->setFullText(text);
     } else if (due) {
         m_errorStatus->setFullText(tr("%n error(s); last: %1", nullptr, errors).arg(m_shownError));

@@ -3,6 +3,7 @@
 #include <QEvent>
 
 #include <algorithm>
+#include <cmath>
 #include <QGridLayout>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -14,9 +15,13 @@ namespace {
 constexpr int spacing = 6;
 constexpr int margin = 6;
 // Faceplates grow on a large screen in steps of a quarter, to twice their size at most:
-// beyond that a control room reads them from across the room no better.
+// beyond that a control room reads them from across the room no better. They keep their
+// own size up to the room a 1600x1000 page gives them and grow with what is beyond, so
+// four devices on a desk's screen do not turn into posters.
 constexpr double scaleStep = 0.25;
 constexpr double largestScale = 2.0;
+constexpr int ownSizeWidth = 1600;
+constexpr int ownSizeHeight = 1000;
 }
 
 OverviewPage::OverviewPage(QWidget *parent)
@@ -173,7 +178,8 @@ void OverviewPage::relayout(bool force)
     if (m_alwaysCompact || !fits(density, 1)) {
         density = DeviceTile::Density::Compact;
     } else {
-        for (double s = largestScale; s > 1; s -= scaleStep) {
+        const double room = std::min({largestScale, double(width) / ownSizeWidth, double(height) / ownSizeHeight});
+        for (double s = std::floor(room / scaleStep) * scaleStep; s > 1; s -= scaleStep) {
             if (fits(density, s)) {
                 scale = s;
                 break;

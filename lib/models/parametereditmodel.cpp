@@ -566,7 +566,7 @@ void ParameterEditModel::setLocked(bool locked)
 void ParameterEditModel::setWriting(const QStringList &ids)
 {
     for (const QString &id : ids) {
-        m_results.insert(id, {WriteCommand::State::Pending, QString(), QString()});
+        m_results.insert(id, {WriteCommand::State::Pending, QString(), QString(), DecodedValue{}, -1});
         emitRow(id);
     }
 }
@@ -591,7 +591,7 @@ void ParameterEditModel::setNotWritten(const QString &id, const QString &reason)
 {
     if (!entry(id))
         return;
-    m_results.insert(id, {WriteCommand::State::Idle, reason, QString()});
+    m_results.insert(id, {WriteCommand::State::Idle, reason, QString(), DecodedValue{}, -1});
     emitRow(id);
 }
 

@@ -630,6 +630,24 @@ void tst_LayoutFit::faceplatesGrowOnALargeScreen()
     window.resize(1280, 800);
     settle();
     QTRY_COMPARE(overview->scale(), 1.0);
+    // Four devices on a desk's screen keep their own size; on the large one they grow.
+    MainWindow::Options options;
+    options.settingsFile = m_dir.filePath(QStringLiteral("fit-4-4k.ini"));
+    options.logFolder = m_dir.filePath(QStringLiteral("logs-4k"));
+    MainWindow few(families(), options);
+    for (int address = 1; address <= 4; ++address)
+        QVERIFY(few.addDevice(families().family(fullLineOrder().at(address % 4)), quint8(address)));
+    few.resize(1280, 800);
+    few.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&few));
+    few.showOverview();
+    settle();
+    auto *fewOverview = few.findChild<OverviewPage *>(QStringLiteral("overview"));
+    QCOMPARE(fewOverview->density(), DeviceTile::Density::Comfortable);
+    QCOMPARE(fewOverview->scale(), 1.0);
+    few.resize(3840, 2160 - 40);
+    settle();
+    QTRY_COMPARE(fewOverview->scale(), 2.0);
 }
 
 QTEST_MAIN(tst_LayoutFit)

@@ -107,10 +107,17 @@ void tst_ValueFormat::bitsByTheirLabels()
     RegisterEntry status;
     status.id = QStringLiteral("program_status");
     status.type = ValueType::Bitfield;
-    status.bits = {BitDefinition{1, 1, "program_pause", "Program pause"},
-                   BitDefinition{2, 1, "program_stop", "Basic status/Program stop"},
-                   BitDefinition{3, 1, "spare", "Spare", BitKind::Status, true},
-                   BitDefinition{8, 8, "slot_1", "Slot 1"}};
+    auto bit = [](int at, int width, const QString &id, const QString &label, bool reserved = false) {
+        BitDefinition b;
+        b.bit = at;
+        b.width = width;
+        b.id = id;
+        b.label = label;
+        b.reserved = reserved;
+        return b;
+    };
+    status.bits = {bit(1, 1, "program_pause", "Program pause"), bit(2, 1, "program_stop", "Basic status/Program stop"),
+                   bit(3, 1, "spare", "Spare", true), bit(8, 8, "slot_1", "Slot 1")};
     QCOMPARE(ValueFormat::bits(0x0004, status), QString("0x0004 (Basic status/Program stop, Slot 1: 0)"));
     QCOMPARE(ValueFormat::bits(0x0A06, status), QString("0x0A06 (Program pause, Basic status/Program stop, Slot 1: 10)"));
     status.bits.removeLast();
