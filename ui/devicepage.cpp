@@ -116,6 +116,8 @@ void DevicePage::setDeviceTitle(const QString &title)
         m_controls->setDeviceTitle(title);
     if (m_program)
         m_program->setDeviceTitle(title);
+    if (m_parameters)
+        m_parameters->setDeviceTitle(title);
 }
 
 void DevicePage::restyle(const DeviceCondition &condition)
