@@ -1,5 +1,5 @@
 // Writes the user-visible texts of the built-in register maps as QT_TRANSLATE_NOOP
-// lines, so lupdate finds them: labels, bit labels, enum values, section titles,
+// lines, so lupdate finds them: family names, labels, bit labels, enum values, section titles,
 // preconditions, faceplate states, exception meanings, error value wordings and what decides a unit set on
 // the device (context "jumo::maps").
 #include "protocol/familyregistry.h"
@@ -28,6 +28,7 @@ int main(int argc, char *argv[])
         }
     };
     for (const auto &map : registry.families()) {
+        add(map->name);
         for (const QString &t : map->exceptions)
             add(t);
         for (const QString &t : map->configuredUnits)

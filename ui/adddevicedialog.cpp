@@ -17,7 +17,7 @@ AddDeviceDialog::AddDeviceDialog(const FamilyRegistry &registry, QWidget *parent
     m_family->setObjectName(QStringLiteral("familyBox"));
     m_address->setObjectName(QStringLiteral("addressBox"));
     for (const auto &map : registry.families())
-        m_family->addItem(map->name, map->family);
+        m_family->addItem(map->displayName(), map->family);
     auto updateRange = [this] {
         if (const auto map = family())
             m_address->setRange(map->protocol.addressMin, map->protocol.addressMax);

@@ -4,6 +4,7 @@
 #include "bus/bus.h"
 #include "models/livevaluesmodel.h"
 #include "bus/valuetext.h"
+#include "models/devicetitle.h"
 #include "models/writecommand.h"
 #include "protocol/valuecodec.h"
 #include "protocol/valueformat.h"
@@ -78,7 +79,7 @@ ControlRow::ControlRow(Bus *bus, int device, const RegisterMap &map, const Regis
             auto *button = new QPushButton(translatedLabel(b.label), this);
             button->setObjectName(QStringLiteral("command_%1_%2").arg(entry.id, b.id));
             connect(button, &QPushButton::clicked, this, [this, b] {
-                write(b.id, tr("send the command \"%1\"").arg(translatedLabel(b.label)));
+                write(b.id, translatedLabel(b.label), tr("send the command \"%1\"").arg(translatedLabel(b.label)));
             });
             commands->addWidget(button);
             m_buttons << button;
@@ -122,7 +123,8 @@ ControlRow::ControlRow(Bus *bus, int device, const RegisterMap &map, const Regis
         m_restoreButton = new QPushButton(tr("Back to the device's own value"), this);
         m_restoreButton->setObjectName(QStringLiteral("restore_") + entry.id);
         connect(m_restoreButton, &QPushButton::clicked, this, [this] {
-            write(ValueCodec::formatFloat(*m_entry.restoreValue), tr("hand %1 back to the device").arg(translatedLabel(m_entry.label)));
+            write(ValueCodec::formatFloat(*m_entry.restoreValue), tr("the device's own value"),
+                  tr("hand %1 back to the device").arg(translatedLabel(m_entry.label)));
         });
         inputs->addWidget(m_restoreButton);
     }
@@ -176,6 +178,8 @@ void ControlRow::showWriteState(int state, const QString &message)
     m_state->setVisible(!m_state->text().isEmpty());
     if (m_switches)
         m_switches->setBusy(WriteCommand::State(state) == WriteCommand::State::Pending);
+    if (m_values)
+        refreshCurrent();
 }
 
 void ControlRow::refreshCurrent()
@@ -192,6 +196,12 @@ void ControlRow::refreshCurrent()
             m_current->setText(tr("Write-only: the lamps show the states the device reports elsewhere."));
         else
             m_current->setText(m_entry.isReadable() ? QString() : tr("Write-only: the device cannot report it."));
+        return;
+    }
+    // The value a write just read back is the device's value now (the polls catch up).
+    if (const DecodedValue *readBack = m_command->newerReadBack(); readBack && !m_switches) {
+        m_current->setText(tr("Device: %1").arg(ValueFormat::withUnit(*readBack, m_entry)));
+        Theme::plain(m_current);
         return;
     }
     // The value only while it is current; otherwise no number, or a stale one, and why.
@@ -253,6 +263,17 @@ void ControlRow::writeInput()
     if (value.isEmpty())
         return;
     QString shown = value;
+    if (m_choice) {
+        shown = m_choice->currentText();
+    } else if (m_switches) {
+        // The bits by their labels, as the question and the outcome name them.
+        QStringList labels;
+        for (const QString &id : value.split(QLatin1Char('+'), Qt::SkipEmptyParts)) {
+            if (const BitDefinition *b = m_entry.bitById(id))
+                labels << translatedLabel(b->label);
+        }
+        shown = labels.isEmpty() ? tr("every bit off") : tr("on: %1").arg(labels.join(QStringLiteral(", ")));
+    }
     // A float as the locale writes it ("42,5"), or with a dot; the codec takes a dot.
     if (m_edit && m_entry.type == ValueType::Float) {
         const std::optional<QString> number = ValueFormat::parseNumber(value);
@@ -268,7 +289,9 @@ void ControlRow::writeInput()
         locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
         shown = locale.toString(value.toDouble(), 'g', QLocale::FloatingPointShortest);
     }
-    write(value, tr("write %1 = %2").arg(translatedLabel(m_entry.label), ValueFormat::joinUnit(shown, m_entry.unit)));
+    if (m_edit)
+        shown = ValueFormat::joinUnit(shown, m_entry.unit);
+    write(value, shown, tr("write %1 = %2").arg(translatedLabel(m_entry.label), shown));
 }
 
 void ControlRow::refuse(const QString &reason)
@@ -280,15 +303,29 @@ void ControlRow::refuse(const QString &reason)
 
 bool ControlRow::confirm(const QString &description) const
 {
-    if (!changesOutputs(m_entry))
+    const bool drives = changesOutputs(m_entry);
+    const bool wears = m_entry.storage == Storage::Eeprom;
+    if (!drives && !wears)
         return true;
-    // A modal question only ever answers an action the user just started.
-    return QMessageBox::question(window(), tr("Confirm write"),
-                                 tr("Do you want to %1 on the device?\nThis changes what the device drives.").arg(description))
-            == QMessageBox::Yes;
+    // The question names the device: a page left open on one device while thinking of
+    // another must not switch the wrong one.
+    const QString device = m_deviceTitle.isEmpty() ? DeviceTitle::full(m_map, m_bus->deviceAddress(m_device), QString())
+                                                   : m_deviceTitle;
+    QStringList text{tr("Do you want to %1?").arg(description), tr("Device: %1").arg(device)};
+    if (drives)
+        text << tr("This changes what the device drives.");
+    if (wears)
+        text << tr("The value is stored in EEPROM, which lasts about 10,000 writes.");
+    // A modal question only ever answers an action the user just started. No is the
+    // default: an Enter meant for the field never changes a device.
+    QMessageBox box(QMessageBox::Question, tr("Confirm write"), text.join(QLatin1Char('\n')),
+                    QMessageBox::Yes | QMessageBox::No, window());
+    box.setObjectName(QStringLiteral("confirmWrite"));
+    box.setDefaultButton(QMessageBox::No);
+    return box.exec() == QMessageBox::Yes;
 }
 
-void ControlRow::write(const QString &value, const QString &description)
+void ControlRow::write(const QString &value, const QString &shown, const QString &description)
 {
     // In read-only mode the controls are disabled; a write that still comes here goes to
     // the bus, which refuses it, so the refusal shows here and in the audit log.
@@ -300,7 +337,7 @@ void ControlRow::write(const QString &value, const QString &description)
     }
     if (!m_readOnly && !confirm(description))
         return;
-    m_command->write(value);
+    m_command->write(value, shown);
 }
 
 void ControlRow::switchBit(const QString &bitId, bool on)

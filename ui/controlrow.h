@@ -28,10 +28,13 @@ public:
                QWidget *parent = nullptr);
 
     void setReadOnly(bool readOnly);
+    // How the question before a write names the device (see DeviceTitle).
+    void setDeviceTitle(const QString &title) { m_deviceTitle = title; }
     // The value as the input holds it now (for tests and confirmations).
     QString inputValue() const;
     void setInputValue(const QString &value);
-    // Writes the input's value, after a confirmation where the write changes outputs.
+    // Writes the input's value, after a confirmation where the write changes outputs or
+    // wears the EEPROM (from the Write button and from Enter alike).
     void writeInput();
     QString stateText() const;
     // The on/off switches of a bit field's bits, or null.
@@ -42,7 +45,8 @@ protected:
 
 private:
     bool m_dirty = true;
-    void write(const QString &value, const QString &description);
+    // value as the codec takes it; shown as people read it ("25.0 °C", "On", a label).
+    void write(const QString &value, const QString &shown, const QString &description);
     // Shows why nothing was written, without asking anything.
     void refuse(const QString &reason);
     void switchBit(const QString &bitId, bool on);
@@ -65,6 +69,7 @@ private:
     QLabel *m_current;
     QLabel *m_state;
     bool m_readOnly = false;
+    QString m_deviceTitle;
 };
 
 } // namespace jumo

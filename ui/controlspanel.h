@@ -1,5 +1,6 @@
 // A scrollable page of ControlRows for the entries of a device whose control is one of
-// the given kinds, grouped by the manual's sections.
+// the given kinds: the setpoints first (the one in RAM before those in EEPROM), then the
+// others grouped by the manual's sections.
 #pragma once
 
 #include <QWidget>
@@ -20,6 +21,7 @@ public:
                   QWidget *parent = nullptr);
 
     void setReadOnly(bool readOnly);
+    void setDeviceTitle(const QString &title);
     ControlRow *row(const QString &entryId) const;
     bool isEmpty() const { return m_rows.isEmpty(); }
 

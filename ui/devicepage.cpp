@@ -110,6 +110,16 @@ void DevicePage::setReadOnly(bool readOnly)
         m_program->setReadOnly(readOnly);
 }
 
+void DevicePage::setDeviceTitle(const QString &title)
+{
+    if (m_controls)
+        m_controls->setDeviceTitle(title);
+    if (m_program)
+        m_program->setDeviceTitle(title);
+    if (m_parameters)
+        m_parameters->setDeviceTitle(title);
+}
+
 void DevicePage::restyle(const DeviceCondition &condition)
 {
     m_readOnlyBanner->setStyleSheet(Theme::bannerStyle(Theme::Role::InfoBanner, Theme::Role::InfoBannerText));

@@ -33,6 +33,9 @@ public:
                QWidget *parent = nullptr);
 
     void setReadOnly(bool readOnly);
+    // How the questions before a write name the device ("IPC 300 at address 1 on line
+    // cabinet-a", see DeviceTitle).
+    void setDeviceTitle(const QString &title);
     // A banner says why nothing is shown or written while another device answers or the
     // identity check is under way.
     void setCondition(const DeviceCondition &condition);

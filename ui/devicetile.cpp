@@ -1,9 +1,11 @@
 #include "devicetile.h"
 
 #include "models/alarmbitsmodel.h"
+#include "models/devicetitle.h"
 #include "models/livevaluesmodel.h"
 #include "bus/valuetext.h"
 #include "protocol/registermap.h"
+#include "protocol/valueformat.h"
 
 #include <QCoreApplication>
 #include <QEvent>
@@ -45,7 +47,7 @@ DeviceTile::DeviceTile(DeviceId device, const RegisterMap &map, quint8 address, 
     setFocusPolicy(Qt::StrongFocus);
     setAttribute(Qt::WA_OpaquePaintEvent);
     setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
-    m_title = tr("%1 @ %2").arg(map.shortName).arg(address);
+    m_title = DeviceTitle::brief(map, address);
     setAccessibleName(m_title);
     // A poll cycle changes the models block by block: the faceplate catches up once for
     // them all, a moment later (a control room reads it, nobody needs each block).
@@ -90,6 +92,10 @@ std::optional<double> DeviceTile::number(const QString &entryId) const
     const RegisterEntry *e = m_map.entry(entryId);
     if (e && e->type == ValueType::Enum)
         return leadingNumber(e->enumValues.value(v.toInt()));
+    // As the text beside it reads: noise around zero that shows as 0.000 W is zero, and
+    // draws no arrow below the scale.
+    if (e && e->type == ValueType::Float)
+        return ValueFormat::rounded(v.toDouble(), e->precision);
     return v.toDouble();
 }
 
@@ -136,6 +142,7 @@ DeviceTile::Row DeviceTile::row(const QString &entryId, const QString &label) co
     const auto validity = Validity(index.data(LiveValuesModel::ValidityRole).toInt());
     row.value = index.data(LiveValuesModel::ValueWithUnitRole).toString();
     row.stale = validity == Validity::Stale;
+    row.errorValue = index.data(LiveValuesModel::ErrorValueRole).toBool();
     return row;
 }
 
@@ -212,7 +219,8 @@ void DeviceTile::refresh()
             break;
         }
         }
-        if (high && *high > low) {
+        // A device that is not heard has no bars, not even empty tracks: its rows say why.
+        if (online && high && *high > low) {
             r.scaleKnown = true;
             r.zero = low < 0 && *high > 0 ? -low / (*high - low) : 0;
             ++m_barsDrawn;
@@ -245,6 +253,15 @@ void DeviceTile::refresh()
         else if (kind == BitKind::Warning)
             warningNames << index.data().toString();
     }
+    // An error value (overrange, a broken sensor) is no reading at all: the faceplate
+    // says so in its state and names it, as it does a warning.
+    QStringList errorValues;
+    if (m_primary && m_primary->errorValue)
+        errorValues << QStringLiteral("%1: %2").arg(m_primary->label, m_primary->value);
+    for (const Row &r : std::as_const(m_rows)) {
+        if (r.errorValue)
+            errorValues << QStringLiteral("%1: %2").arg(r.label, r.value);
+    }
     switch (m_condition.state) {
     case DeviceCondition::State::Disconnected:
         m_summary = Summary::Disconnected;
@@ -264,7 +281,7 @@ void DeviceTile::refresh()
     case DeviceCondition::State::Online:
         if (known && !alarmNames.isEmpty())
             m_summary = Summary::Alarm;
-        else if (known && !warningNames.isEmpty())
+        else if ((known && !warningNames.isEmpty()) || !errorValues.isEmpty())
             m_summary = Summary::Warning;
         else if (!known || m_alarms->alarmsStale())
             m_summary = Summary::Uncertain;
@@ -275,8 +292,8 @@ void DeviceTile::refresh()
     m_alarmNames.clear();
     if (online && !alarmNames.isEmpty())
         m_alarmNames = alarmNames.join(QStringLiteral(", "));
-    else if (online && !warningNames.isEmpty())
-        m_alarmNames = warningNames.join(QStringLiteral(", "));
+    else if (online && !(warningNames + errorValues).isEmpty())
+        m_alarmNames = (warningNames + errorValues).join(QStringLiteral(", "));
     // Names read from words that have aged are the last known ones, and say so (in
     // place of the count, which says it too).
     m_alarmNamesStale = !m_alarmNames.isEmpty() && m_alarms->alarmsStale();
@@ -411,20 +428,32 @@ QString DeviceTile::alarmsText(const DeviceCondition &condition, const AlarmBits
     return text;
 }
 
-int DeviceTile::lineHeightFor(Density density) const
+QFont DeviceTile::baseFontFor(double scale) const
 {
-    return fontMetrics().height() + (density == Density::Compact ? 1 : 4);
+    QFont f = font();
+    if (scale == 1)
+        return f;
+    if (f.pointSizeF() > 0)
+        f.setPointSizeF(f.pointSizeF() * scale);
+    else
+        f.setPixelSize(int(f.pixelSize() * scale + 0.5));
+    return f;
 }
 
-QFont DeviceTile::bigFontFor(Density density) const
+int DeviceTile::lineHeightFor(Density density, double scale) const
 {
-    QFont big = font();
+    return QFontMetrics(baseFontFor(scale)).height() + int((density == Density::Compact ? 1 : 4) * scale + 0.5);
+}
+
+QFont DeviceTile::bigFontFor(Density density, double scale) const
+{
+    QFont big = baseFontFor(scale);
     big.setPointSizeF(big.pointSizeF() * (density == Density::Compact ? 1.6 : 2.0));
     big.setBold(true);
     return big;
 }
 
-QSize DeviceTile::sizeHintFor(Density density) const
+QSize DeviceTile::sizeHintFor(Density density, double scale) const
 {
     const FaceplateSpec &face = m_map.faceplate;
     // The title, the values, the mode (or the condition while the device does not
@@ -432,15 +461,24 @@ QSize DeviceTile::sizeHintFor(Density density) const
     int lines = 3 + int(face.values.size());
     if (face.hasProgram())
         ++lines;
-    int height = lines * lineHeightFor(density) + 2 * padding;
+    int height = lines * lineHeightFor(density, scale) + 2 * padding;
     if (!face.primary.isEmpty())
-        height += QFontMetrics(bigFontFor(density)).height() + 2;
-    return {density == Density::Compact ? 236 : 300, height};
+        height += QFontMetrics(bigFontFor(density, scale)).height() + 2;
+    return {int((density == Density::Compact ? 236 : 300) * scale), height};
 }
 
 QSize DeviceTile::minimumSizeHint() const
 {
-    return {m_density == Density::Compact ? 200 : 240, sizeHint().height()};
+    return {int((m_density == Density::Compact ? 200 : 240) * m_scale), sizeHint().height()};
+}
+
+void DeviceTile::setScale(double scale)
+{
+    if (m_scale == scale)
+        return;
+    m_scale = scale;
+    updateGeometry();
+    update();
 }
 
 void DeviceTile::drawShape(QPainter &painter, const QRectF &box) const
@@ -457,7 +495,7 @@ void DeviceTile::drawShape(QPainter &painter, const QRectF &box) const
     const QPointF c = r.center();
     const qreal w = r.width();
     auto mark = [&](const QString &text) {
-        QFont f = font();
+        QFont f = baseFont();
         f.setBold(true);
         f.setPixelSize(std::max(7, int(w * 0.7)));
         painter.setFont(f);
@@ -591,10 +629,10 @@ void DeviceTile::paintEvent(QPaintEvent *)
     const int lh = lineHeight();
     const QRect area = rect().adjusted(padding + 2, padding, -padding - 2, -padding);
     int y = area.top();
-    QFont normal = font();
-    QFont bold = font();
+    QFont normal = baseFont();
+    QFont bold = normal;
     bold.setBold(true);
-    const QFontMetrics fm(font());
+    const QFontMetrics fm(normal);
     const QFontMetrics boldFm(bold);
     painter.setPen(ink);
 

@@ -65,8 +65,13 @@ public:
         update();
     }
 
-    QSize sizeHint() const override { return sizeHintFor(m_density); }
-    QSize sizeHintFor(Density density) const;
+    // Larger on a screen with room to spare (the overview decides): text, shapes and
+    // bars grow by this factor, 1 at their own size.
+    void setScale(double scale);
+    double scale() const { return m_scale; }
+
+    QSize sizeHint() const override { return sizeHintFor(m_density, m_scale); }
+    QSize sizeHintFor(Density density, double scale = 1) const;
     QSize minimumSizeHint() const override;
 
 signals:
@@ -86,6 +91,7 @@ private:
         QString label;
         QString value;
         bool stale = false;
+        bool errorValue = false;          // current, but an error value (overrange...)
         bool scaleKnown = false;
         std::optional<double> fraction;   // of the bar, for a current value against a known scale
         double zero = 0;                  // where the bar starts (0, or the middle of -100..100)
@@ -100,10 +106,12 @@ private:
     // The first state that is on, "otherwise" when none, empty when one is unknown.
     std::optional<QString> firstOn(const QList<FaceplateState> &states, const QString &otherwise,
                                    bool *progress = nullptr) const;
-    int lineHeight() const { return lineHeightFor(m_density); }
-    int lineHeightFor(Density density) const;
-    QFont bigFont() const { return bigFontFor(m_density); }
-    QFont bigFontFor(Density density) const;
+    int lineHeight() const { return lineHeightFor(m_density, m_scale); }
+    int lineHeightFor(Density density, double scale) const;
+    QFont baseFont() const { return baseFontFor(m_scale); }
+    QFont baseFontFor(double scale) const;
+    QFont bigFont() const { return bigFontFor(m_density, m_scale); }
+    QFont bigFontFor(Density density, double scale) const;
     void drawShape(QPainter &painter, const QRectF &box) const;
 
     DeviceId m_device;
@@ -115,6 +123,7 @@ private:
     QTimer m_pending;
     DeviceCondition m_condition;
     Density m_density = Density::Comfortable;
+    double m_scale = 1;
     bool m_dirty = true;
 
     QString m_title;

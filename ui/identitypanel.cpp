@@ -41,7 +41,7 @@ void IdentityPanel::refresh()
                               value.isEmpty() ? QStringLiteral("-") : value.toHtmlEscaped());
     }
     m_text->setText(QStringLiteral("<big><b>%1</b></big> &nbsp; %2<br>%3")
-                            .arg(m_map.name.toHtmlEscaped(), tr("address %1").arg(m_address),
+                            .arg(m_map.displayName().toHtmlEscaped(), tr("address %1").arg(m_address),
                                  parts.join(QStringLiteral(" &nbsp;·&nbsp; "))));
 }
 

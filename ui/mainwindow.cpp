@@ -5,6 +5,7 @@
 #include "reportwriter.h"
 #include "reportdetailsdialog.h"
 #include "models/alarmbitsmodel.h"
+#include "models/devicetitle.h"
 #include "connectionbar.h"
 #include "logs/datalogger.h"
 #include "dataloggingdialog.h"
@@ -54,6 +55,8 @@
 #include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
+
+#include <utility>
 
 namespace jumo {
 
@@ -319,7 +322,7 @@ void MainWindow::buildMenus()
         const quint8 address = bus->deviceAddress(id);
         // Reports of devices on other lines than the current one are not offered here.
         setCurrentLine(m_devices[index].line);
-        ReportDetailsDialog details(QStringLiteral("%1 @ %2").arg(bus->deviceMap(id)->shortName).arg(address),
+        ReportDetailsDialog details(DeviceTitle::brief(*bus->deviceMap(id), address),
                                     reportTitle(family, address), this);
         details.setObjectName(QStringLiteral("reportDetailsDialog"));
         if (details.exec() != QDialog::Accepted)
@@ -563,6 +566,11 @@ StationLine *MainWindow::addLine(const QString &name, const BusSettings &setting
     connect(line, &StationLine::stateChanged, this, [this, line] { onLineStateChanged(line); });
     connect(line, &StationLine::changed, this, [this, line] {
         m_navigation->updateLine(line);
+        for (const DeviceEntry &d : std::as_const(m_devices)) {
+            if (d.line == line && d.page)
+                d.page->setDeviceTitle(DeviceTitle::full(*line->bus()->deviceMap(d.id), line->bus()->deviceAddress(d.id),
+                                                         line->name()));
+        }
         if (line == m_currentLine && !m_fillingBar)
             showLineInBar();
         updateLineGrouping();
@@ -782,7 +790,7 @@ void MainWindow::removeCurrentLineInteractively()
     QStringList devices;
     for (const DeviceEntry &d : std::as_const(m_devices)) {
         if (d.line == line)
-            devices << QStringLiteral("%1 @ %2").arg(line->bus()->deviceMap(d.id)->shortName).arg(line->bus()->deviceAddress(d.id));
+            devices << DeviceTitle::brief(*line->bus()->deviceMap(d.id), line->bus()->deviceAddress(d.id));
     }
     QString question = tr("Remove line %1 from the station?").arg(line->name());
     if (!devices.isEmpty())
@@ -808,7 +816,7 @@ void MainWindow::rebuildNavigation()
         for (const DeviceEntry &d : std::as_const(m_devices)) {
             if (d.line == line) {
                 const auto map = line->bus()->deviceMap(d.id);
-                g.devices << NavigationList::Device{d.id, QStringLiteral("%1 @ %2").arg(map->shortName).arg(line->bus()->deviceAddress(d.id))};
+                g.devices << NavigationList::Device{d.id, DeviceTitle::brief(*map, line->bus()->deviceAddress(d.id))};
             }
         }
         groups << g;
@@ -915,10 +923,27 @@ void MainWindow::updateStatus()
     m_loadStatus->setText(tr("%1 requests/s").arg(perSecond));
     // Repeated errors are throttled: the newest one, at most once every 5 s.
     const qint64 now = m_lines.isEmpty() ? 0 : m_lines.first()->bus()->clockMs();
-    if (!m_lastError.isEmpty() && (m_lastErrorShownMs < 0 || now - m_lastErrorShownMs >= 5000)) {
-        m_errorStatus->setFullText(tr("%n error(s); last: %1", nullptr, errors).arg(m_lastError));
+    // A lost line sends nothing, so nothing fails: while one is lost, that is what the
+    // status says between errors, never "no errors".
+    QStringList lost;
+    for (StationLine *line : std::as_const(m_lines)) {
+        if (line->state() == LineState::Lost)
+            lost << line->name();
+    }
+    const bool due = !m_lastError.isEmpty() && (m_lastErrorShownMs < 0 || now - m_lastErrorShownMs >= 5000);
+    if (due) {
         m_lastErrorShownMs = now;
-        m_lastError.clear();
+        m_shownError = std::exchange(m_lastError, QString());
+    }
+    if (!lost.isEmpty()) {
+        QString text = m_lines.size() > 1 ? tr("no values read: %n line(s) lost (%1)", nullptr, int(lost.size()))
+                                                    .arg(lost.join(QStringLiteral(", ")))
+                                          : tr("no values read: the line is lost");
+        if (!m_shownError.isEmpty())
+            text += QStringLiteral("; ") + tr("last error: %1").arg(m_shownError);
+        m_errorStatus->setFullText(text);
+    } else if (due) {
+        m_errorStatus->setFullText(tr("%n error(s); last: %1", nullptr, errors).arg(m_shownError));
     } else if (errors == 0) {
         m_errorStatus->setFullText(tr("no errors"));
     }
@@ -980,7 +1005,7 @@ void MainWindow::updateNavigationItem(DeviceId id)
     if (m_lines.size() > 1)
         title = tr("%1 on line %2").arg(title, m_devices[index].line->name());
     const QString tip = QStringLiteral("%1\n%2\n%3\n%4")
-                                .arg(title, map->name, DeviceTile::conditionText(condition),
+                                .arg(title, map->displayName(), DeviceTile::conditionText(condition),
                                      DeviceTile::alarmsText(condition, alarms));
     if (item->toolTip() != tip)
         item->setToolTip(tip);
@@ -1028,6 +1053,8 @@ DevicePage *MainWindow::ensurePage(int index) const
     DeviceEntry &d = m_devices[index];
     if (!d.page) {
         d.page = new DevicePage(d.line->bus(), d.id, d.values, d.alarms, m_pages);
+        d.page->setDeviceTitle(DeviceTitle::full(*d.line->bus()->deviceMap(d.id), d.line->bus()->deviceAddress(d.id),
+                                                 d.line->name()));
         d.page->setReadOnly(m_readOnly);
         d.page->setCondition(d.line->bus()->condition(d.id));
         m_pages->addWidget(d.page);

@@ -220,7 +220,8 @@ private:
     QDateTime m_sessionStart = QDateTime::currentDateTime();
     mutable QList<DeviceEntry> m_devices;
     QHash<StationLine *, int> m_requestsAtLastStatus;
-    QString m_lastError;
+    QString m_lastError;       // the newest error, not yet shown
+    QString m_shownError;      // the error the status bar shows now
     qint64 m_lastErrorShownMs = -1;
 };
 

@@ -3,6 +3,7 @@
 #include <QEvent>
 
 #include <algorithm>
+#include <cmath>
 #include <QGridLayout>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -13,6 +14,14 @@ namespace jumo {
 namespace {
 constexpr int spacing = 6;
 constexpr int margin = 6;
+// Faceplates grow on a large screen in steps of a quarter, to twice their size at most:
+// beyond that a control room reads them from across the room no better. They keep their
+// own size up to the room a 1600x1000 page gives them and grow with what is beyond, so
+// four devices on a desk's screen do not turn into posters.
+constexpr double scaleStep = 0.25;
+constexpr double largestScale = 2.0;
+constexpr int ownSizeWidth = 1600;
+constexpr int ownSizeHeight = 1000;
 }
 
 OverviewPage::OverviewPage(QWidget *parent)
@@ -124,16 +133,16 @@ bool OverviewPage::event(QEvent *event)
     return QWidget::event(event);
 }
 
-int OverviewPage::columnsFor(DeviceTile::Density density, int width) const
+int OverviewPage::columnsFor(DeviceTile::Density density, double scale, int width) const
 {
     const QList<DeviceTile *> all = tiles();
     if (all.isEmpty())
         return 1;
-    const int tileWidth = all.first()->sizeHintFor(density).width();
+    const int tileWidth = all.first()->sizeHintFor(density, scale).width();
     return std::max(1, (width - 2 * margin + spacing) / (tileWidth + spacing));
 }
 
-int OverviewPage::heightFor(DeviceTile::Density density, int columns) const
+int OverviewPage::heightFor(DeviceTile::Density density, double scale, int columns) const
 {
     // Rows are as high as their highest faceplate; a shown header is a row of its own.
     int height = 2 * margin;
@@ -147,7 +156,7 @@ int OverviewPage::heightFor(DeviceTile::Density density, int columns) const
         for (qsizetype start = 0; start < tiles.size(); start += columns) {
             int row = 0;
             for (qsizetype i = start; i < std::min(tiles.size(), start + columns); ++i)
-                row = std::max(row, tiles[i]->sizeHintFor(density).height());
+                row = std::max(row, tiles[i]->sizeHintFor(density, scale).height());
             height += row + (first ? 0 : spacing);
             first = false;
         }
@@ -159,14 +168,29 @@ void OverviewPage::relayout(bool force)
 {
     const int width = m_scroll->viewport()->width();
     const int height = m_scroll->viewport()->height();
-    // Comfortable while everything fits without scrolling, else compact.
+    // Comfortable while everything fits without scrolling, else compact; comfortable ones
+    // as large as the room allows without scrolling.
     DeviceTile::Density density = DeviceTile::Density::Comfortable;
-    if (m_alwaysCompact || heightFor(density, columnsFor(density, width)) > height)
+    double scale = 1;
+    auto fits = [this, width, height](DeviceTile::Density d, double s) {
+        return heightFor(d, s, columnsFor(d, s, width)) <= height;
+    };
+    if (m_alwaysCompact || !fits(density, 1)) {
         density = DeviceTile::Density::Compact;
-    const int columns = columnsFor(density, width);
-    if (!force && density == m_density && columns == m_columns)
+    } else {
+        const double room = std::min({largestScale, double(width) / ownSizeWidth, double(height) / ownSizeHeight});
+        for (double s = std::floor(room / scaleStep) * scaleStep; s > 1; s -= scaleStep) {
+            if (fits(density, s)) {
+                scale = s;
+                break;
+            }
+        }
+    }
+    const int columns = columnsFor(density, scale, width);
+    if (!force && density == m_density && columns == m_columns && scale == m_scale)
         return;
     m_density = density;
+    m_scale = scale;
     m_columns = columns;
     while (m_grid->count())
         delete m_grid->takeAt(0);
@@ -183,7 +207,19 @@ void OverviewPage::relayout(bool force)
         }
         for (qsizetype i = 0; i < g.tiles.size(); ++i) {
             g.tiles[i]->setDensity(density);
-            m_grid->addWidget(g.tiles[i], row + int(i) / columns, int(i) % columns, Qt::AlignTop);
+            g.tiles[i]->setScale(scale);
+        }
+        for (qsizetype start = 0; start < g.tiles.size(); start += columns) {
+            // The faceplates of a row are as high as its highest: a row reads as one line
+            // of boxes, whichever kinds of device it holds.
+            const qsizetype end = std::min(g.tiles.size(), start + columns);
+            int rowHeight = 0;
+            for (qsizetype i = start; i < end; ++i)
+                rowHeight = std::max(rowHeight, g.tiles[i]->sizeHint().height());
+            for (qsizetype i = start; i < end; ++i) {
+                g.tiles[i]->setFixedHeight(rowHeight);
+                m_grid->addWidget(g.tiles[i], row + int(i) / columns, int(i) % columns, Qt::AlignTop);
+            }
         }
         row += int(g.tiles.size() + columns - 1) / columns;
     }

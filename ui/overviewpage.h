@@ -1,7 +1,8 @@
 // The control-room overview: one faceplate per device, as many columns as the width
 // holds, grouped by line under a header per line (shown while there are several lines).
 // It turns compact by itself when the comfortable faceplates would need scrolling
-// (31 devices on a 1920x1080 screen), or always when the user asks for it.
+// (31 devices on a 1920x1080 screen), or always when the user asks for it; on a screen
+// with room to spare the faceplates grow, up to twice their size.
 #pragma once
 
 #include "devicetile.h"
@@ -36,6 +37,8 @@ public:
     bool alwaysCompact() const { return m_alwaysCompact; }
     DeviceTile::Density density() const { return m_density; }
     int columns() const { return m_columns; }
+    // How much larger than their own size the faceplates are drawn (1 to 2).
+    double scale() const { return m_scale; }
     QScrollArea *scrollArea() const { return m_scroll; }
 
 protected:
@@ -45,8 +48,8 @@ protected:
 private:
     // Places the faceplates again when the density or the columns change (or always).
     void relayout(bool force = false);
-    int columnsFor(DeviceTile::Density density, int width) const;
-    int heightFor(DeviceTile::Density density, int columns) const;
+    int columnsFor(DeviceTile::Density density, double scale, int width) const;
+    int heightFor(DeviceTile::Density density, double scale, int columns) const;
 
     QScrollArea *m_scroll;
     QWidget *m_inner;
@@ -63,6 +66,7 @@ private:
     bool m_headersShown = false;
     bool m_alwaysCompact = false;
     DeviceTile::Density m_density = DeviceTile::Density::Comfortable;
+    double m_scale = 1;
     int m_columns = 0;
 };
 

@@ -3,6 +3,7 @@
 #include "commissioning/parameterset.h"
 #include "commissioning/parametertransfer.h"
 #include "devicetile.h"
+#include "models/devicetitle.h"
 #include "models/parametereditmodel.h"
 #include "parametervaluedelegate.h"
 #include "parameterwritepreview.h"
@@ -506,7 +507,9 @@ void ParameterEditor::requestWrite()
             c.lastWrite = m_model->resultText(id);
         changes << c;
     }
-    const QString device = tr("%1 at address %2").arg(m_model->map().shortName).arg(m_bus->deviceAddress(m_device));
+    const QString device = m_deviceTitle.isEmpty()
+            ? DeviceTitle::full(m_model->map(), m_bus->deviceAddress(m_device), QString())
+            : m_deviceTitle;
     m_preview = new ParameterWritePreview(device, changes, this);
     m_preview->setAttribute(Qt::WA_DeleteOnClose);
     m_preview->setWindowModality(Qt::WindowModal);

@@ -32,6 +32,8 @@ public:
 
     // Nothing is edited, filled in or written; the values are still shown.
     void setReadOnly(bool readOnly);
+    // How the write preview names the device (see DeviceTitle).
+    void setDeviceTitle(const QString &title) { m_deviceTitle = title; }
     bool isEmpty() const;
     void focusSearch();
 
@@ -86,6 +88,7 @@ private:
     QPointer<ParameterWritePreview> m_preview;
     QStringList m_written;     // the changes of the write under way
     QStringList m_writing;     // of those, the ones not reported yet
+    QString m_deviceTitle;
     QString m_stopReason;      // why the rest were not written, when the job was stopped
     bool m_readOnly = false;
 };

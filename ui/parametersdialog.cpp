@@ -22,7 +22,7 @@ ParametersDialog::ParametersDialog(Bus *bus, DeviceId device, QWidget *parent)
       m_cancel(new QPushButton(tr("Cancel"), this))
 {
     const auto map = bus->deviceMap(device);
-    setWindowTitle(tr("Parameters of %1 at address %2").arg(map->name).arg(bus->deviceAddress(device)));
+    setWindowTitle(tr("Parameters of %1 at address %2").arg(map->displayName()).arg(bus->deviceAddress(device)));
     m_table->setObjectName(QStringLiteral("differences"));
     m_table->setColumnCount(5);
     m_table->setHorizontalHeaderLabels({tr("Parameter"), tr("Device"), tr("File"), tr("Unit"), tr("Result")});

@@ -31,7 +31,7 @@ RegisterMapBrowser::RegisterMapBrowser(const FamilyRegistry &registry, QWidget *
     layout->addWidget(m_table);
 
     for (const auto &map : m_registry.families())
-        m_familyBox->addItem(map->name, map->family);
+        m_familyBox->addItem(map->displayName(), map->family);
     connect(m_familyBox, &QComboBox::currentIndexChanged, this, &RegisterMapBrowser::showFamily);
     showFamily(m_familyBox->currentIndex());
     resize(1000, 700);
@@ -46,7 +46,7 @@ void RegisterMapBrowser::showFamily(int index)
         return;
     }
     m_summary->setText(tr("%1 - %2 registers - models: %3 - manual: %4")
-                               .arg(map->name)
+                               .arg(map->displayName())
                                .arg(map->entries().size())
                                .arg(map->models.join(QStringLiteral(", ")), map->manual));
     m_table->resizeColumnsToContents();

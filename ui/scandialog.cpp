@@ -44,12 +44,12 @@ ScanDialog::ScanDialog(Bus *bus, const FamilyRegistry &registry, QWidget *parent
             auto *item = new QListWidgetItem(tr("Address %1 answers as %2, as every %2 does whatever its own address: "
                                                 "not a device of its own")
                                                      .arg(address)
-                                                     .arg(map->name),
+                                                     .arg(map->displayName()),
                                              m_found);
             item->setFlags(Qt::ItemIsEnabled);
             return;
         }
-        auto *item = new QListWidgetItem(tr("%1 at address %2").arg(map->name).arg(address), m_found);
+        auto *item = new QListWidgetItem(tr("%1 at address %2").arg(map->displayName()).arg(address), m_found);
         item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
         item->setCheckState(Qt::Checked);
         item->setData(Qt::UserRole, int(m_results.size()));

@@ -104,6 +104,10 @@ QPalette highContrastPalette()
     p.setColor(QPalette::Link, yellow);
     for (QPalette::ColorRole role : {QPalette::WindowText, QPalette::Text, QPalette::ButtonText})
         p.setColor(QPalette::Disabled, role, QColor(170, 170, 170));
+    // The edges Fusion draws from these (a combo box's arrow button) grey out too: a
+    // disabled field must not keep the white edge of one that takes input.
+    for (QPalette::ColorRole role : {QPalette::Light, QPalette::Midlight, QPalette::Mid})
+        p.setColor(QPalette::Disabled, role, QColor(110, 110, 110));
     return p;
 }
 
@@ -122,6 +126,10 @@ void Theme::apply(Kind kind)
     qApp->setStyleSheet(kind == Kind::HighContrast
                                 ? QStringLiteral(
                                           "QLineEdit, QAbstractSpinBox, QComboBox { border: 1px solid white; padding: 1px 3px; }"
+                                          // A disabled field must not look like one to type in: a grey
+                                          // dashed edge and grey text, as the palette's disabled text.
+                                          "QLineEdit:disabled, QAbstractSpinBox:disabled, QComboBox:disabled"
+                                          " { border: 1px dashed #aaaaaa; color: #aaaaaa; }"
                                           "QCheckBox::indicator, QAbstractItemView::indicator, QRadioButton::indicator"
                                           " { border: 1px solid white; background: black; width: 10px; height: 10px; }"
                                           "QCheckBox::indicator:checked, QAbstractItemView::indicator:checked"

@@ -7,6 +7,7 @@
 #include <QHeaderView>
 #include <QPlainTextEdit>
 #include <QSplitter>
+#include <QLocale>
 #include <QTableWidget>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -91,8 +92,8 @@ void TrafficView::refreshStatistics()
                                 QString::number(s->requests), QString::number(s->timeouts),
                                 QString::number(s->crcErrors), QString::number(s->mismatches),
                                 exceptions.join(QStringLiteral(", ")),
-                                tr("%1 ms").arg(QString::number(s->lastRoundTripMs, 'f', 1)),
-                                tr("%1 ms").arg(QString::number(s->meanRoundTripMs, 'f', 1)),
+                                tr("%1 ms").arg(QLocale().toString(s->lastRoundTripMs, 'f', 1)),
+                                tr("%1 ms").arg(QLocale().toString(s->meanRoundTripMs, 'f', 1)),
                                 tr("%1 ms").arg(QString::number(s->lastCycleMs, 'f', 0))};
         for (int c = 0; c < cells.size(); ++c) {
             auto *item = m_statistics->item(row, c);

@@ -420,8 +420,17 @@ void Bus::dispatch()
                                                         : tr("the device's identity is not confirmed"));
             m_scheduler.transactionFinished(turn.transaction);
         }
-        if (turn.kind == Scheduler::Turn::Kind::Hold)
+        if (turn.kind == Scheduler::Turn::Kind::Hold) {
+            // Never quietly: whoever set the hold believes the device keeps the value.
             m_scheduler.clearHold(turn.device, turn.holdEntry);
+            const QString reason = m_settings.readOnly
+                    ? tr("read-only mode")
+                    : tr("%1 is not confirmed to be a %2 (it is checked again when it answers); set the hold again "
+                         "once it is")
+                              .arg(deviceName(turn.device), deviceMap(turn.device) ? deviceMap(turn.device)->family : QString());
+            qCWarning(lcBus).noquote() << "hold of" << deviceName(turn.device) << turn.holdEntry << "stopped:" << reason;
+            emit holdStopped(turn.device, turn.holdEntry, reason);
+        }
         schedule(t);
         return;
     }
@@ -491,10 +500,15 @@ void Bus::recordTraffic(const InFlight &flight, const ModbusResult &result, doub
     record.request = RtuFrame::build(record.slave, flight.turn.request.pdu());
     record.reply = result.replyFrame;
     record.roundTripMs = roundTripMs;
-    if (result.status != ModbusResult::Status::Ok)
-        record.error = result.status == ModbusResult::Status::Exception
-                ? tr("exception %1").arg(result.exceptionCode)
-                : result.errorText;
+    if (result.status == ModbusResult::Status::Exception) {
+        // What the code means to this family ("exception 2, illegal data address"), as
+        // writes say it: a bare number tells the status bar's reader nothing.
+        const std::shared_ptr<const RegisterMap> map = deviceMap(flight.turn.device);
+        record.error = map ? tr("exception %1, %2").arg(result.exceptionCode).arg(map->exceptionMeaning(result.exceptionCode))
+                           : tr("exception %1").arg(result.exceptionCode);
+    } else if (result.status != ModbusResult::Status::Ok) {
+        record.error = result.errorText;
+    }
     emit traffic(record);
 }
 

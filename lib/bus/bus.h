@@ -146,6 +146,9 @@ signals:
     void probeFinished(int ticket, const QList<quint16> &words, bool timedOut, int exceptionCode);
     void entriesRead(int ticket, const QStringList &failedIds);
     void traffic(const jumo::TrafficRecord &record);
+    // A hold (setHold) ended without being asked to: the device is no longer confirmed
+    // to be of its family (it was gone and answers again), so nothing more is written.
+    void holdStopped(jumo::DeviceId id, const QString &entryId, const QString &reason);
 
 private:
     friend class RequestDesk;

@@ -1,6 +1,7 @@
 #include "commissioning/commissioningreport.h"
 
 #include "commissioning/parameterset.h"
+#include "protocol/bitwrite.h"
 #include "bus/valuetext.h"
 #include "protocol/valuecodec.h"
 #include "protocol/valueformat.h"
@@ -12,7 +13,6 @@
 
 #include <algorithm>
 #include <array>
-#include <limits>
 
 namespace jumo {
 
@@ -66,20 +66,6 @@ QString paragraph(const QString &text, const QString &cssClass = QStringLiteral(
     return QStringLiteral("<p class=\"%1\">%2</p>").arg(cssClass, escaped(text));
 }
 
-// "5.1.2 Operating level parameters" sorts by 5, 1, 2: the manual's order, whatever
-// order the addresses put the sections in. Sections without a number go last.
-QList<int> sectionNumber(const QString &group)
-{
-    static const QRegularExpression number(QStringLiteral("^(\\d+(?:\\.\\d+)*)\\s"));
-    QList<int> parts;
-    const QRegularExpressionMatch m = number.match(group);
-    if (!m.hasMatch())
-        return {std::numeric_limits<int>::max()};
-    for (const QString &p : m.captured(1).split(QLatin1Char('.')))
-        parts << p.toInt();
-    return parts;
-}
-
 // The entries in groups, in the manual's order of sections and the map's order within.
 QList<QPair<QString, QList<const RegisterEntry *>>> byGroup(const QList<const RegisterEntry *> &entries)
 {
@@ -92,7 +78,7 @@ QList<QPair<QString, QList<const RegisterEntry *>>> byGroup(const QList<const Re
             it->second << e;
     }
     std::stable_sort(groups.begin(), groups.end(),
-                     [](const auto &a, const auto &b) { return sectionNumber(a.first) < sectionNumber(b.first); });
+                     [](const auto &a, const auto &b) { return sectionBefore(a.first, b.first); });
     return groups;
 }
 
@@ -116,24 +102,6 @@ QString timeText(const QTime &time, const QLocale &locale)
 QString dateTimeText(const QDateTime &time, const QLocale &locale)
 {
     return dateText(time.date(), locale) + QLatin1Char(' ') + timeText(time.time(), locale);
-}
-
-// A bit field for people: the words in hex and the set bits by their labels.
-QString bitsText(const DecodedValue &v, const RegisterEntry &entry)
-{
-    QStringList parts;
-    for (const BitDefinition &b : entry.bits) {
-        if (b.reserved)
-            continue;
-        const quint32 field = (v.raw & b.mask()) >> b.bit;
-        if (b.width > 1)
-            parts << QStringLiteral("%1: %2").arg(translated(b.label)).arg(field);
-        else if (field)
-            parts << translated(b.label);
-    }
-    const QString hex = QStringLiteral("0x%1").arg(QString::number(v.raw & 0xFFFF, 16).toUpper().rightJustified(4, QLatin1Char('0')));
-    return parts.isEmpty() ? CommissioningReport::tr("%1 (none set)").arg(hex)
-                           : QStringLiteral("%1 (%2)").arg(hex, parts.join(QStringLiteral(", ")));
 }
 
 } // namespace
@@ -171,9 +139,7 @@ QString CommissioningReport::valueText(const RegisterEntry &entry) const
     const EntryState *s = m_states(entry.id);
     if (!s || !s->hasValue() || s->validity == Validity::Unknown)
         return ValueText::noValue();
-    QString text = entry.type == ValueType::Bitfield && s->value.isOk()
-            ? bitsText(s->value, entry)
-            : ValueFormat::withUnit(s->value, entry).trimmed();
+    QString text = ValueFormat::withUnit(s->value, entry).trimmed();
     if (text.isEmpty())
         text = tr("(empty)");   // a text the device holds none of, not a missing value
     return s->validity == Validity::Stale ? tr("%1 (stale)").arg(text) : text;
@@ -186,7 +152,8 @@ QString CommissioningReport::stateText(const RegisterEntry &entry) const
         return ValueText::reason(ReadError::NotRead, 0, m_map);
     switch (s->validity) {
     case Validity::Current:
-        return s->value.isOk() ? tr("current") : ValueCodec::statusDescription(s->value.status, m_map);
+        // Said once above the table, not on every row: a current value has no remark.
+        return s->value.isOk() ? QString() : ValueCodec::statusDescription(s->value.status, m_map);
     case Validity::Stale:
         return tr("stale: not read in the last cycle");
     case Validity::Unknown:
@@ -228,6 +195,55 @@ QString CommissioningReport::pageFooter() const
     return tr("%1, address %2, %3").arg(m_map.shortName).arg(m_address).arg(dateTimeText(m_time, QLocale()));
 }
 
+QString CommissioningReport::identifiedModel(const RegisterMap &map, const StateLookup &states)
+{
+    // The family's type numbers ("709061" of "TYA 201 (type 709061)"), and the models
+    // that have none by their names.
+    static const QRegularExpression typeNumber(QStringLiteral("\\d{5,}"));
+    QStringList marks;
+    for (const QString &model : map.models) {
+        QRegularExpressionMatchIterator it = typeNumber.globalMatch(model);
+        if (!it.hasNext())
+            marks << QString(model).remove(QLatin1Char(' '));
+        while (it.hasNext())
+            marks << it.next().captured(0);
+    }
+    // An identity word names the model when its text (an enum's, or a set bit's label)
+    // carries one of them: the TYA's basic type "709061 (TYA 201 - single-phase unit)",
+    // the dTRON's device format "Type 703041/45 (48 mm x 48 mm)".
+    QStringList named;
+    for (const QString &id : map.identity) {
+        const RegisterEntry *e = map.entry(id);
+        const EntryState *s = states(id);
+        if (!e || !s || !s->hasValue() || s->validity == Validity::Unknown || !s->value.isOk())
+            continue;
+        QStringList texts;
+        if (e->type == ValueType::Enum) {
+            texts << translated(e->enumValues.value(int(s->value.raw)));
+        } else if (e->type == ValueType::Bitfield) {
+            for (const BitDefinition &b : e->bits) {
+                if (!b.reserved && b.width == 1 && (s->value.raw & b.mask()))
+                    texts << translated(b.label);
+            }
+        }
+        for (const QString &text : std::as_const(texts)) {
+            const QString plain = QString(text).remove(QLatin1Char(' '));
+            if (std::any_of(marks.cbegin(), marks.cend(), [&plain](const QString &m) { return plain.contains(m); }))
+                named << text;
+        }
+    }
+    return named.join(QStringLiteral(", "));
+}
+
+QString CommissioningReport::model() const
+{
+    const QString identified = identifiedModel(m_map, m_states);
+    if (!identified.isEmpty())
+        return identified;
+    return m_map.models.isEmpty() ? ValueText::noValue()
+                                  : tr("one of %1 (the device does not say which)").arg(m_map.models.join(QStringLiteral(", ")));
+}
+
 QString CommissioningReport::titleBlock() const
 {
     const QLocale locale;
@@ -242,8 +258,8 @@ QString CommissioningReport::titleBlock() const
             {tr("Site"), given(m_title.site), tr("Date"), dateTimeText(m_time, locale)},
             {tr("Cabinet"), given(m_title.cabinet), tr("Engineer"), given(m_title.engineer)},
             {tr("Device tag"), given(m_title.tag), tr("Address"), QString::number(m_address)},
-            {tr("Device"), m_map.name, tr("Line"), line},
-            {tr("Models"), m_map.models.join(QStringLiteral(", ")), tr("Software"), given(m_software)},
+            {tr("Device"), m_map.displayName(), tr("Line"), line},
+            {tr("Model"), model(), tr("Software"), given(m_software)},
     };
     QString h = QStringLiteral("<table class=\"title\" width=\"100%\" border=\"1\" cellspacing=\"0\" cellpadding=\"4\" "
                                "style=\"border-collapse:collapse;border-color:#999999\">");
@@ -336,7 +352,8 @@ QString CommissioningReport::liveValues() const
     QString h = heading(2, tr("Live values"));
     if (entries.isEmpty())
         return h + paragraph(tr("The family has no live values."));
-    h += paragraph(tr("As read at %1. A value that could not be read shows %2 and why.")
+    h += paragraph(tr("As read at %1; a value with nothing under State is current. A value that could not be read "
+                      "shows %2 and why.")
                            .arg(dateTimeText(m_time, QLocale()), ValueText::noValue()));
     h += configuredUnitsNote(entries);
     for (const auto &[group, members] : byGroup(entries)) {
@@ -404,6 +421,25 @@ QString CommissioningReport::auditValue(const RegisterEntry *entry, const QStrin
     }
     if (ok && entry->type == ValueType::Enum && entry->enumValues.contains(int(number)))
         return translated(entry->enumValues.value(int(number)));
+    if (entry->type == ValueType::Bitfield) {
+        // Bit changes as the log keeps them ("binary_output_control.output_k1=1") and
+        // words as the codec wrote them ("0x8002 (output_2)"): by the bits' labels.
+        QStringList changes;
+        for (const QString &part : text.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+            const BitDefinition *bit = entry->bitById(part.section(QLatin1Char('='), 0, 0).section(QLatin1Char('.'), -1));
+            const std::optional<bool> on = BitWrite::parseState(part.section(QLatin1Char('='), 1));
+            if (!bit || !on || !part.contains(QLatin1Char('='))) {
+                changes.clear();
+                break;
+            }
+            changes << (*on ? tr("%1 on") : tr("%1 off")).arg(translated(bit->label));
+        }
+        if (!changes.isEmpty())
+            return changes.join(QStringLiteral(", "));
+        const uint word = text.section(QLatin1Char(' '), 0, 0).toUInt(&ok, 0);
+        if (ok)
+            return ValueFormat::bits(word, *entry);
+    }
     return text;
 }
 

@@ -62,11 +62,16 @@ public:
     // it (word by word); nullopt without a default or without a value to compare.
     static std::optional<bool> differsFromDefault(const RegisterEntry &entry, const RegisterMap &map,
                                                   const EntryState *state);
+    // The text of the identity words that name the device's model, where they do (the
+    // TYA's basic type "709061 (TYA 201 - single-phase unit)"); empty where they do not
+    // or are not known.
+    static QString identifiedModel(const RegisterMap &map, const StateLookup &states);
     // The mark of a parameter that differs from its default.
     static QString differsMark() { return QStringLiteral("\u2260"); }
 
 private:
     QString titleBlock() const;
+    QString model() const;
     QString identity() const;
     QString parameters() const;
     QString liveValues() const;

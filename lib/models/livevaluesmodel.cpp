@@ -4,6 +4,7 @@
 #include "protocol/valueformat.h"
 
 #include <QCoreApplication>
+#include <QLocale>
 
 #include <algorithm>
 
@@ -14,11 +15,29 @@ LiveValuesModel::LiveValuesModel(const DeviceSource *devices, DeviceId device, Q
 {
     if (m_map) {
         for (const RegisterEntry &e : m_map->entries()) {
-            if (e.isReadable() && e.alias.isEmpty() && !e.reserved) {
-                m_rowOf.insert(e.id, int(m_rows.size()));
+            if (e.isReadable() && e.alias.isEmpty() && !e.reserved)
                 m_rows << &e;
-            }
         }
+        // The measured values first: they are what the tab is opened for (the identity
+        // is above the table). A section counts as measured when its read-only values
+        // outside the identity outnumber its identity words (the IPC 300's "5.1.1 ID"
+        // has two such texts among nine identity words). Then the other sections; each
+        // part in the manual's order of sections, the map's order within a section.
+        QHash<QString, int> measured;
+        for (const RegisterEntry *e : std::as_const(m_rows)) {
+            if (m_map->identity.contains(e->id))
+                --measured[e->group];
+            else if (!e->isWritable())
+                ++measured[e->group];
+        }
+        auto rank = [&measured](const RegisterEntry *e) { return measured.value(e->group) > 0 ? 0 : 1; };
+        std::stable_sort(m_rows.begin(), m_rows.end(), [&rank](const RegisterEntry *a, const RegisterEntry *b) {
+            if (rank(a) != rank(b))
+                return rank(a) < rank(b);
+            return sectionBefore(a->group, b->group);
+        });
+        for (int row = 0; row < m_rows.size(); ++row)
+            m_rowOf.insert(m_rows.at(row)->id, row);
     }
     connect(m_devices, &DeviceSource::entriesUpdated, this, &LiveValuesModel::onEntriesUpdated);
     // Ages move on by themselves: one refresh a second. Validity changes come from the
@@ -142,7 +161,8 @@ QVariant LiveValuesModel::data(const QModelIndex &index, int role) const
     case StatusColumn:
         return ValueText::status(state, *m_map, m_devices->clockMs());
     case AgeColumn:
-        return age < 0 ? QString() : tr("%1 s").arg(QString::number(age / 1000.0, 'f', 1));
+        // In the language's way, as every other number: "2,5 s" in German.
+        return age < 0 ? QString() : tr("%1 s").arg(QLocale().toString(age / 1000.0, 'f', 1));
     default:
         return {};
     }

@@ -19,25 +19,6 @@ QString translated(const QString &text)
     return QCoreApplication::translate("jumo::maps", text.toUtf8().constData());
 }
 
-// "5.3 Controller parameters" before "5.4 Configuration" before "5.10 ...": groups in
-// the manual's order, whatever the order of their registers.
-bool sectionBefore(const QString &a, const QString &b)
-{
-    const QStringList na = a.section(QLatin1Char(' '), 0, 0).split(QLatin1Char('.'));
-    const QStringList nb = b.section(QLatin1Char(' '), 0, 0).split(QLatin1Char('.'));
-    for (int i = 0; i < std::min(na.size(), nb.size()); ++i) {
-        bool okA = false;
-        bool okB = false;
-        const int x = na[i].toInt(&okA);
-        const int y = nb[i].toInt(&okB);
-        if (!okA || !okB)
-            break;
-        if (x != y)
-            return x < y;
-    }
-    return a < b;
-}
-
 // What the type can hold at all, for whole-number types.
 std::optional<std::pair<double, double>> typeBounds(ValueType type)
 {
@@ -186,7 +167,7 @@ QString ParameterEditModel::displayOf(const RegisterEntry &e, const QString &exa
     // Every digit that goes out: 12.34 stays 12.34 where the device shows one decimal.
     if (isNumeric(e.type) && v.isOk())
         return ValueFormat::limit(v.value.toDouble(), e);
-    return v.display;
+    return ValueFormat::value(v, e);   // bit fields by their labels
 }
 
 QString ParameterEditModel::newValueText(const QString &id) const
@@ -203,10 +184,21 @@ QString ParameterEditModel::deviceValueText(const QString &id) const
     if (!e->isReadable())
         return tr("write-only");
     const EntryState *state = m_bus->entryState(m_device, id);
+    // The value just read back is the device's value now, not the poll's of a moment ago.
+    if (const DecodedValue *readBack = newerReadBack(id, state))
+        return ValueFormat::value(*readBack, *e);
     // A value that is not current is never shown as if it were.
     if (ValueText::validity(state) == Validity::Stale)
         return tr("%1 (stale)").arg(ValueText::number(state, *e));
     return ValueText::number(state, *e);
+}
+
+const DecodedValue *ParameterEditModel::newerReadBack(const QString &id, const EntryState *state) const
+{
+    const auto it = m_results.constFind(id);
+    if (it == m_results.cend() || it->readBackMs < 0 || (state && state->hasValue() && state->goodMs > it->readBackMs))
+        return nullptr;
+    return &it->readBackValue;
 }
 
 QString ParameterEditModel::editText(const QString &id) const
@@ -268,7 +260,7 @@ QVariant ParameterEditModel::data(const QModelIndex &index, int role) const
     case EntryIdRole:
         return e.id;
     case ValidityRole:
-        return int(ValueText::validity(state));
+        return int(newerReadBack(e.id, state) ? Validity::Current : ValueText::validity(state));
     case ChangedRole:
         return changed;
     case WriteStateRole:
@@ -574,7 +566,7 @@ void ParameterEditModel::setLocked(bool locked)
 void ParameterEditModel::setWriting(const QStringList &ids)
 {
     for (const QString &id : ids) {
-        m_results.insert(id, {WriteCommand::State::Pending, QString(), QString()});
+        m_results.insert(id, {WriteCommand::State::Pending, QString(), QString(), DecodedValue{}, -1});
         emitRow(id);
     }
 }
@@ -585,7 +577,8 @@ void ParameterEditModel::setOutcome(const QString &id, const WriteOutcome &outco
         return;
     const WriteCommand::State state = WriteCommand::stateOf(outcome);
     const bool readBack = outcome.result == WriteOutcome::Result::Confirmed && outcome.readBack.isOk();
-    m_results.insert(id, {state, outcome.message, readBack ? ValueFormat::withUnit(outcome.readBack, *entry(id)) : QString()});
+    m_results.insert(id, {state, outcome.message, readBack ? ValueFormat::withUnit(outcome.readBack, *entry(id)) : QString(),
+                          readBack ? outcome.readBack : DecodedValue{}, readBack ? m_bus->clockMs() : -1});
     const bool confirmed = state == WriteCommand::State::Confirmed && m_changes.remove(id) > 0;
     emitRow(id);
     if (confirmed) {
@@ -598,7 +591,7 @@ void ParameterEditModel::setNotWritten(const QString &id, const QString &reason)
 {
     if (!entry(id))
         return;
-    m_results.insert(id, {WriteCommand::State::Idle, reason, QString()});
+    m_results.insert(id, {WriteCommand::State::Idle, reason, QString(), DecodedValue{}, -1});
     emitRow(id);
 }
 

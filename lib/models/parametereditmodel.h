@@ -102,7 +102,13 @@ private:
         WriteCommand::State state = WriteCommand::State::Idle;
         QString message;
         QString readBack;   // the value read back that confirmed the write, as shown
+        // The read-back itself, and when it came (the bus's clock): the device value
+        // until a poll reads one newer.
+        DecodedValue readBackValue;
+        qint64 readBackMs = -1;
     };
+    // The confirmed read-back of the entry when it is newer than what the polls have.
+    const DecodedValue *newerReadBack(const QString &id, const EntryState *state) const;
 
     void onEntriesUpdated(DeviceId device, const QStringList &ids);
     // The entry of a parameter that may be edited now; else null, with the reason.

@@ -1,8 +1,10 @@
 #include "protocol/registermap.h"
 
 #include <QCoreApplication>
+#include <QRegularExpression>
 
 #include <algorithm>
+#include <limits>
 #include <array>
 #include <utility>
 
@@ -66,6 +68,23 @@ std::optional<double> leadingNumber(const QString &text)
     bool ok = false;
     const double value = text.left(end).toDouble(&ok);
     return ok ? std::optional<double>(value) : std::nullopt;
+}
+
+QList<int> sectionNumber(const QString &group)
+{
+    static const QRegularExpression number(QStringLiteral("^(\\d+(?:\\.\\d+)*)(?:\\s|$)"));
+    const QRegularExpressionMatch m = number.match(group);
+    if (!m.hasMatch())
+        return {std::numeric_limits<int>::max()};
+    QList<int> parts;
+    for (const QString &p : m.captured(1).split(QLatin1Char('.')))
+        parts << p.toInt();
+    return parts;
+}
+
+bool sectionBefore(const QString &a, const QString &b)
+{
+    return sectionNumber(a) < sectionNumber(b);
 }
 
 QString formatAddress(quint16 address)
@@ -187,6 +206,11 @@ const RegisterEntry *RegisterMap::entryAt(quint16 address) const
         return address <= it->lastAddress() ? &*it : nullptr;
     }
     return nullptr;
+}
+
+QString RegisterMap::displayName() const
+{
+    return QCoreApplication::translate("jumo::maps", name.toUtf8().constData());
 }
 
 QString RegisterMap::exceptionMeaning(int code) const

@@ -38,6 +38,11 @@ QString wordOrderName(WordOrder order);
 // The number an enum text starts with ("100 A" -> 100), for nominal values kept as enums.
 std::optional<double> leadingNumber(const QString &text);
 std::optional<WordOrder> wordOrderFromName(const QString &name);
+// "5.1.2 Operating level parameters" -> {5, 1, 2}: sections compare in the manual's order
+// (5.2 before 5.10), whatever order their addresses put them in; a section without a
+// number sorts after every numbered one.
+QList<int> sectionNumber(const QString &group);
+bool sectionBefore(const QString &a, const QString &b);
 
 // How many digits a number is shown with: a fixed number of decimals (setpoints,
 // percentages, temperatures), or significant digits (measured values over decades).
@@ -257,6 +262,9 @@ public:
     QStringList identity;   // entries that identify the device (name, version, serial...)
     // Units set on the device: id to what decides the unit, for the entries that name it.
     QMap<QString, QString> configuredUnits;
+
+    // The family's name in the language shown ("... universal PID controller" is English).
+    QString displayName() const;
 
     const QList<RegisterEntry> &entries() const { return m_entries; }
     void setEntries(QList<RegisterEntry> entries);

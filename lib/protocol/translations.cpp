@@ -5,6 +5,8 @@
 #include <QPointer>
 #include <QTranslator>
 
+#include <iterator>
+
 namespace jumo {
 
 namespace {
@@ -17,6 +19,27 @@ QList<QPointer<QTranslator>> &installed()
 }
 
 } // namespace
+
+QList<QtMessage> qtMessages()
+{
+    // What QModbusRtuSerialClient says when its serial port fails (the words are Qt's:
+    // a translation is found by them), of a request that got no answer and of one cut
+    // short by a closing port.
+    static const QtMessage messages[] = {
+            {"QModbusDevice", QT_TRANSLATE_NOOP("QModbusDevice", "Referenced serial device does not exist.")},
+            {"QModbusDevice", QT_TRANSLATE_NOOP("QModbusDevice", "Cannot open serial device due to permissions.")},
+            {"QModbusDevice", QT_TRANSLATE_NOOP("QModbusDevice", "Cannot open serial device.")},
+            {"QModbusDevice", QT_TRANSLATE_NOOP("QModbusDevice", "Write error.")},
+            {"QModbusDevice", QT_TRANSLATE_NOOP("QModbusDevice", "Read error.")},
+            {"QModbusDevice", QT_TRANSLATE_NOOP("QModbusDevice", "Resource error.")},
+            {"QModbusDevice", QT_TRANSLATE_NOOP("QModbusDevice", "Device operation is not supported error.")},
+            {"QModbusDevice", QT_TRANSLATE_NOOP("QModbusDevice", "Timeout error.")},
+            {"QModbusDevice", QT_TRANSLATE_NOOP("QModbusDevice", "Unknown error.")},
+            {"QModbusClient", QT_TRANSLATE_NOOP("QModbusClient", "Request timeout.")},
+            {"QModbusClient", QT_TRANSLATE_NOOP("QModbusClient", "Reply aborted due to connection closure.")},
+    };
+    return QList<QtMessage>(std::begin(messages), std::end(messages));
+}
 
 bool installTranslations(QCoreApplication &app, const QLocale &locale)
 {

@@ -17,30 +17,69 @@ QLocale withoutGroups(QLocale locale)
 
 } // namespace
 
+int ValueFormat::decimalsFor(double value, DisplayPrecision precision)
+{
+    if (precision.kind == DisplayPrecision::Kind::Decimals)
+        return precision.digits;
+    // Significant digits for readings over decades (0.512 A, 19.99 A, 1838 W), but never
+    // more decimals than zero is shown with (0.000): below that a reading is noise around
+    // zero, not a value with four digits ("-0.00007528 W").
+    const int most = std::max(0, precision.digits - 1);
+    if (value == 0 || !std::isfinite(value))
+        return most;
+    const int magnitude = int(std::floor(std::log10(std::fabs(value))));
+    const int significant = precision.digits - 1 - magnitude;
+    int decimals = std::clamp(significant, 0, most);
+    // 9.9996 to four digits is 10.00, not 10.000: rounding may add a digit in front
+    // (where the digits are counted, not where zero's decimals cap them).
+    const double scale = std::pow(10.0, decimals);
+    if (decimals > 0 && decimals == significant
+        && std::fabs(std::round(value * scale) / scale) >= std::pow(10.0, magnitude + 1))
+        --decimals;
+    return decimals;
+}
+
+double ValueFormat::rounded(double value, DisplayPrecision precision)
+{
+    if (!std::isfinite(value))
+        return value;
+    const double scale = std::pow(10.0, decimalsFor(value, precision));
+    const double r = std::round(value * scale) / scale;
+    // The precision first, then the sign: what rounds to zero is zero, never -0.
+    return r == 0 ? 0.0 : r;
+}
+
 QString ValueFormat::number(double value, DisplayPrecision precision, const QLocale &locale)
 {
     if (!std::isfinite(value))
         return QString::number(value);
-    int decimals = precision.digits;
-    if (precision.kind == DisplayPrecision::Kind::Significant && value != 0) {
-        const int magnitude = int(std::floor(std::log10(std::fabs(value))));
-        decimals = std::clamp(precision.digits - 1 - magnitude, 0, 9);
-        // 9.9996 to four digits is 10.00, not 10.000: rounding may add a digit in front.
-        const double scale = std::pow(10.0, decimals);
-        if (decimals > 0 && std::fabs(std::round(value * scale) / scale) >= std::pow(10.0, magnitude + 1))
-            --decimals;
-    } else if (precision.kind == DisplayPrecision::Kind::Significant) {
-        decimals = std::max(0, precision.digits - 1);
-    }
+    const int decimals = decimalsFor(value, precision);
     // A value that rounds to zero shows no sign: "-0.0" is no reading anyone writes down.
-    const double scale = std::pow(10.0, decimals);
-    if (std::round(std::fabs(value) * scale) == 0)
-        value = 0;
-    return withoutGroups(locale).toString(value, 'f', decimals);
+    return withoutGroups(locale).toString(rounded(value, precision), 'f', decimals);
+}
+
+QString ValueFormat::bits(quint32 word, const RegisterEntry &entry)
+{
+    QStringList parts;
+    for (const BitDefinition &b : entry.bits) {
+        if (b.reserved)
+            continue;
+        const quint32 field = (word & b.mask()) >> b.bit;
+        const QString label = QCoreApplication::translate("jumo::maps", b.label.toUtf8().constData());
+        if (b.width > 1)
+            parts << QStringLiteral("%1: %2").arg(label).arg(field);
+        else if (field)
+            parts << label;
+    }
+    const QString hex = QStringLiteral("0x%1").arg(QString::number(word & 0xFFFF, 16).toUpper().rightJustified(4, QLatin1Char('0')));
+    return parts.isEmpty() ? tr("%1 (none set)").arg(hex) : QStringLiteral("%1 (%2)").arg(hex, parts.join(QStringLiteral(", ")));
 }
 
 QString ValueFormat::value(const DecodedValue &v, const RegisterEntry &entry, const QLocale &locale)
 {
+    // The codec names set bits by their ids, for scripts; people read the manual's words.
+    if (v.isOk() && entry.type == ValueType::Bitfield)
+        return bits(v.raw, entry);
     if (!v.isOk() || !isNumeric(entry.type))
         return v.display;
     if (entry.type == ValueType::Float)

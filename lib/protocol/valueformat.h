@@ -19,9 +19,17 @@ class ValueFormat
 
 public:
     static QString number(double value, DisplayPrecision precision, const QLocale &locale = QLocale());
-    // A reading without its unit: numbers by the entry's precision and the locale;
-    // enums, texts, bit fields and error values as the codec words them.
+    // The value as number() shows it, as a number: rounded to the precision, so what
+    // reads as zero is zero (a bar drawn from it agrees with the text beside it).
+    static double rounded(double value, DisplayPrecision precision);
+    // How many decimals number() writes this value with.
+    static int decimalsFor(double value, DisplayPrecision precision);
+    // A reading without its unit: numbers by the entry's precision and the locale; bit
+    // fields by their bits' labels; enums, texts and error values as the codec words them.
     static QString value(const DecodedValue &v, const RegisterEntry &entry, const QLocale &locale = QLocale());
+    // A bit field for people: "0x0005 (Output 1, Output 3)", "0x0A00 (Slot 1: 10, Slot 2: 0)",
+    // "0x0000 (none set)"; the bits by the manual's labels, reserved ones left out.
+    static QString bits(quint32 word, const RegisterEntry &entry);
     // The same with the entry's unit where it has one.
     static QString withUnit(const DecodedValue &v, const RegisterEntry &entry, const QLocale &locale = QLocale());
     // "12.5 %", "37.5°": a number and a unit, spaced as the unit wants.

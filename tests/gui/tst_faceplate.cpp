@@ -8,6 +8,9 @@
 #include "devicetile.h"
 #include "mainwindow.h"
 #include "overviewpage.h"
+#include "bus/mirroredline.h"
+#include "models/alarmbitsmodel.h"
+#include "models/livevaluesmodel.h"
 #include "sim/simulateddevice.h"
 #include "testpeers.h"
 
@@ -21,6 +24,8 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QTest>
+
+#include <limits>
 
 using namespace jumo;
 using namespace jumo::test;
@@ -38,6 +43,9 @@ private slots:
     void tabReachesEveryFaceplateInView();
     void columnsAndDensitySettle_data();
     void columnsAndDensitySettle();
+    void noiseAroundZeroIsZero();
+    void errorValueRaisesTheState();
+    void noEmptyBarsWhileNotHeard();
 
 private:
     // A window on the line with the IPC 300 at address 1 and the dTRON 300 at 4, on the overview.
@@ -293,6 +301,118 @@ void tst_Faceplate::columnsAndDensitySettle()
             }
         }
     }
+}
+
+namespace {
+
+// One IPC 300 faceplate over a mirrored line whose values the test sets: what a faceplate
+// makes of exactly these values, with no poll in between.
+struct MirroredFaceplate
+{
+    MirroredFaceplate()
+        : map(families().family("ipc300")), line(QStringLiteral("cabinet-a")), id(line.addDevice(map, 1)),
+          values(&line, id), alarms(&line, id), tile(id, *map, 1, &values, &alarms)
+    {
+        DeviceCondition online;
+        online.state = DeviceCondition::State::Online;
+        line.setCondition(id, online);
+        tile.setCondition(online);
+        tile.show();
+    }
+    EntryState state(const QString &entryId, const QList<quint16> &words) const
+    {
+        EntryState s;
+        s.words = words;
+        s.value = ValueCodec::decode(*map->entry(entryId), *map, words);
+        s.validity = Validity::Current;
+        s.goodMs = s.updatedMs = line.clockMs();
+        return s;
+    }
+    EntryState number(const QString &entryId, float value) const
+    {
+        return state(entryId, ValueCodec::encodeFloat(value, map->protocol.floatWordOrder));
+    }
+    // The scales of every bar, the values, and every alarm word clear.
+    void setAll(QHash<QString, EntryState> states)
+    {
+        for (const RegisterEntry &e : map->entries()) {
+            if (e.type == ValueType::Bitfield && e.isReadable() && !states.contains(e.id))
+                states.insert(e.id, state(e.id, {0}));
+        }
+        const QHash<QString, EntryState> defaults{{"input_setpoint", number("input_setpoint", 0)},
+                                                  {"load_voltage", number("load_voltage", 0.02f)},
+                                                  {"load_current", number("load_current", 0.001f)},
+                                                  {"power", number("power", 0)},
+                                                  {"load_voltage_limit", number("load_voltage_limit", 230)},
+                                                  {"power_limit", number("power_limit", 6000)},
+                                                  {"nominal_current", state("nominal_current", {1})}};
+        for (auto it = defaults.cbegin(); it != defaults.cend(); ++it) {
+            if (!states.contains(it.key()))
+                states.insert(it.key(), it.value());
+        }
+        line.setEntries(id, states);
+    }
+
+    std::shared_ptr<const RegisterMap> map;
+    MirroredLine line;
+    DeviceId id;
+    LiveValuesModel values;
+    AlarmBitsModel alarms;
+    DeviceTile tile;
+};
+
+} // namespace
+
+// 26.8: the precision first, then the sign: noise around zero reads 0.000 W and draws no
+// arrow below the scale, as the text beside the bar says.
+void tst_Faceplate::noiseAroundZeroIsZero()
+{
+    MirroredFaceplate face;
+    face.setAll({{"power", face.number("power", -0.00007528f)}});
+    QTRY_VERIFY_WITH_TIMEOUT(face.tile.valuesText().contains("Power: 0.000 W"), 5000);
+    QTRY_COMPARE(face.tile.barsFilled(), 4);
+    QVERIFY2(!face.tile.toolTip().contains("beyond the scale"), qPrintable(face.tile.toolTip()));
+    // A value that is below its scale at the precision shown still says so.
+    face.setAll({{"power", face.number("power", -2.5f)}});
+    QTRY_VERIFY_WITH_TIMEOUT(face.tile.valuesText().contains("Power: -2.500 W"), 5000);
+    QVERIFY2(face.tile.toolTip().contains("beyond the scale"), qPrintable(face.tile.toolTip()));
+}
+
+// 26.17: an error value (the devices' +Inf: overrange) is no reading: the faceplate's state
+// rises above Normal and names it.
+void tst_Faceplate::errorValueRaisesTheState()
+{
+    MirroredFaceplate face;
+    face.setAll({});
+    QTRY_COMPARE_WITH_TIMEOUT(face.tile.summary(), DeviceTile::Summary::Normal, 5000);
+    face.setAll({{"load_current", face.state("load_current", ValueCodec::encodeFloat(std::numeric_limits<float>::infinity(),
+                                                                                     face.map->protocol.floatWordOrder))}});
+    QTRY_COMPARE_WITH_TIMEOUT(face.tile.summary(), DeviceTile::Summary::Warning, 5000);
+    QVERIFY2(face.tile.alarmNames().contains("Current: "), qPrintable(face.tile.alarmNames()));
+    QCOMPARE(face.tile.stateRole(), Theme::Role::TileWarning);
+    face.setAll({});
+    QTRY_COMPARE_WITH_TIMEOUT(face.tile.summary(), DeviceTile::Summary::Normal, 5000);
+    QVERIFY(face.tile.alarmNames().isEmpty());
+}
+
+// 26.16: a faceplate of a device that is not heard (line lost, not answering) has no bar
+// tracks at all, not even the fixed 0..100 % one of the setpoint.
+void tst_Faceplate::noEmptyBarsWhileNotHeard()
+{
+    MirroredFaceplate face;
+    face.setAll({});
+    QTRY_COMPARE_WITH_TIMEOUT(face.tile.barsDrawn(), 4, 5000);
+    for (const auto state : {DeviceCondition::State::LineLost, DeviceCondition::State::Offline}) {
+        DeviceCondition condition;
+        condition.state = state;
+        condition.since = QDateTime::currentDateTime();
+        face.tile.setCondition(condition);
+        QCOMPARE(face.tile.barsDrawn(), 0);
+    }
+    DeviceCondition online;
+    online.state = DeviceCondition::State::Online;
+    face.tile.setCondition(online);
+    QCOMPARE(face.tile.barsDrawn(), 4);
 }
 
 QTEST_MAIN(tst_Faceplate)

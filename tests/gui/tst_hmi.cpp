@@ -70,6 +70,9 @@
 #include <QTableView>
 #include <QTest>
 
+#include <functional>
+#include <optional>
+
 using namespace jumo;
 using namespace jumo::test;
 
@@ -93,6 +96,40 @@ void clickAndConfirm(QPushButton *button)
     QTest::mouseClick(button, Qt::LeftButton);
     answer.stop();
     QCOMPARE(answered, 1);
+}
+
+// What a write's confirmation asked, and whether No was its default.
+struct Question
+{
+    QString text;
+    bool noIsDefault = false;
+    int asked = 0;
+};
+
+// Runs the action and answers the question it opens: with the button given, or with
+// Enter (whatever the default is) when none is.
+Question answerQuestion(const std::function<void()> &action, std::optional<QMessageBox::StandardButton> answer)
+{
+    Question q;
+    QTimer timer;
+    QObject::connect(&timer, &QTimer::timeout, [&q, answer] {
+        for (QWidget *w : QApplication::topLevelWidgets()) {
+            auto *box = qobject_cast<QMessageBox *>(w);
+            if (!box || !box->isVisible())
+                continue;
+            ++q.asked;
+            q.text = box->text();
+            q.noIsDefault = box->defaultButton() && box->defaultButton() == box->button(QMessageBox::No);
+            if (answer)
+                box->button(*answer)->click();
+            else
+                QTest::keyClick(box->focusWidget() ? box->focusWidget() : box, Qt::Key_Return);
+        }
+    });
+    timer.start(20);
+    action();
+    timer.stop();
+    return q;
 }
 
 // Presses Tab in the window until the widget has the focus; false after a round.
@@ -231,10 +268,16 @@ private slots:
     void parameterEditorClosedMidWriteSendsNoMore();
     void commissioningReportFromTheMenu();
     void demoKeepsItsOwnLogs();
+    void confirmationsNameTheDeviceAndDefaultToNo();
+    void statusBarSaysWhatAnExceptionMeans();
+    void ramSetpointFirstAndEepromAsksOnEnter();
 
 private:
     // A window connected to the line with the IPC 300 at address 1 on its page.
     std::unique_ptr<MainWindow> connectedWindow(bool readOnly, const QString &logFolder = QString());
+    // The Quantrol at address 3 added to the window, its Controls tab shown, once its
+    // identity is confirmed; null when it is not.
+    DevicePage *quantrolControls(MainWindow &window);
     // The dTRON 300 at address 4 added to the window, its Parameters tab shown, once its
     // identity is confirmed and its parameters are read.
     ParameterEditor *dtronEditor(MainWindow &window);
@@ -610,8 +653,14 @@ void tst_Hmi::pulledLineShowsEverywhere()
         QCOMPARE(tile->summary(), DeviceTile::Summary::LineLost);
         QCOMPARE(tile->summaryText(), QString("Line lost"));
         QCOMPARE(tile->modeText(), QString("unknown"));
+        QCOMPARE(tile->barsDrawn(), 0);   // 26.16: no empty bar tracks
     }
     qInfo("line pulled: both tiles show it after %lld ms", pulled.elapsed());
+    // 26.16: the status bar says the line is lost, never "no errors" while nothing is read.
+    auto *errorStatus = window->findChild<ElidedLabel *>("errorStatus");
+    QTRY_VERIFY_WITH_TIMEOUT(errorStatus->fullText().startsWith("no values read: the line is lost"), 10000);
+    QTest::qWait(1500);
+    QVERIFY2(errorStatus->fullText().startsWith("no values read: the line is lost"), qPrintable(errorStatus->fullText()));
     for (const auto &[family, address] : devices) {
         DeviceTile *tile = window->deviceTile(family, address);
         QCOMPARE(tile->alarmText(), QString("Alarms unknown"));
@@ -1850,7 +1899,8 @@ void tst_Hmi::commissioningReportFromTheMenu()
     QVERIFY(file.open(QIODevice::ReadOnly));
     const QString text = QString::fromUtf8(file.readAll());
     QVERIFY(text.contains("Plant &lt;North&gt; &amp; Co"));
-    QVERIFY(text.contains("<td>Load voltage</td><td>") && text.contains(" V</td><td>current</td>"));
+    // A current value has no remark of its own (26.14): the report says once what that means.
+    QVERIFY(text.contains("<td>Load voltage</td><td>") && text.contains(" V</td><td>&nbsp;</td>"));
     QVERIFY(text.contains("19200 baud, 8N1"));
     // A folder that does not exist: said, nothing written.
     QVERIFY(!window->writeReport("ipc300", 1, m_dir.filePath("missing/report.pdf"), again, &error));
@@ -1923,6 +1973,119 @@ void tst_Hmi::demoKeepsItsOwnLogs()
     // The plant's logs: not one record of the demo.
     for (const char *name : {"write-audit.jsonl", "alarm-journal.jsonl"})
         QVERIFY2(!QFileInfo::exists(logs.filePath(name)), name);
+}
+
+DevicePage *tst_Hmi::quantrolControls(MainWindow &window)
+{
+    if (!window.addDevice(families().family("quantrol"), 3))
+        return nullptr;
+    window.showDevice("quantrol", 3);
+    DevicePage *page = window.devicePage("quantrol", 3);
+    QElapsedTimer waited;
+    waited.start();
+    while (!window.bus()->identities().isTrusted(page->device()) && waited.elapsed() < 20000)
+        QTest::qWait(20);
+    if (!window.bus()->identities().isTrusted(page->device()))
+        return nullptr;
+    page->tabs()->setCurrentWidget(page->controls());
+    return page;
+}
+
+// 26.10: a question before a write names the device (family, address, line) and says
+// what it does in the manual's words ("switch "Output K1" on", not "on on the device");
+// Enter alone answers No; the outcome names bits by their labels, never their ids.
+void tst_Hmi::confirmationsNameTheDeviceAndDefaultToNo()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    DevicePage *page = quantrolControls(*window);
+    QVERIFY(page);
+    ControlRow *row = page->controls()->row("binary_output_control");
+    QVERIFY(row && row->switches() && row->switches()->switchesSingleBits());
+    BitSwitches *bits = row->switches();
+    QTRY_VERIFY_WITH_TIMEOUT(bits->indicator("output_k1")->state() != LedIndicator::State::Unknown
+                                     && bits->button("output_k1", true)->isEnabled(),
+                             20000);
+    const int frames = m_sim.writeFrames();
+    Question asked = answerQuestion([&] { QTest::mouseClick(bits->button("output_k1", true), Qt::LeftButton); }, std::nullopt);
+    QCOMPARE(asked.asked, 1);
+    QVERIFY(asked.noIsDefault);
+    QVERIFY2(asked.text.contains(QStringLiteral("switch \"Output K1\" on?")), qPrintable(asked.text));
+    QVERIFY2(asked.text.contains(QStringLiteral("Device: Quantrol at address 3 on line ")), qPrintable(asked.text));
+    QVERIFY2(!asked.text.contains(QStringLiteral("on on")), qPrintable(asked.text));
+    QTest::qWait(300);
+    QCOMPARE(m_sim.writeFrames(), frames);   // Enter said No: nothing went out
+    QVERIFY(row->stateText().isEmpty());
+
+    asked = answerQuestion([&] { QTest::mouseClick(bits->button("output_k1", true), Qt::LeftButton); }, QMessageBox::Yes);
+    QCOMPARE(asked.asked, 1);
+    QTRY_VERIFY_WITH_TIMEOUT(row->stateText().startsWith("Confirmed"), 20000);
+    QVERIFY2(row->stateText().contains("Output K1 on") && !row->stateText().contains("output_k"), qPrintable(row->stateText()));
+    QTRY_VERIFY_WITH_TIMEOUT(bits->indicator("output_k1")->isOn() && bits->button("output_k1", false)->isEnabled(), 20000);
+    clickAndConfirm(bits->button("output_k1", false));
+    QTRY_VERIFY_WITH_TIMEOUT(row->stateText().startsWith("Confirmed"), 20000);
+    QVERIFY2(row->stateText().contains("Output K1 off"), qPrintable(row->stateText()));
+}
+
+// 26.16: an exception in the status bar comes with what it means to the family, as the
+// map has it, not as a bare "exception 4".
+void tst_Hmi::statusBarSaysWhatAnExceptionMeans()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    auto *errorStatus = window->findChild<ElidedLabel *>("errorStatus");
+    QVERIFY(m_sim.setFault(1, "exception", 1, 4));
+    QTRY_VERIFY_WITH_TIMEOUT(errorStatus->fullText().contains("exception 4, Error when processing the instruction"), 20000);
+    QVERIFY2(errorStatus->fullText().contains("address 1: "), qPrintable(errorStatus->fullText()));
+    m_sim.setFault(1, "none", -1, 0);
+}
+
+// 26.11: the Quantrol's RAM setpoint, which wears nothing, is the first of its setpoint
+// fields; a setpoint kept in EEPROM asks before it is written, from Enter as from Write.
+void tst_Hmi::ramSetpointFirstAndEepromAsksOnEnter()
+{
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    DevicePage *page = quantrolControls(*window);
+    QVERIFY(page);
+    QStringList order;
+    for (ControlRow *r : page->controls()->findChildren<ControlRow *>())
+        order << r->objectName().mid(QStringLiteral("control_").size());
+    const QStringList setpoints{"ram_controller_setpoint", "controller_setpoint", "setpoint_sp1", "setpoint_sp2"};
+    QCOMPARE(order.mid(0, 4), setpoints);
+
+    ControlRow *row = page->controls()->row("setpoint_sp1");
+    auto *edit = row->findChild<QLineEdit *>("input_setpoint_sp1");
+    QVERIFY(edit);
+    SimulatedDevice *device = m_sim.line().device(3);
+    const double before = device->number("setpoint_sp1");
+    const int frames = m_sim.writeFrames();
+    edit->setText("25");
+    edit->setFocus();
+    Question asked = answerQuestion([&] { QTest::keyClick(edit, Qt::Key_Return); }, QMessageBox::No);
+    QCOMPARE(asked.asked, 1);
+    QVERIFY2(asked.text.contains("EEPROM") && asked.text.contains("Device: Quantrol at address 3"), qPrintable(asked.text));
+    QVERIFY(asked.noIsDefault);
+    QTest::qWait(300);
+    QCOMPARE(m_sim.writeFrames(), frames);
+    QCOMPARE(device->number("setpoint_sp1"), before);
+    // The Write button asks the same.
+    asked = answerQuestion([&] { QTest::mouseClick(row->findChild<QPushButton *>("write_setpoint_sp1"), Qt::LeftButton); },
+                           QMessageBox::No);
+    QCOMPARE(asked.asked, 1);
+    QCOMPARE(m_sim.writeFrames(), frames);
+    asked = answerQuestion([&] { QTest::keyClick(edit, Qt::Key_Return); }, QMessageBox::Yes);
+    QCOMPARE(asked.asked, 1);
+    QTRY_VERIFY_WITH_TIMEOUT(row->stateText().startsWith("Confirmed"), 20000);
+    QCOMPARE(device->number("setpoint_sp1"), 25.0);
+    // The RAM setpoint asks too (it changes what the controller drives), but says nothing
+    // of wear.
+    ControlRow *ram = page->controls()->row("ram_controller_setpoint");
+    ram->setInputValue("30");
+    asked = answerQuestion([&] { QTest::mouseClick(ram->findChild<QPushButton *>("write_ram_controller_setpoint"), Qt::LeftButton); },
+                           QMessageBox::No);
+    QCOMPARE(asked.asked, 1);
+    QVERIFY2(!asked.text.contains("EEPROM"), qPrintable(asked.text));
 }
 
 QTEST_MAIN(tst_Hmi)

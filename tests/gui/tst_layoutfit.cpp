@@ -340,6 +340,24 @@ bool mentions(const QList<Cut> &cuts, const QString &name)
     return std::any_of(cuts.cbegin(), cuts.cend(), [&](const Cut &c) { return c.where.contains(name); });
 }
 
+// Faceplates side by side that differ in height (the rows of a row: a power unit's and a
+// programmer's), as "name: height, name: height"; empty when every row is even.
+QString unevenRows(const QList<DeviceTile *> &tiles)
+{
+    QMap<int, QList<DeviceTile *>> rows;
+    for (DeviceTile *tile : tiles)
+        rows[tile->mapToGlobal(QPoint(0, 0)).y()] << tile;
+    QStringList uneven;
+    for (const QList<DeviceTile *> &row : std::as_const(rows)) {
+        for (DeviceTile *tile : row) {
+            if (tile->height() != row.first()->height())
+                uneven << QStringLiteral("%1: %2, %3: %4").arg(row.first()->objectName()).arg(row.first()->height())
+                                  .arg(tile->objectName()).arg(tile->height());
+        }
+    }
+    return uneven.join(QStringLiteral("; "));
+}
+
 // Lets posted layout requests and resizes settle.
 void settle()
 {
@@ -362,8 +380,14 @@ private slots:
     void everyPageFits_data();
     void everyPageFits();
     void thirtyOneFaceplatesFitAFullHdScreen();
+    void faceplatesGrowOnALargeScreen();
 
 private:
+    // A window of a full line (31 devices of the four families, none connected) at this
+    // size, on its overview, laid out.
+    std::unique_ptr<MainWindow> fullLine(const QString &name, QSize size);
+    static QStringList fullLineOrder() { return {"ipc300", "tya200", "quantrol", "dtron300"}; }
+
     QTemporaryDir m_dir;
     TestLine m_line;
     SimulatorPeer m_sim;
@@ -574,28 +598,92 @@ void tst_LayoutFit::everyPageFits()
     QVERIFY2(cuts.isEmpty(), qPrintable(QStringLiteral("%1 text(s) cut off, listed above").arg(cuts.size())));
 }
 
+// 26.16: on a 3840x2160 screen a full line does not sit in a corner of it (85 % of it
+// was empty): the faceplates grow, within reason, and still all fit without scrolling.
+void tst_LayoutFit::faceplatesGrowOnALargeScreen()
+{
+    const auto full = fullLine(QStringLiteral("4k"), QSize(3840, 2160 - 40));
+    QVERIFY(full);
+    MainWindow &window = *full;
+    auto *overview = window.findChild<OverviewPage *>(QStringLiteral("overview"));
+    QVERIFY(overview);
+    QWidget *viewport = overview->scrollArea()->viewport();
+    QVERIFY(!overview->scrollArea()->verticalScrollBar()->isVisible());
+    qint64 covered = 0;
+    const QList<DeviceTile *> tiles = overview->findChildren<DeviceTile *>();
+    QCOMPARE(tiles.size(), 31);
+    for (DeviceTile *tile : tiles) {
+        const QRect onScreen(tile->mapTo(viewport, QPoint(0, 0)), tile->size());
+        QVERIFY2(viewport->rect().contains(onScreen), qPrintable(tile->objectName()));
+        QVERIFY(tile->height() >= tile->sizeHint().height());
+        covered += qint64(onScreen.width()) * onScreen.height();
+    }
+    const double share = double(covered) / (qint64(viewport->width()) * viewport->height());
+    qInfo("31 faceplates on 3840x2120: %d columns, scale %.2f, %.0f %% of the overview covered", overview->columns(),
+          overview->scale(), share * 100);
+    QVERIFY2(share >= 0.5, qPrintable(QStringLiteral("%1 % covered").arg(share * 100, 0, 'f', 0)));
+    QVERIFY(overview->scale() > 1 && overview->scale() <= 2);
+    QCOMPARE(overview->density(), DeviceTile::Density::Comfortable);
+    const QString uneven = unevenRows(tiles);
+    QVERIFY2(uneven.isEmpty(), qPrintable(uneven));
+    // Faceplates are read as before at their own size: a small window keeps them so.
+    window.resize(1280, 800);
+    settle();
+    QTRY_COMPARE(overview->scale(), 1.0);
+    // Four devices on a desk's screen keep their own size; on the large one they grow.
+    MainWindow::Options options;
+    options.settingsFile = m_dir.filePath(QStringLiteral("fit-4-4k.ini"));
+    options.logFolder = m_dir.filePath(QStringLiteral("logs-4k"));
+    MainWindow few(families(), options);
+    for (int address = 1; address <= 4; ++address)
+        QVERIFY(few.addDevice(families().family(fullLineOrder().at(address % 4)), quint8(address)));
+    few.resize(1280, 800);
+    few.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&few));
+    few.showOverview();
+    settle();
+    auto *fewOverview = few.findChild<OverviewPage *>(QStringLiteral("overview"));
+    QCOMPARE(fewOverview->density(), DeviceTile::Density::Comfortable);
+    QCOMPARE(fewOverview->scale(), 1.0);
+    few.resize(3840, 2160 - 40);
+    settle();
+    QTRY_COMPARE(fewOverview->scale(), 2.0);
+}
+
 QTEST_MAIN(tst_LayoutFit)
 #include "tst_layoutfit.moc"
+
+std::unique_ptr<MainWindow> tst_LayoutFit::fullLine(const QString &name, QSize size)
+{
+    MainWindow::Options options;
+    options.settingsFile = m_dir.filePath(QStringLiteral("fit-%1.ini").arg(name));
+    options.logFolder = m_dir.filePath(QStringLiteral("logs-%1").arg(name));
+    auto window = std::make_unique<MainWindow>(families(), options);
+    const QStringList order = fullLineOrder();
+    for (int address = 1; address <= 31; ++address) {
+        if (!window->addDevice(families().family(order.at(address % 4)), quint8(address)))
+            return nullptr;
+    }
+    window->resize(size);
+    window->show();
+    if (!QTest::qWaitForWindowExposed(window.get()))
+        return nullptr;
+    window->showOverview();
+    QTest::qWait(50);
+    settle();
+    return window;
+}
 
 // A full line (31 devices) on the overview of a 1920x1080 screen, less a title bar: every
 // faceplate whole on screen, no scroll bar, each at least as wide as it needs.
 void tst_LayoutFit::thirtyOneFaceplatesFitAFullHdScreen()
 {
-    MainWindow::Options options;
-    options.settingsFile = m_dir.filePath(QStringLiteral("fit-31.ini"));
-    options.logFolder = m_dir.filePath(QStringLiteral("logs-31"));
-    MainWindow window(families(), options);
-    const QStringList order{"ipc300", "tya200", "quantrol", "dtron300"};
-    for (int address = 1; address <= 31; ++address)
-        QVERIFY(window.addDevice(families().family(order.at(address % 4)), quint8(address)));
-    window.resize(1920, 1080 - 40);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    window.showOverview();
+    const auto full = fullLine(QStringLiteral("31"), QSize(1920, 1080 - 40));
+    QVERIFY(full);
+    MainWindow &window = *full;
+    const QStringList order = fullLineOrder();
     auto *overview = window.findChild<OverviewPage *>(QStringLiteral("overview"));
     QVERIFY(overview);
-    QTest::qWait(50);
-    QCoreApplication::processEvents();
     QWidget *viewport = overview->scrollArea()->viewport();
     qInfo("31 faceplates: %d columns, %s, viewport %dx%d", overview->columns(),
           overview->density() == DeviceTile::Density::Compact ? "compact" : "comfortable", viewport->width(),
@@ -612,7 +700,12 @@ void tst_LayoutFit::thirtyOneFaceplatesFitAFullHdScreen()
         QVERIFY(tile->height() >= tile->sizeHint().height());
     }
     QCOMPARE(overview->density(), DeviceTile::Density::Compact);
+    // 26.16: a row reads as one line of boxes, whatever kinds of device it holds.
+    const QString uneven = unevenRows(overview->findChildren<DeviceTile *>());
+    QVERIFY2(uneven.isEmpty(), qPrintable(uneven));
     // Four devices keep the comfortable faceplates.
+    MainWindow::Options options;
+    options.logFolder = m_dir.filePath(QStringLiteral("logs-31"));
     options.settingsFile = m_dir.filePath(QStringLiteral("fit-4.ini"));
     MainWindow few(families(), options);
     for (int address = 1; address <= 4; ++address)

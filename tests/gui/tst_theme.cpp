@@ -16,6 +16,10 @@
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
+#include <QComboBox>
+#include <QLineEdit>
+
+#include <memory>
 #include <QStyleOptionButton>
 #include <QImage>
 #include <QLabel>
@@ -38,6 +42,8 @@ private slots:
     void colouredTextFollowsTheTheme();
     void uncheckedBoxesAreVisible_data();
     void uncheckedBoxesAreVisible();
+    void disabledFieldsLookDisabled_data();
+    void disabledFieldsLookDisabled();
 };
 
 void tst_Theme::textIsReadableInEveryTheme_data()
@@ -194,6 +200,56 @@ void tst_Theme::uncheckedBoxesAreVisible()
     }
     QVERIFY2(best >= 3.0, qPrintable(QStringLiteral("box edge at most %1:1 against the window").arg(best, 0, 'f', 2)));
     Theme::apply(Theme::Kind::Light);
+}
+
+void tst_Theme::disabledFieldsLookDisabled_data()
+{
+    QTest::addColumn<int>("kind");
+    QTest::addColumn<QString>("widget");
+    // Light and dark are Fusion's own fields; high contrast draws their edges itself.
+    QTest::newRow("high contrast, combo box") << int(Theme::Kind::HighContrast) << "combo";
+    QTest::newRow("high contrast, text field") << int(Theme::Kind::HighContrast) << "edit";
+}
+
+// 26.16: a disabled field must not look like one that takes input. In high contrast the
+// white edge of every field made a disabled combo box look enabled: its brightest pixel
+// (edge, text, arrow) must be well off the enabled one's.
+void tst_Theme::disabledFieldsLookDisabled()
+{
+    QFETCH(int, kind);
+    QFETCH(QString, widget);
+    Theme::apply(Theme::Kind(kind));
+    const auto light = qScopeGuard([] { Theme::apply(Theme::Kind::Light); });
+    auto make = [&widget](bool enabled) -> std::unique_ptr<QWidget> {
+        std::unique_ptr<QWidget> w;
+        if (widget == "combo") {
+            auto *box = new QComboBox;
+            box->addItems({QStringLiteral("Automatic"), QStringLiteral("Manual")});
+            w.reset(box);
+        } else {
+            w.reset(new QLineEdit(QStringLiteral("42.5")));
+        }
+        w->setEnabled(enabled);
+        w->resize(160, w->sizeHint().height());
+        w->ensurePolished();
+        return w;
+    };
+    // The text's contrast against the window: what tells a field's state at a glance.
+    auto strongest = [](QWidget *w) {
+        const QImage image = w->grab().toImage();
+        const QColor window = w->palette().color(QPalette::Window);
+        double best = 0;
+        for (int y = 0; y < image.height(); ++y) {
+            for (int x = 0; x < image.width(); ++x)
+                best = std::max(best, Theme::contrast(image.pixelColor(x, y), window));
+        }
+        return best;
+    };
+    const auto enabled = make(true);
+    const auto disabled = make(false);
+    const double on = strongest(enabled.get());
+    const double off = strongest(disabled.get());
+    QVERIFY2(off < on * 0.75, qPrintable(QStringLiteral("enabled %1:1, disabled %2:1").arg(on, 0, 'f', 2).arg(off, 0, 'f', 2)));
 }
 
 #include "tst_theme.moc"

@@ -7,6 +7,7 @@
 #include "protocol/rtuframe.h"
 #include "testpeers.h"
 
+#include <QSignalSpy>
 #include <QTest>
 
 using namespace jumo;
@@ -44,6 +45,7 @@ private slots:
     void commandWordsTakeEffect();
     void ramOverrideAndBackToDeviceValue();
     void holdRewritesRamSetpointButNeverEeprom();
+    void holdStoppedForAnUnconfirmedDeviceSaysSo();
     void busErrorKeepalive();
     void lostPortFailsWritesAndComesBack();
     void dataLoggingRotatesFiles();
@@ -223,6 +225,37 @@ void tst_BusSimulator::holdRewritesRamSetpointButNeverEeprom()
     QCOMPARE(s.frames.count(3, 0x10), 0);
     QCOMPARE(s.sim.line().device(1)->number("input_setpoint"), 25.0);
     QCOMPARE(s.bus.setHold(ipc, "input_setpoint", QString()), QString());
+    const int written = s.frames.count(1, 0x10, 0x00D5);
+    QTest::qWait(1000);
+    QCOMPARE(s.frames.count(1, 0x10, 0x00D5), written);
+}
+
+// 26.17: a hold that ends because the device is no longer confirmed (it was gone and
+// answers again, so its identity is checked anew) ends with a word, not silently.
+void tst_BusSimulator::holdStoppedForAnUnconfirmedDeviceSaysSo()
+{
+    Setup s;
+    QVERIFY(prepare(s, {{"ipc300", 1}}));
+    s.bus.setIdentityCheck(families().families());
+    const DeviceId ipc = s.bus.addDevice(families().family("ipc300"), 1);
+    QTRY_VERIFY_WITH_TIMEOUT(s.bus.identities().isTrusted(ipc), 20000);
+    QSignalSpy stopped(&s.bus, &Bus::holdStopped);
+    QCOMPARE(s.bus.setHold(ipc, "input_setpoint", "25", 2000), QString());
+    QTRY_VERIFY_WITH_TIMEOUT(s.frames.count(1, 0x10, 0x00D5) >= 2, 10000);
+    QVERIFY(stopped.isEmpty());
+    // The device goes silent, is taken for offline and forgotten: the hold's next turn
+    // finds a device whose identity is not confirmed.
+    Fault dead;
+    dead.mode = FaultMode::Dead;
+    s.sim.line().setFault(1, dead);
+    QTRY_VERIFY_WITH_TIMEOUT(!s.bus.identities().isTrusted(ipc), 30000);
+    QTRY_COMPARE_WITH_TIMEOUT(stopped.count(), 1, 30000);
+    QCOMPARE(stopped.first().at(0).toInt(), ipc);
+    QCOMPARE(stopped.first().at(1).toString(), QString("input_setpoint"));
+    QVERIFY2(stopped.first().at(2).toString().contains("not confirmed"), qPrintable(stopped.first().at(2).toString()));
+    s.sim.line().setFault(1, Fault{});
+    QTRY_VERIFY_WITH_TIMEOUT(s.bus.identities().isTrusted(ipc), 30000);
+    // Once confirmed again nothing is written that nobody asked for since.
     const int written = s.frames.count(1, 0x10, 0x00D5);
     QTest::qWait(1000);
     QCOMPARE(s.frames.count(1, 0x10, 0x00D5), written);

@@ -92,6 +92,10 @@ private slots:
     void valuesNotCurrentAreSaidAsSuch();
     void sectionsInTheManualsOrder();
     void writesWithLabelsAndUnits();
+    void bitWritesByTheirLabels();
+    void modelAsTheDeviceTellsIt_data();
+    void modelAsTheDeviceTellsIt();
+    void currentSaidOnce();
     void signatureLines();
     void pdfHasPagesAndHeadingsStayWithTheirTables();
 
@@ -134,7 +138,7 @@ void tst_CommissioningReport::titleBlockAsEnteredAndEscaped()
     QVERIFY(rowOf(html, "Device tag").contains("<td width=\"33%\">1</td>"));   // the address
     QVERIFY(rowOf(html, "Device").contains("JUMO IPC 300 electronic transformer"));
     QVERIFY(rowOf(html, "Device").contains("19200 baud, 8E1, port /dev/ttyUSB0"));
-    QVERIFY(rowOf(html, "Models").contains("jumoctl 0.1.0"));
+    QVERIFY(rowOf(html, "Model").contains("jumoctl 0.1.0"));
     QVERIFY(html.contains("<title>Commissioning report TIC-101</title>"));
     // Fields left empty show as such, not as a blank that could be filled in later.
     const QString empty = ipcReport(states);
@@ -289,6 +293,83 @@ void tst_CommissioningReport::writesWithLabelsAndUnits()
              qPrintable(write));
     const QString refused = rowOf(html, "3/14/2025 9:13:00 AM");
     QVERIFY2(refused.contains("<td>refused by the device: exception 3: illegal data value</td>"), qPrintable(refused));
+}
+
+// 26.10: the writes of bits by the bits' labels, the words they replaced too; never the
+// ids the audit log keeps ("binary_output_control.output_k1=1", "0x8002 (output_k2)").
+void tst_CommissioningReport::bitWritesByTheirLabels()
+{
+    States states(map("quantrol"));
+    CommissioningReport report(map("quantrol"), 3, states.lookup());
+    report.setWrites({QJsonObject{{"time", "2025-03-14T09:12:05.120"}, {"device", "quantrol@3"},
+                                  {"entry", "binary_output_control"}, {"old", "0x8002 (output_k2+activation)"},
+                                  {"new", "binary_output_control.output_k1=1 binary_output_control.output_k3=0"},
+                                  {"result", "confirmed"}, {"message", "confirmed by read-back: output_k1=1, output_k3=0"}}},
+                     QDateTime(QDate(2025, 3, 14), QTime(8, 0)));
+    const QString html = report.html();
+    const QString write = rowOf(html, "3/14/2025 9:12:05 AM");
+    QVERIFY2(write.contains("<td>Control of the binary outputs</td><td>0x8002 (Output K2, Activation)</td>"
+                            "<td>Output K1 on, Output K3 off</td><td>confirmed by read-back</td>"),
+             qPrintable(write));
+    QVERIFY2(!html.contains("output_k"), qPrintable(html));
+}
+
+void tst_CommissioningReport::modelAsTheDeviceTellsIt_data()
+{
+    QTest::addColumn<QString>("family");
+    QTest::addColumn<QString>("entry");
+    QTest::addColumn<int>("word");
+    QTest::addColumn<QString>("model");
+    QTest::newRow("TYA 201 by its basic type") << "tya200" << "basic_type" << 0 << "709061 (TYA 201 - single-phase unit)";
+    QTest::newRow("TYA 203 by its basic type") << "tya200" << "basic_type" << 2
+                                               << "709063 (TYA 203 - three-phase power controller)";
+    QTest::newRow("dTRON by its format") << "dtron300" << "device_format" << 2 << "Type 703042/43/46 (48 mm x 96 mm)";
+    QTest::newRow("IPC 300 by its basic type") << "ipc300" << "basic_type" << 0 << "IPC300_709051";
+    QTest::newRow("dTRON whose format is not read") << "dtron300" << QString() << 0
+                                                    << "one of dTRON 304, dTRON 308, dTRON 316, dTRON 304 plast, dTRON 308 plast, "
+                                                       "dTRON 316 plast, 703041, 703042, 703043, 703044, 703045, 703046, 703047, "
+                                                       "703048 (the device does not say which)";
+    QTest::newRow("Quantrol, which does not say") << "quantrol" << "controller_status" << 0
+                                                  << "one of Quantrol LC100, Quantrol LC200, Quantrol LC300 (the device does "
+                                                     "not say which)";
+}
+
+// 26.14: the model the identity words name, not every model of the family.
+void tst_CommissioningReport::modelAsTheDeviceTellsIt()
+{
+    QFETCH(QString, family);
+    QFETCH(QString, entry);
+    QFETCH(int, word);
+    QFETCH(QString, model);
+    States states(map(family));
+    if (!entry.isEmpty())
+        states.set(entry, {quint16(word)});
+    const QString html = CommissioningReport(map(family), 1, states.lookup()).html();
+    const QString row = rowOf(html, "Model");
+    QVERIFY2(row.contains(QStringLiteral("<td width=\"33%\">%1</td>").arg(model.toHtmlEscaped())), qPrintable(row));
+}
+
+// 26.14: a current value needs no word of its own on each of sixty rows: the report says
+// once what an empty state means, and names only what is not current.
+void tst_CommissioningReport::currentSaidOnce()
+{
+    const RegisterMap &tya = map("tya200");
+    States states(tya);
+    int current = 0;
+    for (const RegisterEntry &e : tya.entries()) {
+        if (e.type == ValueType::Float && e.isReadable() && e.alias.isEmpty() && !e.reserved) {
+            states.setFloat(e.id, 1.5f);
+            ++current;
+        }
+    }
+    states.setFloat("load_voltage", 230.0f, Validity::Stale);
+    QVERIFY(current > 30);
+    const QString html = CommissioningReport(tya, 4, states.lookup()).html();
+    QVERIFY2(!html.contains(">current<"), qPrintable(html));
+    QVERIFY(html.contains("a value with nothing under State is current"));
+    QVERIFY2(rowOf(html, "Load voltage").contains("<td>230.0 V (stale)</td><td>stale: not read in the last cycle</td>"),
+             qPrintable(rowOf(html, "Load voltage")));
+    QVERIFY2(rowOf(html, "Load current").contains("<td>1.500 A</td><td>&nbsp;</td>"), qPrintable(rowOf(html, "Load current")));
 }
 
 void tst_CommissioningReport::signatureLines()

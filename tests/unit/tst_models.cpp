@@ -7,6 +7,7 @@
 #include "fakeline.h"
 #include "models/alarmbitsmodel.h"
 #include "models/livevaluesmodel.h"
+#include "models/parametereditmodel.h"
 #include "models/registermapmodel.h"
 
 #include <QAbstractItemModelTester>
@@ -24,6 +25,11 @@ private slots:
     void deviceModelsThroughALineLife();
     void registerMapModelOfEveryFamily();
     void modelsOverAMirroredLine();
+    void measuredValuesFirstInTheManualsOrder_data();
+    void measuredValuesFirstInTheManualsOrder();
+    void noLabelTwiceInOneView_data();
+    void noLabelTwiceInOneView();
+    void agesInTheLanguagesWay();
 };
 
 namespace {
@@ -217,6 +223,120 @@ void tst_Models::modelsOverAMirroredLine()
     line.removeDevice(id);
     QVERIFY(!line.entryState(id, QStringLiteral("voltage_input")));
     QVERIFY(line.devices().isEmpty());
+}
+
+void tst_Models::measuredValuesFirstInTheManualsOrder_data()
+{
+    QTest::addColumn<QString>("family");
+    QTest::addColumn<QString>("first");        // the section of the first row
+    QTest::addColumn<QString>("before");       // a section that comes before...
+    QTest::addColumn<QString>("after");        // ...this one
+    QTest::newRow("ipc300") << "ipc300" << "5.2.1" << "5.2.7" << "5.1.1";
+    QTest::newRow("tya200: 5.3 before 5.8") << "tya200" << "5.3" << "5.3" << "5.8";
+    QTest::newRow("tya200: the faults before the device data") << "tya200" << "5.3" << "5.7" << "5.1";
+    QTest::newRow("quantrol") << "quantrol" << "4.2" << "4.3" << "4.4";
+    QTest::newRow("dtron300") << "dtron300" << "5.1" << "5.2" << "5.4";
+}
+
+// 26.13: the live values tab opens on the measured values, not on identity and settings
+// (the TYA's began at row 26); the sections in the manual's order, measured ones first.
+void tst_Models::measuredValuesFirstInTheManualsOrder()
+{
+    QFETCH(QString, family);
+    QFETCH(QString, first);
+    QFETCH(QString, before);
+    QFETCH(QString, after);
+    Line line({{family, 7}});
+    const auto map = families().family(family);
+    const DeviceId device = line.bus->addDevice(map, 7);
+    LiveValuesModel values(line.bus.get(), device);
+    QAbstractItemModelTester tester(&values, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    auto sectionOf = [&](int row) { return map->entry(values.entryId(row))->group.section(QLatin1Char(' '), 0, 0); };
+    QCOMPARE(sectionOf(0), first);
+    const RegisterEntry *top = map->entry(values.entryId(0));
+    QVERIFY2(!top->isWritable(), qPrintable(top->id));
+    int lastBefore = -1;
+    int firstAfter = values.rowCount();
+    for (int row = 0; row < values.rowCount(); ++row) {
+        if (sectionOf(row) == before)
+            lastBefore = row;
+        if (sectionOf(row) == after)
+            firstAfter = std::min(firstAfter, row);
+        QCOMPARE(values.rowOf(values.entryId(row)), row);
+    }
+    QVERIFY(lastBefore >= 0 && firstAfter < values.rowCount());
+    QVERIFY2(lastBefore < firstAfter, qPrintable(QStringLiteral("%1 ends at row %2, %3 starts at %4")
+                                                         .arg(before).arg(lastBefore).arg(after).arg(firstAfter)));
+    // A section is one block of rows, however its addresses are spread (the dTRON's 5.4).
+    QStringList seen;
+    for (int row = 0; row < values.rowCount(); ++row) {
+        const QString group = map->entry(values.entryId(row))->group;
+        if (seen.isEmpty() || seen.last() != group) {
+            QVERIFY2(!seen.contains(group), qPrintable(group));
+            seen << group;
+        }
+    }
+}
+
+void tst_Models::noLabelTwiceInOneView_data()
+{
+    QTest::addColumn<QString>("family");
+    for (const char *family : {"ipc300", "tya200", "quantrol", "dtron300"})
+        QTest::newRow(family) << QString::fromLatin1(family);
+}
+
+// 26.13: within what one tab shows, no two entries read alike ("Device temperature"
+// twice on the IPC 300, in °C and in °F; "Analog input 1" twice on the dTRON).
+void tst_Models::noLabelTwiceInOneView()
+{
+    QFETCH(QString, family);
+    Line line({{family, 7}});
+    const auto map = families().family(family);
+    const DeviceId device = line.bus->addDevice(map, 7);
+    auto twice = [](const QStringList &labels) {
+        QStringList doubled;
+        for (const QString &label : labels) {
+            if (labels.count(label) > 1 && !doubled.contains(label))
+                doubled << label;
+        }
+        return doubled.join(QStringLiteral(", "));
+    };
+    LiveValuesModel values(line.bus.get(), device);
+    QStringList live;
+    for (int row = 0; row < values.rowCount(); ++row)
+        live << values.index(row, LiveValuesModel::LabelColumn).data().toString();
+    QVERIFY2(twice(live).isEmpty(), qPrintable("live values: " + twice(live)));
+    // The Controls tab: every writable entry with a control but the parameter editor's
+    // and the program's.
+    QStringList controls;
+    for (const RegisterEntry &e : map->entries()) {
+        if (e.isWritable() && !e.reserved && !e.control.isEmpty() && e.control != QLatin1String("parameter")
+            && e.control != QLatin1String("program"))
+            controls << e.label;
+    }
+    QVERIFY2(twice(controls).isEmpty(), qPrintable("controls: " + twice(controls)));
+    ParameterEditModel parameters(line.bus.get(), device);
+    QStringList editable;
+    for (const QString &id : parameters.entryIds())
+        editable << map->entry(id)->label;
+    QVERIFY2(twice(editable).isEmpty(), qPrintable("parameters: " + twice(editable)));
+}
+
+// 26.15: "0,4 s" in German, as every other number.
+void tst_Models::agesInTheLanguagesWay()
+{
+    Line line({{"ipc300", 7}});
+    QVERIFY(line.bus->open());
+    const DeviceId device = line.bus->addDevice(families().family("ipc300"), 7);
+    LiveValuesModel values(line.bus.get(), device);
+    const QModelIndex age = values.index(values.rowOf("load_voltage"), LiveValuesModel::AgeColumn);
+    QVERIFY(line.runUntil([&] { return !age.data().toString().isEmpty(); }, 20000));
+    const QLocale before;
+    QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+    const auto restore = qScopeGuard([before] { QLocale::setDefault(before); });
+    QVERIFY2(QRegularExpression("^\\d+,\\d s$").match(age.data().toString()).hasMatch(), qPrintable(age.data().toString()));
+    QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+    QVERIFY2(QRegularExpression("^\\d+\\.\\d s$").match(age.data().toString()).hasMatch(), qPrintable(age.data().toString()));
 }
 
 #include "tst_models.moc"

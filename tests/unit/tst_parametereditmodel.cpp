@@ -8,6 +8,7 @@
 #include "fakeline.h"
 #include "models/parametereditmodel.h"
 #include "bus/valuetext.h"
+#include "protocol/valuecodec.h"
 
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>
@@ -30,6 +31,7 @@ private slots:
     void outcomesOfWrites();
     void readOnlyAndWritingRefuseEdits();
     void deviceValueIsNeverShownAsCurrentWhenItIsNot();
+    void readBackShowsAtOnce();
 };
 
 namespace {
@@ -347,6 +349,38 @@ void tst_ParameterEditModel::deviceValueIsNeverShownAsCurrentWhenItIsNot()
     // A change made while the device is gone is kept, shown against no device value.
     QVERIFY(model.setNewValue("ps1_dt", "80"));
     QVERIFY(model.isChanged("ps1_dt"));
+}
+
+// 26.12: a confirmed write's read-back is the device's value at once, never the poll's of
+// a moment before beside "Confirmed by read-back: 5000 W"; a later poll takes over.
+void tst_ParameterEditModel::readBackShowsAtOnce()
+{
+    Line line({{"ipc300", 7}});
+    QVERIFY(line.bus->open());
+    const auto map = families().family("ipc300");
+    const DeviceId device = line.bus->addDevice(map, 7);
+    ParameterEditModel model(line.bus.get(), device);
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    const QModelIndex cell = model.indexOf("power_limit", ParameterEditModel::DeviceColumn);
+    line.sim(7)->setNumber("power_limit", 6000);
+    QVERIFY(line.runUntil([&] { return cell.data().toString() == "6000"; }, 20000));
+    QVERIFY(model.setNewValue("power_limit", "5000"));
+    model.setWriting({"power_limit"});
+    line.sim(7)->setNumber("power_limit", 5000);   // what the write did on the device
+    WriteOutcome confirmed;
+    confirmed.result = WriteOutcome::Result::Confirmed;
+    confirmed.message = "confirmed by read-back: 5000";
+    confirmed.readBack = ValueCodec::decode(*map->entry("power_limit"), *map,
+                                            ValueCodec::encodeFloat(5000, map->protocol.floatWordOrder));
+    QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
+    model.setOutcome("power_limit", confirmed);
+    QCOMPARE(model.resultText("power_limit"), QString("Confirmed by read-back: 5000 W"));
+    QCOMPARE(cell.data().toString(), QString("5000"));
+    QCOMPARE(cell.data(ParameterEditModel::ValidityRole).toInt(), int(Validity::Current));
+    QVERIFY(!changed.isEmpty());   // the view is told, not left to the next poll
+    // A poll after the write reads what the device has now.
+    line.sim(7)->setNumber("power_limit", 4500);
+    QVERIFY(line.runUntil([&] { return cell.data().toString() == "4500"; }, 20000));
 }
 
 QTEST_MAIN(tst_ParameterEditModel)

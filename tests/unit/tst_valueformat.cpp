@@ -5,6 +5,8 @@
 
 #include <QTest>
 
+#include <cmath>
+
 using namespace jumo;
 
 namespace {
@@ -40,6 +42,8 @@ class tst_ValueFormat : public QObject
 private slots:
     void number_data();
     void number();
+    void rounded();
+    void bitsByTheirLabels();
     void withUnit();
     void defaultsPerUnit();
     void limit();
@@ -58,12 +62,16 @@ void tst_ValueFormat::number_data()
     QTest::newRow("German decimal comma") << 91.94382 << 0 << 1 << "de" << "91,9";
     QTest::newRow("rounding up to a tenth") << 91.98382 << 0 << 1 << "en" << "92.0";
     QTest::newRow("current to four digits") << 19.99113 << 1 << 4 << "en" << "19.99";
-    QTest::newRow("small current to four digits") << 0.5123456 << 1 << 4 << "de" << "0,5123";
+    QTest::newRow("small current to four digits, as many decimals as zero") << 0.5123456 << 1 << 4 << "de" << "0,512";
     QTest::newRow("power to four digits") << 1838.42 << 1 << 4 << "en" << "1838";
     QTest::newRow("more whole digits than significant ones") << 12345.6 << 1 << 4 << "en" << "12346";
     QTest::newRow("rounding adds a digit in front") << 9.99962 << 1 << 4 << "en" << "10.00";
     QTest::newRow("zero to four digits") << 0.0 << 1 << 4 << "en" << "0.000";
-    QTest::newRow("negative to four digits") << -0.0123456 << 1 << 4 << "en" << "-0.01235";
+    QTest::newRow("negative to four digits") << -0.0123456 << 1 << 4 << "en" << "-0.012";
+    // 26.8: the precision first, then the sign: noise around zero is no four-digit reading.
+    QTest::newRow("noise around zero is zero") << -0.00007528 << 1 << 4 << "en" << "0.000";
+    QTest::newRow("noise around zero in German") << 0.00004 << 1 << 4 << "de" << "0,000";
+    QTest::newRow("below zero's decimals, rounded to them") << -0.0007528 << 1 << 4 << "en" << "-0.001";
     QTest::newRow("no thousands separator in English") << 12345.6 << 0 << 1 << "en" << "12345.6";
     QTest::newRow("no thousands separator in German") << 12345.6 << 0 << 1 << "de" << "12345,6";
     QTest::newRow("a value rounding to zero has no sign") << -0.04 << 0 << 1 << "de" << "0,0";
@@ -80,6 +88,44 @@ void tst_ValueFormat::number()
     QFETCH(QString, expected);
     const DisplayPrecision precision = kind == 0 ? DisplayPrecision::decimals(digits) : DisplayPrecision::significant(digits);
     QCOMPARE(ValueFormat::number(value, precision, language == "de" ? german : english), expected);
+}
+
+void tst_ValueFormat::rounded()
+{
+    // As the text reads: a bar or an arrow drawn from it says the same.
+    QCOMPARE(ValueFormat::rounded(-0.00007528, DisplayPrecision::significant(4)), 0.0);
+    QVERIFY(!std::signbit(ValueFormat::rounded(-0.00007528, DisplayPrecision::significant(4))));
+    QCOMPARE(ValueFormat::rounded(19.99113, DisplayPrecision::significant(4)), 19.99);
+    QCOMPARE(ValueFormat::rounded(1838.42, DisplayPrecision::significant(4)), 1838.0);
+    QCOMPARE(ValueFormat::rounded(-0.04, DisplayPrecision::decimals(1)), 0.0);
+    QCOMPARE(ValueFormat::rounded(91.94382, DisplayPrecision::decimals(1)), 91.9);
+}
+
+void tst_ValueFormat::bitsByTheirLabels()
+{
+    // 26.10: people read the manual's words, never the map's ids ("0x0004 (program_stop)").
+    RegisterEntry status;
+    status.id = QStringLiteral("program_status");
+    status.type = ValueType::Bitfield;
+    auto bit = [](int at, int width, const QString &id, const QString &label, bool reserved = false) {
+        BitDefinition b;
+        b.bit = at;
+        b.width = width;
+        b.id = id;
+        b.label = label;
+        b.reserved = reserved;
+        return b;
+    };
+    status.bits = {bit(1, 1, "program_pause", "Program pause"), bit(2, 1, "program_stop", "Basic status/Program stop"),
+                   bit(3, 1, "spare", "Spare", true), bit(8, 8, "slot_1", "Slot 1")};
+    QCOMPARE(ValueFormat::bits(0x0004, status), QString("0x0004 (Basic status/Program stop, Slot 1: 0)"));
+    QCOMPARE(ValueFormat::bits(0x0A06, status), QString("0x0A06 (Program pause, Basic status/Program stop, Slot 1: 10)"));
+    status.bits.removeLast();
+    QCOMPARE(ValueFormat::bits(0x0008, status), QString("0x0008 (none set)"));   // a reserved bit is no state
+    DecodedValue word = reading(qint64(4));
+    word.raw = 4;
+    word.display = QStringLiteral("0x0004 (program_stop)");
+    QCOMPARE(ValueFormat::withUnit(word, status, english), QString("0x0004 (Basic status/Program stop)"));
 }
 
 void tst_ValueFormat::withUnit()
