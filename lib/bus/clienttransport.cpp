@@ -41,14 +41,20 @@ bool ClientTransport::open(QString *error)
 
 void ClientTransport::close()
 {
+    shutDown(tr("the line was closed"));
+}
+
+void ClientTransport::shutDown(const QString &reason)
+{
     m_state = State::Closed;
     m_replyTimer.stop();
     closeLink();
     if (m_request) {
+        // Queued: whoever closes (or hears of the loss) goes on first.
         m_request.reset();
         ModbusResult result;
         result.status = ModbusResult::Status::LineDown;
-        result.errorText = tr("the line was closed");
+        result.errorText = reason;
         QMetaObject::invokeMethod(this, [this, result] { emit finished(result); }, Qt::QueuedConnection);
     }
 }
@@ -102,16 +108,7 @@ void ClientTransport::linkDown(const QString &reason)
     if (m_state == State::Closed)
         return;
     qCInfo(lcBus).noquote() << peer() << "lost:" << reason;
-    m_state = State::Closed;
-    m_replyTimer.stop();
-    closeLink();
-    if (m_request) {
-        m_request.reset();
-        ModbusResult result;
-        result.status = ModbusResult::Status::LineDown;
-        result.errorText = reason;
-        QMetaObject::invokeMethod(this, [this, result] { emit finished(result); }, Qt::QueuedConnection);
-    }
+    shutDown(reason);
     emit lost(reason);
 }
 

@@ -66,6 +66,8 @@ protected:
 private:
     enum class State { Closed, Connecting, Open };
 
+    // Closed at once; a request under way ends as LineDown with the reason.
+    void shutDown(const QString &reason);
     void onReplyTimeout();
     void deliver(const ModbusResult &result);
 

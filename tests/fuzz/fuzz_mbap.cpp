@@ -9,46 +9,12 @@
 #include "bus/mbapframer.h"
 #include "protocol/mbapframe.h"
 
+#include "fuzzrequests.h"
+
 #include <cstdint>
 
 using namespace jumo;
-
-namespace {
-
-ModbusRequest requestOf(const uint8_t *head)
-{
-    const quint8 slave = quint8(head[0] % 247 + 1);
-    const quint16 start = quint16(head[2] << 8 | head[3]);
-    const quint16 value = quint16(head[4] << 8 | head[5]);
-    switch (head[1] % 3) {
-    case 0:
-        return ModbusRequest::read(slave, start, quint16(value % 125 + 1));
-    case 1:
-        return ModbusRequest::write(slave, start, {value});
-    default: {
-        QList<quint16> words;
-        for (int i = 0; i < value % 8 + 2; ++i)
-            words << quint16(value + i);
-        return ModbusRequest::write(slave, start, words);
-    }
-    }
-}
-
-// The frame a reply taken as good must have been.
-QByteArray expectedFrame(quint16 transaction, const ModbusRequest &request, const ModbusResult &result)
-{
-    QByteArray pdu(1, char(request.function));
-    if (request.function == ModbusRequest::Function::ReadHolding) {
-        pdu.append(char(2 * result.words.size()));
-        for (quint16 w : result.words)
-            pdu.append(char(w >> 8)).append(char(w));
-    } else {
-        pdu = request.pdu().left(5);   // the echo: function, start and the value (0x06) or the count (0x10)
-    }
-    return MbapFrame::build(transaction, request.slave, pdu);
-}
-
-} // namespace
+using namespace jumo::fuzz;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -90,7 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (result.status == ModbusResult::Status::Ok) {
             if (request.function == ModbusRequest::Function::ReadHolding && result.words.size() != request.count)
                 __builtin_trap();
-            if (!sinceSent.contains(expectedFrame(transaction, request, result)))
+            if (!sinceSent.contains(MbapFrame::build(transaction, request.slave, acceptedPdu(request, result))))
                 __builtin_trap();   // taken from a frame that is not this request's answer
         } else if (result.status == ModbusResult::Status::Exception) {
             if (result.exceptionCode < 0 || result.exceptionCode > 255)

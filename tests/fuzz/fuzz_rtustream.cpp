@@ -11,57 +11,19 @@
 #include "bus/rtustreamframer.h"
 #include "protocol/rtuframe.h"
 
+#include "fuzzrequests.h"
+
 #include <cstdint>
 
 using namespace jumo;
-
-namespace {
-
-ModbusRequest requestOf(const uint8_t *head)
-{
-    const quint8 slave = quint8(head[0] % 247 + 1);
-    const quint16 start = quint16(head[2] << 8 | head[3]);
-    const quint16 value = quint16(head[4] << 8 | head[5]);
-    ModbusRequest request;
-    switch (head[1] % 3) {
-    case 0:
-        request = ModbusRequest::read(slave, start, quint16(value % 125 + 1));
-        break;
-    case 1:
-        request = ModbusRequest::write(slave, start, {value});
-        break;
-    default: {
-        QList<quint16> words;
-        for (int i = 0; i < value % 8 + 2; ++i)
-            words << quint16(value + i);
-        request = ModbusRequest::write(slave, start, words);
-        break;
-    }
-    }
-    request.timeoutMs = 200;
-    return request;
-}
-
-QByteArray expectedFrame(const ModbusRequest &request, const ModbusResult &result)
-{
-    QByteArray pdu(1, char(request.function));
-    if (request.function == ModbusRequest::Function::ReadHolding) {
-        pdu.append(char(2 * result.words.size()));
-        for (quint16 w : result.words)
-            pdu.append(char(w >> 8)).append(char(w));
-    } else {
-        pdu = request.pdu().left(5);
-    }
-    return RtuFrame::build(request.slave, pdu);
-}
-
-} // namespace
+using namespace jumo::fuzz;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     if (size < 12)
         return 0;
-    const ModbusRequest requests[2] = {requestOf(data), requestOf(data + 6)};
+    ModbusRequest requests[2] = {requestOf(data), requestOf(data + 6)};
+    requests[0].timeoutMs = requests[1].timeoutMs = 200;
     int next = 0;
     RtuStreamFramer framer;
     qint64 now = 0;
@@ -111,7 +73,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                     if (underWay->function == ModbusRequest::Function::ReadHolding
                         && result->words.size() != underWay->count)
                         __builtin_trap();
-                    if (!sinceSent.contains(expectedFrame(*underWay, *result)))
+                    if (!sinceSent.contains(RtuFrame::build(underWay->slave, acceptedPdu(*underWay, *result))))
                         __builtin_trap();   // taken from bytes that are not this request's answer
                 } else if (result->status != ModbusResult::Status::Exception) {
                     __builtin_trap();   // a frame that does not fit is dropped, never the result

@@ -251,24 +251,28 @@ void tst_LineKinds::addRows(const QStringList &kinds)
     }
 }
 
-bool tst_LineKinds::prepare(Setup &s, int retries)
+// The bus on a line, polling ipc300@1 and ipc300@2, every value watched.
+static bool openBus(Bus &bus, const QString &url, int retries, DeviceId *first, DeviceId *second, Observer &observed)
 {
-    if (!s.far.start({1, 2}))
-        return false;
     BusSettings settings;
-    settings.portName = s.far.url();
+    settings.portName = url;
     settings.format = testFormat();
     settings.retries = retries;   // the timeout is derived: the family's at 19200 baud + the network margin
-    s.bus.setSettings(settings);
-    if (!s.bus.open())
+    bus.setSettings(settings);
+    if (!bus.open())
         return false;
     const auto map = families().family("ipc300");
-    s.first = s.bus.addDevice(map, 1);
-    s.second = s.bus.addDevice(map, 2);
-    for (DeviceId id : {s.first, s.second})
-        s.bus.setPollEntries(id, polledIds);
-    watch(s.bus, s.observed);
+    *first = bus.addDevice(map, 1);
+    *second = bus.addDevice(map, 2);
+    for (DeviceId id : {*first, *second})
+        bus.setPollEntries(id, polledIds);
+    watch(bus, observed);
     return true;
+}
+
+bool tst_LineKinds::prepare(Setup &s, int retries)
+{
+    return s.far.start({1, 2}) && openBus(s.bus, s.far.url(), retries, &s.first, &s.second, s.observed);
 }
 
 void tst_LineKinds::readsAndWrites_data()
@@ -630,21 +634,7 @@ bool tst_LineKinds::prepare(Lying &s)
         }
     }
     s.line.addDevice(families().family("dtron300"), 4);
-    if (!s.gateway.listen())
-        return false;
-    BusSettings settings;
-    settings.portName = s.gateway.url();
-    settings.format = testFormat();
-    settings.retries = 1;
-    s.bus.setSettings(settings);
-    if (!s.bus.open())
-        return false;
-    s.first = s.bus.addDevice(map, 1);
-    s.second = s.bus.addDevice(map, 2);
-    for (DeviceId id : {s.first, s.second})
-        s.bus.setPollEntries(id, polledIds);
-    watch(s.bus, s.observed);
-    return true;
+    return s.gateway.listen() && openBus(s.bus, s.gateway.url(), 1, &s.first, &s.second, s.observed);
 }
 
 void tst_LineKinds::lyingGatewayNeverGivesAnotherUnitsValue_data()

@@ -17,6 +17,9 @@
 #include <QTest>
 #include <QTimer>
 
+#include <memory>
+#include <type_traits>
+
 using namespace jumo;
 
 
@@ -98,14 +101,28 @@ QByteArray honestDeviceReply(const QByteArray &request)
     return RtuFrame::build(quint8(request[0]), readReplyPdu(wordAt(request, 2), wordAt(request, 4)));
 }
 
-ModbusResult resultOf(QSignalSpy &finished, int index)
-{
-    return finished.at(index).first().value<ModbusResult>();
-}
-
 LineAddress addressOf(const QString &text)
 {
     return *LineAddress::parse(text, nullptr);
+}
+
+// A transport to the peer on the loopback, its connection standing; null if it did not.
+template<typename T>
+std::unique_ptr<T> connectedTo(const HostilePeer &peer)
+{
+    const char *scheme = std::is_same_v<T, TcpTransport> ? "tcp" : "rtu+tcp";
+    auto transport = std::make_unique<T>(addressOf(QStringLiteral("%1://127.0.0.1:%2").arg(scheme).arg(peer.port())),
+                                         *LineFormat::parse(19200, QStringLiteral("8N1")));
+    QSignalSpy opened(transport.get(), &Transport::opened);
+    QString error;
+    if (!transport->open(&error) || !opened.wait(10000))
+        return nullptr;
+    return transport;
+}
+
+ModbusResult resultOf(QSignalSpy &finished, int index)
+{
+    return finished.at(index).first().value<ModbusResult>();
 }
 
 } // namespace
@@ -141,16 +158,12 @@ void tst_HostilePeers::gatewayStallsInTheMiddleOfAReply()
 {
     QFETCH(QByteArray, tail);
     HostilePeer gateway([tail](const QByteArray &request) { return request.left(2) + tail; });
-    TcpTransport transport(addressOf(QStringLiteral("tcp://127.0.0.1:%1").arg(gateway.port())),
-                           *LineFormat::parse(19200, QStringLiteral("8N1")));
-    QSignalSpy opened(&transport, &Transport::opened);
-    QSignalSpy finished(&transport, &Transport::finished);
-    QString error;
-    QVERIFY2(transport.open(&error), qPrintable(error));
-    QVERIFY(opened.wait());
+    const std::unique_ptr<TcpTransport> transport = connectedTo<TcpTransport>(gateway);
+    QVERIFY(transport);
+    QSignalSpy finished(transport.get(), &Transport::finished);
     ModbusRequest request = ModbusRequest::read(1, 0x00B1, 2);
     request.timeoutMs = 200;
-    transport.send(request);
+    transport->send(request);
     // Qt's client stops its timer once a header has come: without a guard of our own,
     // this request would never finish.
     QVERIFY(finished.wait(10000));
@@ -215,17 +228,13 @@ void tst_HostilePeers::gatewayReplyThatIsNotTheRequests()
             return honestGatewayReply(request);
         return request.left(2) + header + readReplyPdu(wordAt(taken.pdu, 1), wordAt(taken.pdu, 3));
     });
-    TcpTransport transport(addressOf(QStringLiteral("tcp://127.0.0.1:%1").arg(gateway.port())),
-                           *LineFormat::parse(19200, QStringLiteral("8N1")));
-    QSignalSpy opened(&transport, &Transport::opened);
-    QSignalSpy finished(&transport, &Transport::finished);
-    QSignalSpy lost(&transport, &Transport::lost);
-    QString error;
-    QVERIFY2(transport.open(&error), qPrintable(error));
-    QVERIFY(opened.wait());
+    const std::unique_ptr<TcpTransport> transport = connectedTo<TcpTransport>(gateway);
+    QVERIFY(transport);
+    QSignalSpy finished(transport.get(), &Transport::finished);
+    QSignalSpy lost(transport.get(), &Transport::lost);
     ModbusRequest request = ModbusRequest::read(1, 0x00B1, 2);
     request.timeoutMs = 2000;
-    transport.send(request);
+    transport->send(request);
     QVERIFY(finished.wait(10000));
     const ModbusResult result = resultOf(finished, 0);
     QCOMPARE(result.status, ModbusResult::Status::BadReply);
@@ -234,7 +243,7 @@ void tst_HostilePeers::gatewayReplyThatIsNotTheRequests()
     QCOMPARE(result.mismatches, 1);
 
     // The next request is answered and taken, on this connection or a new one.
-    transport.send(request);
+    transport->send(request);
     QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 2, 10000);
     QCOMPARE(resultOf(finished, 1).status, ModbusResult::Status::Ok);
     QCOMPARE(resultOf(finished, 1).words, wordsAt(0x00B1, 2));
@@ -259,14 +268,10 @@ void tst_HostilePeers::oneBadGatewayFrameCostsOneRequest()
     HostilePeer gateway([&requests, tail](const QByteArray &request) {
         return requests++ == 0 ? request.left(2) + tail : honestGatewayReply(request);
     });
-    TcpTransport transport(addressOf(QStringLiteral("tcp://127.0.0.1:%1").arg(gateway.port())),
-                           *LineFormat::parse(19200, QStringLiteral("8N1")));
-    QSignalSpy opened(&transport, &Transport::opened);
-    QSignalSpy finished(&transport, &Transport::finished);
-    QSignalSpy lost(&transport, &Transport::lost);
-    QString error;
-    QVERIFY2(transport.open(&error), qPrintable(error));
-    QVERIFY(opened.wait());
+    const std::unique_ptr<TcpTransport> transport = connectedTo<TcpTransport>(gateway);
+    QVERIFY(transport);
+    QSignalSpy finished(transport.get(), &Transport::finished);
+    QSignalSpy lost(transport.get(), &Transport::lost);
     ModbusRequest request = ModbusRequest::read(1, 0x00B1, 2);
     request.timeoutMs = 300;
     // The bad frame may end its own request well or not; the requests after it are
@@ -274,7 +279,7 @@ void tst_HostilePeers::oneBadGatewayFrameCostsOneRequest()
     QElapsedTimer clock;
     clock.start();
     for (int sent = 0; sent < 4; ++sent) {
-        transport.send(request);
+        transport->send(request);
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), sent + 1, 10000);
     }
     const ModbusResult first = resultOf(finished, 0);
@@ -285,7 +290,7 @@ void tst_HostilePeers::oneBadGatewayFrameCostsOneRequest()
         QCOMPARE(later.words, wordsAt(0x00B1, 2));
     }
     QCOMPARE(lost.count(), 0);
-    QVERIFY(transport.isOpen());
+    QVERIFY(transport->isOpen());
     qInfo("four requests, the first answered badly, in %lld ms; %d connection(s)", clock.elapsed(),
           int(gateway.sockets().size()));
 }
@@ -294,21 +299,17 @@ void tst_HostilePeers::deviceServerLateReplyIsNotTheNextRequests()
 {
     // Every reply 0.75 s late, beyond the requests' 0.5 s timeout.
     HostilePeer server(&honestDeviceReply, [](const QByteArray &) { return 750; });
-    RtuTcpTransport transport(addressOf(QStringLiteral("rtu+tcp://127.0.0.1:%1").arg(server.port())),
-                              *LineFormat::parse(19200, QStringLiteral("8N1")));
-    QSignalSpy opened(&transport, &Transport::opened);
-    QSignalSpy finished(&transport, &Transport::finished);
-    QString error;
-    QVERIFY2(transport.open(&error), qPrintable(error));
-    QVERIFY(opened.wait());
+    const std::unique_ptr<RtuTcpTransport> transport = connectedTo<RtuTcpTransport>(server);
+    QVERIFY(transport);
+    QSignalSpy finished(transport.get(), &Transport::finished);
     // Two reads of one device with replies of one shape: a late reply to the first fits the second.
     ModbusRequest first = ModbusRequest::read(1, 0x0100, 2);
     ModbusRequest second = ModbusRequest::read(1, 0x0200, 2);
     first.timeoutMs = second.timeoutMs = 500;
-    transport.send(first);
+    transport->send(first);
     QVERIFY(finished.wait(10000));
     QCOMPARE(resultOf(finished, 0).status, ModbusResult::Status::Timeout);
-    transport.send(second);   // at once, with no quiet time in between
+    transport->send(second);   // at once, with no quiet time in between
     QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 2, 10000);
     const ModbusResult result = resultOf(finished, 1);
     QVERIFY2(result.words != wordsAt(0x0100, 2), "the first request's late reply was taken for the second's");
@@ -328,20 +329,16 @@ void tst_HostilePeers::deviceServerTwoRepliesInOneSegment()
         previous = honestDeviceReply(request);
         return reply;
     });
-    RtuTcpTransport transport(addressOf(QStringLiteral("rtu+tcp://127.0.0.1:%1").arg(server.port())),
-                              *LineFormat::parse(19200, QStringLiteral("8N1")));
-    QSignalSpy opened(&transport, &Transport::opened);
-    QSignalSpy finished(&transport, &Transport::finished);
-    QString error;
-    QVERIFY2(transport.open(&error), qPrintable(error));
-    QVERIFY(opened.wait());
+    const std::unique_ptr<RtuTcpTransport> transport = connectedTo<RtuTcpTransport>(server);
+    QVERIFY(transport);
+    QSignalSpy finished(transport.get(), &Transport::finished);
     ModbusRequest first = ModbusRequest::read(1, 0x0100, 2);
     ModbusRequest second = ModbusRequest::read(1, 0x0200, 2);
     first.timeoutMs = second.timeoutMs = 2000;
-    transport.send(first);
+    transport->send(first);
     QVERIFY(finished.wait(10000));
     QCOMPARE(resultOf(finished, 0).words, wordsAt(0x0100, 2));
-    transport.send(second);
+    transport->send(second);
     QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 2, 10000);
     const ModbusResult result = resultOf(finished, 1);
     QCOMPARE(result.status, ModbusResult::Status::Ok);
