@@ -73,7 +73,7 @@ void ClientTransport::send(const ModbusRequest &request)
     m_request = request;
     m_transmitted = false;
     if (m_state == State::Closed) {
-        fail(ModbusResult::Status::LineDown, tr("not connected to the %1").arg(peer()));
+        fail(ModbusResult::Status::LineDown, tr("not connected to %1").arg(peer()));
         return;
     }
     if (m_state == State::Open) {

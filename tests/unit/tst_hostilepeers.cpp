@@ -142,6 +142,8 @@ private slots:
     void oneBadGatewayFrameCostsOneRequest();
     void deviceServerLateReplyIsNotTheNextRequests();
     void deviceServerTwoRepliesInOneSegment();
+    void finishedOnceNeverFromInsideSend_data();
+    void finishedOnceNeverFromInsideSend();
 };
 
 void tst_HostilePeers::gatewayStallsInTheMiddleOfAReply_data()
@@ -344,6 +346,50 @@ void tst_HostilePeers::deviceServerTwoRepliesInOneSegment()
     QCOMPARE(result.status, ModbusResult::Status::Ok);
     QCOMPARE(result.words, wordsAt(0x0200, 2));
     QCOMPARE(result.mismatches, 1);
+}
+
+void tst_HostilePeers::finishedOnceNeverFromInsideSend_data()
+{
+    QTest::addColumn<QString>("scheme");
+    QTest::addColumn<bool>("closed");
+    QTest::addColumn<int>("slave");
+    QTest::addColumn<int>("status");
+    QTest::addColumn<QString>("said");
+    const int ok = int(ModbusResult::Status::Ok);
+    const int lineDown = int(ModbusResult::Status::LineDown);
+    QTest::newRow("gateway, closed") << "tcp" << true << 1 << lineDown << "not connected to the gateway 127.0.0.1:";
+    QTest::newRow("gateway, a broadcast") << "tcp" << false << 0 << lineDown << "broadcasts are not sent";
+    QTest::newRow("device server, closed") << "rtu+tcp" << true << 1 << lineDown
+                                           << "not connected to the device server 127.0.0.1:";
+    QTest::newRow("device server, a broadcast") << "rtu+tcp" << false << 0 << ok << "";
+}
+
+void tst_HostilePeers::finishedOnceNeverFromInsideSend()
+{
+    QFETCH(QString, scheme);
+    QFETCH(bool, closed);
+    QFETCH(int, slave);
+    QFETCH(int, status);
+    QFETCH(QString, said);
+    HostilePeer peer([](const QByteArray &) { return QByteArray(); });
+    std::unique_ptr<Transport> transport;
+    if (scheme == "tcp")
+        transport = connectedTo<TcpTransport>(peer);
+    else
+        transport = connectedTo<RtuTcpTransport>(peer);
+    QVERIFY(transport);
+    if (closed)
+        transport->close();
+    QSignalSpy finished(transport.get(), &Transport::finished);
+    const ModbusRequest request = slave == 0 ? ModbusRequest::write(0, 0x00D5, {1, 2}) : ModbusRequest::read(1, 0x00B1, 2);
+    transport->send(request);
+    QCOMPARE(finished.count(), 0);
+    QVERIFY(finished.wait(10000));
+    QTest::qWait(300);
+    QCOMPARE(finished.count(), 1);
+    const ModbusResult result = resultOf(finished, 0);
+    QCOMPARE(int(result.status), status);
+    QVERIFY2(result.errorText.contains(said), qPrintable(result.errorText));
 }
 
 QTEST_GUILESS_MAIN(tst_HostilePeers)
