@@ -51,10 +51,13 @@ Taken take(QByteArrayView stream)
 bool isConsistentResponse(QByteArrayView pdu)
 {
     // The RTU rule for a frame's length from its first bytes, applied to unit id + PDU
-    // (an RTU frame is the same with a CRC of 2 bytes behind).
-    QByteArray head(1, '\0');
-    head.append(pdu.data(), pdu.size());
-    const std::optional<int> length = RtuFrame::expectedLength(head, RtuFrame::Direction::Response);
+    // (an RTU frame is the same with a CRC of 2 bytes behind): only its first three
+    // bytes are read.
+    if (pdu.isEmpty())
+        return false;
+    const char head[3] = {0, pdu[0], pdu.size() > 1 ? pdu[1] : char(0)};
+    const std::optional<int> length = RtuFrame::expectedLength(
+            QByteArrayView(head, std::min<qsizetype>(3, pdu.size() + 1)), RtuFrame::Direction::Response);
     return length && *length == pdu.size() + 3;
 }
 
