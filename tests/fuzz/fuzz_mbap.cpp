@@ -41,9 +41,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             continue;
         }
         const size_t length = std::min<size_t>(event % 64 + 1, size - at);
-        const QByteArray chunk(reinterpret_cast<const char *>(data + at), qsizetype(length));
+        const QByteArrayView chunk(reinterpret_cast<const char *>(data + at), qsizetype(length));
         at += length;
-        sinceSent += chunk;
+        sinceSent.append(chunk.data(), chunk.size());
         const quint16 transaction = framer.transaction();
         const MbapFramer::Outcome outcome = framer.received(chunk);
         if (framer.pendingBytes() >= 6 + MbapFrame::maxLength)

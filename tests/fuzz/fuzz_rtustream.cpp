@@ -59,10 +59,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             next = 1 - next;
         } else {
             const size_t length = std::min<size_t>(event % 64 + 1, size - at);
-            const QByteArray chunk(reinterpret_cast<const char *>(data + at), qsizetype(length));
+            const QByteArrayView chunk(reinterpret_cast<const char *>(data + at), qsizetype(length));
             at += length;
             now += 1;
-            sinceSent += chunk;
+            sinceSent.append(chunk.data(), chunk.size());
             const std::optional<ModbusResult> result = framer.received(chunk, now);
             if (framer.pendingBytes() > 2 * RtuStreamFramer::keptBytes)
                 __builtin_trap();
