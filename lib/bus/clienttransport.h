@@ -52,7 +52,6 @@ protected:
 
     // The request under way (sent or waiting to go out), or nullptr.
     const ModbusRequest *request() const { return m_request ? &*m_request : nullptr; }
-    bool isTransmitted() const { return m_transmitted; }
     void startReplyTimer(int ms);
     // Ends the request under way with this result (a no-op when none is).
     void complete(const ModbusResult &result);
