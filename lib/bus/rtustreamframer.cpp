@@ -109,10 +109,10 @@ std::optional<qsizetype> RtuStreamFramer::findReply(const ModbusRequest &request
 {
     const quint8 function = quint8(request.function);
     // An adapter or device server that echoes what it sends: the request itself (a 0x06
-    // reply is the request's echo by the standard, so it is the answer there).
-    const QByteArray echo = request.function == ModbusRequest::Function::WriteSingle
-            ? QByteArray()
-            : RtuFrame::build(request.slave, request.pdu());
+    // reply is the request's echo by the standard, so it is the answer there). Made
+    // once a byte could begin it.
+    const bool mayEcho = request.function != ModbusRequest::Function::WriteSingle;
+    QByteArray echo;
     int badFrames = 0;
     int otherFrames = 0;
     std::optional<qsizetype> foundAt;
@@ -121,13 +121,17 @@ std::optional<qsizetype> RtuStreamFramer::findReply(const ModbusRequest &request
         const QByteArrayView head = QByteArrayView(buffer).sliced(at);
         if (quint8(head[0]) != request.slave)
             continue;
-        if (!echo.isEmpty() && head.startsWith(echo)) {
-            at += echo.size() - 1;
-            continue;
-        }
         if (head.size() < 2)
             break;
         const quint8 received = quint8(head[1]);
+        if (mayEcho && received == function) {
+            if (echo.isEmpty())
+                echo = RtuFrame::build(request.slave, request.pdu());
+            if (head.startsWith(echo)) {
+                at += echo.size() - 1;
+                continue;
+            }
+        }
         const bool ours = received == function || received == (function | 0x80);
         const std::optional<int> length = RtuFrame::expectedLength(head, RtuFrame::Direction::Response);
         if (!length || head.size() < *length) {
