@@ -1,5 +1,9 @@
 #include "bus/lineaddress.h"
 
+#include <QDir>
+#include <QFileInfo>
+#include <QHostAddress>
+#include <QHostInfo>
 #include <QRegularExpression>
 
 namespace jumo {
@@ -103,6 +107,73 @@ QString LineAddress::endpoint() const
     if (host.contains(QLatin1Char(':')))
         return QStringLiteral("[%1]:%2").arg(host).arg(port);
     return QStringLiteral("%1:%2").arg(host).arg(port);
+}
+
+namespace {
+
+// An IP address in one spelling; nullopt for a name.
+std::optional<QString> canonicalAddress(const QString &host)
+{
+    QHostAddress address;
+    if (!address.setAddress(host))
+        return std::nullopt;
+    bool mapped = false;
+    const quint32 ipv4 = address.toIPv4Address(&mapped);
+    if (mapped && address.protocol() == QAbstractSocket::IPv6Protocol)
+        address = QHostAddress(ipv4);   // ::ffff:127.0.0.1 is 127.0.0.1
+    return address.toString();
+}
+
+} // namespace
+
+QSet<QString> LineAddress::hostMeanings(const std::function<QStringList(const QString &)> &resolve) const
+{
+    if (const std::optional<QString> address = canonicalAddress(host))
+        return {*address};
+    const QString name = host.toLower();
+    // RFC 6761: localhost and its subdomains are the loopback, without asking anyone.
+    if (name == QLatin1String("localhost") || name.endsWith(QLatin1String(".localhost")))
+        return {QStringLiteral("127.0.0.1"), QStringLiteral("::1")};
+    QSet<QString> meanings;
+    if (resolve) {
+        for (const QString &resolved : resolve(name)) {
+            if (const std::optional<QString> address = canonicalAddress(resolved))
+                meanings.insert(*address);
+        }
+    }
+    if (meanings.isEmpty())
+        meanings.insert(name);
+    return meanings;
+}
+
+bool LineAddress::shareMaster(const LineAddress &a, const LineAddress &b,
+                              const std::function<QStringList(const QString &)> &resolve)
+{
+    if (a.kind != b.kind || a.kind == Kind::ModbusTcp)
+        return false;
+    if (a.kind == Kind::Serial) {
+        const auto identity = [](const QString &path) {
+            const QString canonical = QFileInfo(path).canonicalFilePath();   // by-id links, ./ and ../
+            return canonical.isEmpty() ? QDir::cleanPath(path) : canonical;
+        };
+        return identity(a.text) == identity(b.text);
+    }
+    if (a.port != b.port)
+        return false;
+    if (a.hostMeanings().intersects(b.hostMeanings()))
+        return true;
+    // Names are looked up only now: two device-server lines on one port that their
+    // literal meanings do not tell apart or together.
+    const bool named = !canonicalAddress(a.host) || !canonicalAddress(b.host);
+    return named && resolve && a.hostMeanings(resolve).intersects(b.hostMeanings(resolve));
+}
+
+QStringList LineAddress::lookUp(const QString &name)
+{
+    QStringList addresses;
+    for (const QHostAddress &address : QHostInfo::fromName(name).addresses())
+        addresses << address.toString();
+    return addresses;
 }
 
 } // namespace jumo

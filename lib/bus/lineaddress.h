@@ -4,8 +4,10 @@
 #pragma once
 
 #include <QCoreApplication>
+#include <QSet>
 #include <QString>
 
+#include <functional>
 #include <optional>
 
 namespace jumo {
@@ -32,6 +34,20 @@ public:
     bool isNetwork() const { return kind != Kind::Serial; }
     // "HOST:PORT", with brackets around an IPv6 address.
     QString endpoint() const;
+
+    // What the host means, for telling whether two addresses name one server: an IP
+    // address as the address it is in any spelling (an IPv4-mapped IPv6 address as its
+    // IPv4 one), "localhost" as both loopback addresses, another name as the addresses it
+    // resolves to when `resolve` is given (a blocking look-up), else the name itself.
+    QSet<QString> hostMeanings(const std::function<QStringList(const QString &)> &resolve = {}) const;
+    // Whether two lines talk to one master: one serial port (by its canonical path), or one
+    // device server (rtu+tcp, one port and a host meaning in common; names are looked up
+    // with `resolve` only when the literal meanings do not decide it). Modbus TCP lines
+    // never do: a gateway orders the connections it has.
+    static bool shareMaster(const LineAddress &a, const LineAddress &b,
+                            const std::function<QStringList(const QString &)> &resolve = {});
+    // The addresses a name resolves to (QHostInfo, blocking), as text; empty when it does not.
+    static QStringList lookUp(const QString &name);
 };
 
 } // namespace jumo

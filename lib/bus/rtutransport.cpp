@@ -5,40 +5,33 @@
 #include "protocol/rtuframe.h"
 
 #include <QDataStream>
-#include <QLoggingCategory>
 #include <QModbusReply>
 #include <QModbusRtuSerialClient>
 #include <QVariant>
 
-Q_DECLARE_LOGGING_CATEGORY(lcBus)
-
 namespace jumo {
 
 RtuTransport::RtuTransport(const QString &portName, const LineFormat &format, QObject *parent)
-    : Transport(parent), m_portName(portName), m_format(format)
+    : ClientTransport(parent), m_portName(portName), m_format(format)
 {
 }
 
 RtuTransport::~RtuTransport()
 {
-    if (m_client) {
-        // Replies still queued finish as aborted while the client closes; nobody may
-        // hear of it any more.
-        m_client->disconnect(this);
-        if (m_pending)
-            m_pending->disconnect(this);
-        m_client->disconnectDevice();
-    }
+    closeLink();
 }
 
-bool RtuTransport::open(QString *error)
+QString RtuTransport::peer() const
+{
+    return tr("the port %1").arg(m_portName);
+}
+
+ClientTransport::Link RtuTransport::openLink(QString *error)
 {
     if (!m_client) {
         m_client = new QModbusRtuSerialClient(this);
         connect(m_client, &QModbusDevice::errorOccurred, this, &RtuTransport::onErrorOccurred);
     }
-    if (m_client->state() != QModbusDevice::UnconnectedState)
-        m_client->disconnectDevice();
     // A by-id link is followed at every open, so a re-plugged adapter is found as the
     // ttyUSBn it is now; the device's own name keeps Qt's lock file (LCK..ttyUSB0) the
     // one every other program on it uses.
@@ -57,24 +50,25 @@ bool RtuTransport::open(QString *error)
             const QString reason = PortAccess::inspect(m_portName).message();
             *error = reason.isEmpty() ? m_client->errorString() : reason;
         }
-        m_client->disconnectDevice();
-        m_open = false;
-        return false;
+        closeLink();
+        return Link::Failed;
     }
-    m_open = true;
-    return true;
+    return Link::Open;
 }
 
-void RtuTransport::close()
+void RtuTransport::closeLink()
 {
-    m_open = false;
-    if (m_client)
-        m_client->disconnectDevice();   // a pending reply finishes as aborted: LineDown
-}
-
-bool RtuTransport::isOpen() const
-{
-    return m_open;
+    if (!m_client)
+        return;
+    // Replies still queued finish as aborted while the client closes; nobody may hear
+    // of it any more (a request under way has been ended already).
+    if (m_pending) {
+        m_pending->disconnect(this);
+        connect(m_pending, &QModbusReply::finished, m_pending, &QObject::deleteLater);
+        m_pending.clear();
+    }
+    const QSignalBlocker quiet(m_client);
+    m_client->disconnectDevice();
 }
 
 double RtuTransport::interFrameDelayMs() const
@@ -83,7 +77,7 @@ double RtuTransport::interFrameDelayMs() const
     return std::max(2.0, m_format.frameGapMs());
 }
 
-void RtuTransport::send(const ModbusRequest &request)
+void RtuTransport::transmit(const ModbusRequest &request)
 {
     m_client->setTimeout(request.timeoutMs);
     QModbusReply *reply = nullptr;
@@ -94,14 +88,10 @@ void RtuTransport::send(const ModbusRequest &request)
         reply = m_client->sendReadRequest(
                 QModbusDataUnit(QModbusDataUnit::HoldingRegisters, request.start, request.count), request.slave);
     if (!reply) {
-        ModbusResult result;
-        result.status = ModbusResult::Status::LineDown;
-        result.errorText = m_client->errorString();
-        QMetaObject::invokeMethod(this, [this, result] { deliver(result); }, Qt::QueuedConnection);
+        fail(ModbusResult::Status::LineDown, m_client->errorString());
         return;
     }
     m_pending = reply;
-    m_pendingRequest = request;
     if (reply->isFinished()) {
         // A broadcast is finished once its bytes are handed to the driver.
         QMetaObject::invokeMethod(this, [this, reply, request] { onReplyFinished(reply, request); },
@@ -114,13 +104,14 @@ void RtuTransport::send(const ModbusRequest &request)
 void RtuTransport::onReplyFinished(QModbusReply *reply, const ModbusRequest &request)
 {
     reply->deleteLater();
-    if (m_pending == reply)
-        m_pending.clear();
+    if (m_pending != reply)
+        return;   // of a link closed since
+    m_pending.clear();
     ModbusResult result = resultOf(request, reply->error(), reply->result(), reply->rawResult(), reply->errorString());
     const QList<QModbusDevice::IntermediateError> intermediate = reply->intermediateErrors();
     result.crcErrors = int(intermediate.count(QModbusDevice::ResponseCrcError));
     result.mismatches = int(intermediate.count(QModbusDevice::ResponseRequestMismatch));
-    deliver(result);
+    complete(result);
 }
 
 ModbusResult RtuTransport::resultOf(const ModbusRequest &request, QModbusDevice::Error error,
@@ -188,6 +179,31 @@ ModbusResult RtuTransport::resultOf(const ModbusRequest &request, QModbusDevice:
     return result;
 }
 
+ModbusResult RtuTransport::resultOfResponse(const ModbusRequest &request, QByteArrayView pdu)
+{
+    if (pdu.isEmpty())
+        return resultOf(request, QModbusDevice::TimeoutError, QModbusDataUnit(), QModbusResponse(), tr("no reply"));
+    const quint8 function = quint8(pdu[0]);
+    const QByteArray data = pdu.sliced(1).toByteArray();
+    const QModbusResponse raw(QModbusPdu::FunctionCode(function), data);
+    if (function & 0x80)
+        return resultOf(request, QModbusDevice::ProtocolError, QModbusDataUnit(), raw,
+                        tr("exception %1").arg(data.isEmpty() ? 0 : quint8(data.at(0))));
+    const auto wordAt = [&data](qsizetype at) { return quint16(quint8(data.at(at)) << 8 | quint8(data.at(at + 1))); };
+    QModbusDataUnit unit(QModbusDataUnit::HoldingRegisters);
+    if (function == 0x03 && !data.isEmpty() && data.size() == 1 + quint8(data.at(0)) && data.size() % 2 == 1) {
+        QList<quint16> words;
+        for (qsizetype at = 1; at + 1 < data.size(); at += 2)
+            words << wordAt(at);
+        unit = QModbusDataUnit(QModbusDataUnit::HoldingRegisters, request.start, words);
+    } else if (function == 0x06 && data.size() == 4) {
+        unit = QModbusDataUnit(QModbusDataUnit::HoldingRegisters, wordAt(0), QList<quint16>{wordAt(2)});
+    } else if (function == 0x10 && data.size() == 4) {
+        unit = QModbusDataUnit(QModbusDataUnit::HoldingRegisters, wordAt(0), wordAt(2));
+    }
+    return resultOf(request, QModbusDevice::NoError, unit, raw, QString());
+}
+
 quint8 RtuTransport::rawFunctionByte(const QModbusPdu &pdu)
 {
     QByteArray bytes;
@@ -205,25 +221,16 @@ bool RtuTransport::echoMatches(const ModbusRequest &request, const QModbusDataUn
     return unit.valueCount() == request.count;
 }
 
-void RtuTransport::deliver(const ModbusResult &result)
-{
-    emit finished(result);
-}
-
 void RtuTransport::onErrorOccurred(QModbusDevice::Error error)
 {
-    if (!m_open)
-        return;
     if (error != QModbusDevice::ConnectionError && error != QModbusDevice::ReadError
         && error != QModbusDevice::WriteError)
         return;
+    if (!isOpen())
+        return;   // a port that does not open says so through open()
     // An unplugged adapter keeps the client "connected" and can flood errors: close on
     // the first one and let the line come back when the port does.
-    const QString reason = m_client->errorString();
-    qCWarning(lcBus).noquote() << "port" << m_portName << "lost:" << reason;
-    m_open = false;
-    m_client->disconnectDevice();
-    emit lost(reason);
+    linkDown(m_client->errorString());
 }
 
 } // namespace jumo

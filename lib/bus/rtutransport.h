@@ -2,9 +2,10 @@
 // retries off (the scheduler retries after a quiet gap), the timeout set per request,
 // replies checked against the request before anything is decoded, and the first port
 // error taken as the loss of the line (Qt keeps its state "connected" and can flood).
+// The life cycle is ClientTransport's; the request's timing is Qt's own.
 #pragma once
 
-#include "bus/transport.h"
+#include "bus/clienttransport.h"
 #include "protocol/lineformat.h"
 
 #include <QModbusDataUnit>
@@ -17,7 +18,7 @@ class QModbusRtuSerialClient;
 
 namespace jumo {
 
-class RtuTransport final : public Transport
+class RtuTransport final : public ClientTransport
 {
     Q_OBJECT
 
@@ -25,10 +26,6 @@ public:
     RtuTransport(const QString &portName, const LineFormat &format, QObject *parent = nullptr);
     ~RtuTransport() override;
 
-    bool open(QString *error) override;
-    void close() override;
-    bool isOpen() const override;
-    void send(const ModbusRequest &request) override;
     double interFrameDelayMs() const override;
 
     // What a finished reply means for the request it answers (Qt's error, the data unit
@@ -38,21 +35,25 @@ public:
     static ModbusResult resultOf(const ModbusRequest &request, QModbusDevice::Error error,
                                  const QModbusDataUnit &unit, const QModbusResponse &raw,
                                  const QString &errorString);
+    // The same for a response PDU as received (function code and data) by a transport
+    // that frames replies itself: decoded as Qt's client decodes it, then classified.
+    static ModbusResult resultOfResponse(const ModbusRequest &request, QByteArrayView pdu);
 
 private:
     static bool echoMatches(const ModbusRequest &request, const QModbusDataUnit &unit);
     // The function code byte as received (0x80 set for an exception), 0 for no response.
     static quint8 rawFunctionByte(const QModbusPdu &pdu);
+    QString peer() const override;
+    Link openLink(QString *error) override;
+    void closeLink() override;
+    void transmit(const ModbusRequest &request) override;
     void onReplyFinished(QModbusReply *reply, const ModbusRequest &request);
     void onErrorOccurred(QModbusDevice::Error error);
-    void deliver(const ModbusResult &result);
 
     QString m_portName;
     LineFormat m_format;
     QModbusRtuSerialClient *m_client = nullptr;
     QPointer<QModbusReply> m_pending;
-    ModbusRequest m_pendingRequest;
-    bool m_open = false;
 };
 
 } // namespace jumo

@@ -7,8 +7,6 @@
 #include "protocol/jsonfieldreader.h"
 #include "protocol/regularfile.h"
 
-#include <QDir>
-#include <QFileInfo>
 #include <QHash>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -134,34 +132,32 @@ QStringList nameLines(QList<LineConfig> &lines)
 
 // A serial port or a serial device server has one master: two lines of one station on
 // it would talk over each other. (Two lines through one Modbus TCP gateway are two
-// connections the gateway orders, and allowed.)
+// connections the gateway orders, and allowed.) Host names are looked up (once each)
+// only when two device-server lines on one port are not told apart by their addresses.
 QStringList sharedAddresses(const QList<LineConfig> &lines)
 {
-    const auto identity = [](const QString &text) -> QString {
-        const std::optional<LineAddress> address = LineAddress::parse(text, nullptr);
-        if (!address || address->kind == LineAddress::Kind::ModbusTcp)
-            return QString();
-        if (address->kind == LineAddress::Kind::RtuOverTcp)
-            return QStringLiteral("rtu+tcp://%1:%2").arg(address->host.toLower()).arg(address->port);
-        const QString canonical = QFileInfo(text).canonicalFilePath();   // by-id links, ./ and ../
-        return canonical.isEmpty() ? QDir::cleanPath(text) : canonical;
+    QHash<QString, QStringList> looked;
+    const auto resolve = [&looked](const QString &name) {
+        if (!looked.contains(name))
+            looked.insert(name, LineAddress::lookUp(name));
+        return looked.value(name);
     };
+    QList<std::optional<LineAddress>> addresses;
+    for (const LineConfig &line : lines)
+        addresses << LineAddress::parse(line.settings.portName, nullptr);
     QStringList problems;
-    QHash<QString, qsizetype> first;
     for (qsizetype i = 0; i < lines.size(); ++i) {
-        const QString key = identity(lines[i].settings.portName);
-        if (key.isEmpty())
-            continue;
-        if (const auto it = first.constFind(key); it != first.cend()) {
+        for (qsizetype j = 0; j < i && addresses[i]; ++j) {
+            if (!addresses[j] || !LineAddress::shareMaster(*addresses[j], *addresses[i], resolve))
+                continue;
             problems << QStringLiteral("%1: %2").arg(
                     lineWhere(i, lines[i].name),
                     StationConfig::tr("'port' %1 is the port of lines[%2] (%3) too: a line has one master, so give "
                                       "the devices of both to one line")
                             .arg(lines[i].settings.portName)
-                            .arg(*it)
-                            .arg(lines[*it].name));
-        } else {
-            first.insert(key, i);
+                            .arg(j)
+                            .arg(lines[j].name));
+            break;
         }
     }
     return problems;

@@ -1,5 +1,6 @@
 #include "sim/simulatorserver.h"
 
+#include "protocol/mbapframe.h"
 #include "protocol/rtuframe.h"
 #include "sim/simulatorline.h"
 
@@ -12,20 +13,7 @@ namespace jumo {
 
 namespace {
 
-constexpr int mbapHeaderBytes = 7;
 constexpr quint8 gatewayTargetFailed = 0x0B;
-
-QByteArray mbap(quint16 transaction, quint8 unit, const QByteArray &pdu)
-{
-    QByteArray out;
-    const quint16 length = quint16(pdu.size() + 1);
-    out.append(char(transaction >> 8)).append(char(transaction & 0xFF));
-    out.append('\0').append('\0');   // protocol id: Modbus
-    out.append(char(length >> 8)).append(char(length & 0xFF));
-    out.append(char(unit));
-    out.append(pdu);
-    return out;
-}
 
 } // namespace
 
@@ -115,11 +103,11 @@ void SimulatorServer::serveRtu(QTcpSocket *socket, QByteArray &buffer)
 
 void SimulatorServer::serveMbap(QTcpSocket *socket, QByteArray &buffer)
 {
-    while (buffer.size() >= mbapHeaderBytes) {
-        const quint16 transaction = quint16(quint8(buffer[0]) << 8 | quint8(buffer[1]));
-        const quint16 protocol = quint16(quint8(buffer[2]) << 8 | quint8(buffer[3]));
-        const quint16 length = quint16(quint8(buffer[4]) << 8 | quint8(buffer[5]));
-        if (protocol != 0 || length < 2 || length > 254) {
+    while (true) {
+        const MbapFrame::Taken request = MbapFrame::take(buffer);
+        if (request.kind == MbapFrame::Taken::Kind::Incomplete)
+            return;
+        if (request.kind == MbapFrame::Taken::Kind::Unframable) {
             // Not Modbus: a gateway closes such a connection.
             qCWarning(lcSim) << "not a Modbus TCP frame, closing the connection";
             m_buffers.remove(socket);
@@ -127,11 +115,10 @@ void SimulatorServer::serveMbap(QTcpSocket *socket, QByteArray &buffer)
             socket->deleteLater();
             return;
         }
-        if (buffer.size() < 6 + length)
-            return;
-        const quint8 unit = quint8(buffer[6]);
-        const QByteArray pdu = buffer.mid(mbapHeaderBytes, length - 1);
-        buffer.remove(0, 6 + length);
+        buffer.remove(0, request.size);
+        const quint16 transaction = request.header.transaction;
+        const quint8 unit = request.header.unit;
+        const QByteArray &pdu = request.pdu;
 
         // The gateway puts the request on its serial line as an RTU frame.
         const SimulatorLine::Answer answer = m_line->answer(RtuFrame::build(unit, pdu));
@@ -145,10 +132,11 @@ void SimulatorServer::serveMbap(QTcpSocket *socket, QByteArray &buffer)
             // Silence or garbage from the device: after its timeout the gateway says so.
             QByteArray exception;
             exception.append(char(quint8(pdu.isEmpty() ? 0 : pdu[0]) | 0x80)).append(char(gatewayTargetFailed));
-            m_line->sendLater(socket, mbap(transaction, unit, exception), m_gatewayTimeoutMs);
+            m_line->sendLater(socket, MbapFrame::build(transaction, unit, exception), m_gatewayTimeoutMs);
             continue;
         }
-        m_line->sendLater(socket, mbap(transaction, unit, reply.mid(1, reply.size() - 3)), answer.delayMs);
+        m_line->sendLater(socket, MbapFrame::build(transaction, unit, QByteArrayView(reply).sliced(1, reply.size() - 3)),
+                          answer.delayMs);
     }
 }
 

@@ -1,11 +1,13 @@
 // The line kinds end to end: the bus over a Modbus TCP gateway (tcp://) and over a
 // serial device server (rtu+tcp://), each against our simulator and against the
 // independent libmodbus peer. Reads, writes verified by read-back, the gateway's own
-// exceptions, a gateway that goes away and comes back, stray bytes on a device server,
-// broadcasts, and jumoctl reading from each kind.
+// exceptions, a gateway that goes away and comes back, stray bytes and late replies on a
+// device server, broadcasts, jumoctl reading from each kind and over IPv6, and a gateway
+// that lies: another unit's reply, changed ids, junk and wrong lengths.
 #include "bus/bus.h"
 #include "bus/linetiming.h"
 #include "clirun.h"
+#include "lyinggateway.h"
 #include "sim/simulatorserver.h"
 #include "testpeers.h"
 
@@ -13,6 +15,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QScopeGuard>
+#include <QTcpServer>
 #include <QTcpSocket>
 #include <QTest>
 
@@ -123,6 +126,49 @@ struct Observer
     QSet<QString> statuses;
 };
 
+// Counts every polled value the bus takes as current: right (expectedValue) or wrong.
+void watch(Bus &bus, Observer &observed)
+{
+    QObject::connect(&bus, &Bus::entriesUpdated, &bus, [&bus, &observed](DeviceId id, const QStringList &ids) {
+        const quint8 slave = bus.deviceAddress(id);
+        for (const QString &entryId : ids) {
+            if (!polledIds.contains(entryId))
+                continue;
+            const EntryState *state = bus.entryState(id, entryId);
+            observed.statuses << QStringLiteral("%1:%2").arg(slave).arg(state->statusName());
+            if (state->error != ReadError::None || state->validity != Validity::Current)
+                continue;
+            if (std::fabs(state->value.value.toDouble() - expectedValue(entryId, slave)) > 1e-3) {
+                ++observed.wrong;
+                qWarning() << "wrong value" << slave << entryId << state->value.display;
+            } else {
+                ++observed.good[id];
+            }
+        }
+    });
+}
+
+// jumo-sim as a gateway or device server on its own (--tcp or --rtu-tcp LISTEN): the
+// address it says to connect to, empty if it did not.
+QString startJumoSim(QProcess &sim, const QString &kind, const QString &listen)
+{
+    sim.start(QStringLiteral(JUMO_SIM_PATH),
+              {kind == "tcp" ? "--tcp" : "--rtu-tcp", listen, "--baud", "38400", "ipc300@1", "tya200@2"});
+    if (!sim.waitForStarted(5000))
+        return {};
+    QElapsedTimer timer;
+    timer.start();
+    QByteArray out;
+    while (timer.elapsed() < 10000 && !out.contains("connect to ")) {
+        sim.waitForReadyRead(100);
+        out += sim.readAllStandardOutput();
+    }
+    const qsizetype at = out.indexOf("connect to ");
+    if (at < 0)
+        return {};
+    return QString::fromUtf8(out.mid(at + 11)).section('\n', 0, 0).trimmed();
+}
+
 } // namespace
 
 class tst_LineKinds : public QObject
@@ -149,8 +195,30 @@ private slots:
     void jumoctlReadsEachKind_data();
     void jumoctlReadsEachKind();
     void simulatedGatewayEchoesTransactionIds();
+    void jumoctlReadsOverIpv6_data();
+    void jumoctlReadsOverIpv6();
+    void lyingGatewayNeverGivesAnotherUnitsValue_data();
+    void lyingGatewayNeverGivesAnotherUnitsValue();
+    void lyingGatewayNeverConfirmsAWrite_data();
+    void lyingGatewayNeverConfirmsAWrite();
+    void badGatewayFrameDoesNotCutADeviceOff_data();
+    void badGatewayFrameDoesNotCutADeviceOff();
+    void deviceServerLateRepliesAreNeverTaken();
 
 private:
+    // The simulated ipc300@1, ipc300@2 (with the values expectedValue gives) and
+    // dtron300@4 behind a gateway that lies when told to, and a bus polling the two IPCs.
+    struct Lying
+    {
+        Lying() : gateway(&line) { }
+        SimulatorLine line;
+        LyingGateway gateway;
+        Bus bus;
+        DeviceId first = 0;
+        DeviceId second = 0;
+        Observer observed;
+    };
+    bool prepare(Lying &s);
     struct Setup
     {
         explicit Setup(const QString &kind, const QString &peer) : far(kind, peer) { }
@@ -183,38 +251,28 @@ void tst_LineKinds::addRows(const QStringList &kinds)
     }
 }
 
-bool tst_LineKinds::prepare(Setup &s, int retries)
+// The bus on a line, polling ipc300@1 and ipc300@2, every value watched.
+static bool openBus(Bus &bus, const QString &url, int retries, DeviceId *first, DeviceId *second, Observer &observed)
 {
-    if (!s.far.start({1, 2}))
-        return false;
     BusSettings settings;
-    settings.portName = s.far.url();
+    settings.portName = url;
     settings.format = testFormat();
     settings.retries = retries;   // the timeout is derived: the family's at 19200 baud + the network margin
-    s.bus.setSettings(settings);
-    if (!s.bus.open())
+    bus.setSettings(settings);
+    if (!bus.open())
         return false;
     const auto map = families().family("ipc300");
-    s.first = s.bus.addDevice(map, 1);
-    s.second = s.bus.addDevice(map, 2);
-    for (DeviceId id : {s.first, s.second})
-        s.bus.setPollEntries(id, polledIds);
-    QObject::connect(&s.bus, &Bus::entriesUpdated, &s.bus, [&s](DeviceId id, const QStringList &ids) {
-        const quint8 slave = s.bus.deviceAddress(id);
-        for (const QString &entryId : ids) {
-            const EntryState *state = s.bus.entryState(id, entryId);
-            s.observed.statuses << QStringLiteral("%1:%2").arg(slave).arg(state->statusName());
-            if (state->error != ReadError::None || state->validity != Validity::Current)
-                continue;
-            if (std::fabs(state->value.value.toDouble() - expectedValue(entryId, slave)) > 1e-3) {
-                ++s.observed.wrong;
-                qWarning() << "wrong value" << slave << entryId << state->value.display;
-            } else {
-                ++s.observed.good[id];
-            }
-        }
-    });
+    *first = bus.addDevice(map, 1);
+    *second = bus.addDevice(map, 2);
+    for (DeviceId id : {*first, *second})
+        bus.setPollEntries(id, polledIds);
+    watch(bus, observed);
     return true;
+}
+
+bool tst_LineKinds::prepare(Setup &s, int retries)
+{
+    return s.far.start({1, 2}) && openBus(s.bus, s.far.url(), retries, &s.first, &s.second, s.observed);
 }
 
 void tst_LineKinds::readsAndWrites_data()
@@ -479,19 +537,7 @@ void tst_LineKinds::jumoctlReadsEachKind()
     });
     if (peer == "jumo-sim") {
         // jumo-sim as the gateway or device server itself, on a port it picks.
-        sim.start(QStringLiteral(JUMO_SIM_PATH), {kind == "tcp" ? "--tcp" : "--rtu-tcp", "127.0.0.1:0", "--baud",
-                                                  "38400", "ipc300@1", "tya200@2"});
-        QVERIFY(sim.waitForStarted(5000));
-        QElapsedTimer timer;
-        timer.start();
-        QByteArray out;
-        while (timer.elapsed() < 10000 && !out.contains("connect to ")) {
-            sim.waitForReadyRead(100);
-            out += sim.readAllStandardOutput();
-        }
-        const qsizetype at = out.indexOf("connect to ");
-        QVERIFY2(at >= 0, out.constData());
-        url = QString::fromUtf8(out.mid(at + 11)).section('\n', 0, 0).trimmed();
+        url = startJumoSim(sim, kind, "127.0.0.1:0");
         QVERIFY2(url.startsWith(kind + "://127.0.0.1:"), qPrintable(url));
     } else if (peer == "socat + jumo-sim") {
         // A serial device server in front of jumo-sim on a pty, as in a cabinet.
@@ -543,6 +589,190 @@ void tst_LineKinds::simulatedGatewayEchoesTransactionIds()
     QCOMPARE(replies.left(7).toHex(), QByteArray("12340000000701"));   // MBAP: its id, length 7, unit 1
     QCOMPARE(replies.mid(7, 2).toHex(), QByteArray("0304"));            // 2 words
     QCOMPARE(replies.mid(13).toHex(), QByteArray("123500000003" "09" "830b"));   // the gateway's 0x0B
+}
+
+void tst_LineKinds::jumoctlReadsOverIpv6_data()
+{
+    QTest::addColumn<QString>("kind");
+    QTest::newRow("tcp://[::1]") << "tcp";
+    QTest::newRow("rtu+tcp://[::1]") << "rtu+tcp";
+}
+
+void tst_LineKinds::jumoctlReadsOverIpv6()
+{
+    QFETCH(QString, kind);
+    {
+        QTcpServer probe;
+        if (!probe.listen(QHostAddress::LocalHostIPv6, 0))
+            QSKIP("this machine has no IPv6 loopback (::1)");
+    }
+    QProcess sim;
+    auto stopSim = qScopeGuard([&sim] {
+        sim.terminate();
+        if (!sim.waitForFinished(3000))
+            sim.kill();
+    });
+    // README's own syntax: the address in brackets.
+    const QString url = startJumoSim(sim, kind, "[::1]:0");
+    QVERIFY2(url.startsWith(kind + "://[::1]:"), qPrintable(url));
+    const QStringList line{"--port", url, "--baud", "38400"};
+    const Run r = run(QStringList{"read"} + line + QStringList{"ipc300@1", "load_voltage"});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    QVERIFY2(r.out.contains("load_voltage = "), qPrintable(r.out));
+}
+
+bool tst_LineKinds::prepare(Lying &s)
+{
+    s.line.setFormat(testFormat());
+    const auto map = families().family("ipc300");
+    for (quint8 slave : {quint8(1), quint8(2)}) {
+        s.line.addDevice(map, slave);
+        for (const QString &id : polledIds) {
+            if (!s.line.device(slave)->setWords(map->entry(id)->address,
+                                                ValueCodec::encodeFloat(float(expectedValue(id, slave)), WordOrder::CDAB)))
+                return false;
+        }
+    }
+    s.line.addDevice(families().family("dtron300"), 4);
+    return s.gateway.listen() && openBus(s.bus, s.gateway.url(), 1, &s.first, &s.second, s.observed);
+}
+
+void tst_LineKinds::lyingGatewayNeverGivesAnotherUnitsValue_data()
+{
+    QTest::addColumn<int>("lie");
+    QTest::newRow("unit 2's reply to unit 1") << int(LyingGateway::Lie::OtherUnitsReply);
+    QTest::newRow("unit 1's reply said to be unit 2's") << int(LyingGateway::Lie::UnitIdChanged);
+    QTest::newRow("unit 1's reply with protocol id 1") << int(LyingGateway::Lie::ProtocolIdChanged);
+}
+
+void tst_LineKinds::lyingGatewayNeverGivesAnotherUnitsValue()
+{
+    QFETCH(int, lie);
+    Lying s;
+    QVERIFY(prepare(s));
+    s.gateway.lie(1, LyingGateway::Lie(lie));
+    // Unit 2 is read as it is; no reply for unit 1 is taken, and unit 1 goes offline.
+    QTRY_VERIFY_WITH_TIMEOUT(s.observed.good.value(s.second) >= 4, 20000);
+    QTRY_COMPARE_WITH_TIMEOUT(s.bus.condition(s.first).state, DeviceCondition::State::Offline, 20000);
+    QCOMPARE(s.observed.wrong, 0);
+    QCOMPARE(s.observed.good.value(s.first), 0);
+    QVERIFY(s.bus.statistics(s.first)->mismatches > 0);
+    QVERIFY(s.bus.isOnline(s.second));
+
+    // jumoctl says it has no value, never unit 2's.
+    const Run r = run({"read", "--port", s.gateway.url(), "--baud", "19200", "ipc300@1", "load_voltage"});
+    QVERIFY2(r.code != 0, qPrintable(r.out));
+    QVERIFY2(!r.out.contains("202"), qPrintable(r.out));
+    QVERIFY2(!r.err.isEmpty(), "says why");
+
+    // Told the truth again, unit 1 comes back.
+    s.gateway.lie(1, LyingGateway::Lie::None);
+    QTRY_VERIFY_WITH_TIMEOUT(s.observed.good.value(s.first) >= 2, 40000);
+    QCOMPARE(s.observed.wrong, 0);
+}
+
+void tst_LineKinds::lyingGatewayNeverConfirmsAWrite_data()
+{
+    QTest::addColumn<int>("lie");
+    QTest::newRow("unit 2's echo") << int(LyingGateway::Lie::OtherUnitsReply);
+    QTest::newRow("unit 1's echo said to be unit 2's") << int(LyingGateway::Lie::UnitIdChanged);
+    QTest::newRow("unit 1's echo with protocol id 1") << int(LyingGateway::Lie::ProtocolIdChanged);
+}
+
+void tst_LineKinds::lyingGatewayNeverConfirmsAWrite()
+{
+    QFETCH(int, lie);
+    Lying s;
+    QVERIFY(prepare(s));
+    const DeviceId dtron = s.bus.addDevice(families().family("dtron300"), 4);
+    QTRY_VERIFY_WITH_TIMEOUT(s.observed.good.value(s.first) >= 2, 20000);
+    s.bus.setPolling(false);
+    QSignalSpy finished(&s.bus, &Bus::writeFinished);
+
+    // A value: repeated (it is safe), never confirmed by a reply that is not its own.
+    s.gateway.lie(1, LyingGateway::Lie(lie), -1, true);
+    s.bus.write(s.first, "input_setpoint", "12.5");
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 20000);
+    WriteOutcome outcome = finished.at(0).at(1).value<WriteOutcome>();
+    QVERIFY2(outcome.result == WriteOutcome::Result::Unknown, qPrintable(outcome.message));
+    QVERIFY2(outcome.message.contains("may or may not"), qPrintable(outcome.message));
+
+    // A command: sent once, its outcome unknown.
+    s.gateway.lie(4, LyingGateway::Lie(lie), -1, true);
+    const int frames = s.line.writeRequestsReceived();
+    s.bus.write(dtron, "program_controller_functions", "segment_change");
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 2, 20000);
+    outcome = finished.at(1).at(1).value<WriteOutcome>();
+    QVERIFY2(outcome.result == WriteOutcome::Result::Unknown, qPrintable(outcome.message));
+    QVERIFY2(outcome.message.contains("not sent again"), qPrintable(outcome.message));
+    QTest::qWait(1000);
+    QCOMPARE(s.line.writeRequestsReceived(), frames + 1);
+}
+
+void tst_LineKinds::badGatewayFrameDoesNotCutADeviceOff_data()
+{
+    QTest::addColumn<int>("lie");
+    QTest::addColumn<int>("count");
+    QTest::newRow("13 junk bytes after one reply") << int(LyingGateway::Lie::JunkAfterReply) << 1;
+    QTest::newRow("one MBAP length 2 bytes short") << int(LyingGateway::Lie::LengthTwoShort) << 1;
+    QTest::newRow("junk after every reply") << int(LyingGateway::Lie::JunkAfterReply) << -1;
+}
+
+void tst_LineKinds::badGatewayFrameDoesNotCutADeviceOff()
+{
+    QFETCH(int, lie);
+    QFETCH(int, count);
+    Lying s;
+    QVERIFY(prepare(s));
+    QTRY_VERIFY_WITH_TIMEOUT(s.observed.good.value(s.first) >= 2 && s.observed.good.value(s.second) >= 2, 20000);
+    const int connections = s.gateway.connections();
+    s.gateway.lie(1, LyingGateway::Lie(lie), count);
+    s.observed = Observer();
+    QElapsedTimer clock;
+    clock.start();
+    // The connection is made anew and the device answers again.
+    QTRY_VERIFY_WITH_TIMEOUT(s.observed.good.value(s.first) >= 4, 20000);
+    qInfo("unit 1 read 4 times again %lld ms after the bad frame(s); %d new connection(s)", clock.elapsed(),
+          s.gateway.connections() - connections);
+    QVERIFY(s.gateway.connections() > connections);
+    QCOMPARE(s.observed.wrong, 0);
+    QCOMPARE(s.bus.state(), LineState::Connected);
+    QVERIFY(s.bus.isOnline(s.first));
+    QVERIFY(s.bus.isOnline(s.second));
+
+    // jumoctl reads it through the same gateway afterwards.
+    s.bus.close();
+    const Run r = run({"read", "--port", s.gateway.url(), "--baud", "19200", "ipc300@1", "load_voltage", "--json"});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    const QJsonArray rows = QJsonDocument::fromJson(r.out.toUtf8()).array();
+    QCOMPARE(rows.size(), 1);
+    QCOMPARE(rows[0].toObject()["value"].toDouble(), expectedValue("load_voltage", 1));
+}
+
+void tst_LineKinds::deviceServerLateRepliesAreNeverTaken()
+{
+    Setup s("rtu+tcp", "simulator");
+    QVERIFY(prepare(s));
+    QTRY_VERIFY_WITH_TIMEOUT(s.observed.good.value(s.first) >= 4, 20000);
+    // Every reply of unit 1 comes 0.75 s late, beyond its timeout: its two polled
+    // blocks have replies of one shape, so a late reply fits the next request.
+    QVERIFY(s.far.peer()->setFault(1, "late", -1, 750));
+    QTRY_COMPARE_WITH_TIMEOUT(s.bus.condition(s.first).state, DeviceCondition::State::Offline, 40000);
+    QTest::qWait(3000);
+    QCOMPARE(s.observed.wrong, 0);
+    QVERIFY(s.bus.statistics(s.first)->mismatches > 0);
+    QVERIFY(s.bus.isOnline(s.second));
+
+    // jumoctl reading that device says it has no value, never another block's.
+    s.bus.close();
+    const Run r = run({"read", "--port", s.far.url(), "--baud", "19200", "--no-identify", "ipc300@1", "load_voltage",
+                       "analog_output_value", "--json"});
+    for (const QJsonValue &row : QJsonDocument::fromJson(r.out.toUtf8()).array()) {
+        const QJsonObject o = row.toObject();
+        QVERIFY2(o["status"].toString() != "ok"
+                         || std::fabs(o["value"].toDouble() - expectedValue(o["id"].toString(), 1)) < 1e-3,
+                 qPrintable(r.out));
+    }
 }
 
 QTEST_GUILESS_MAIN(tst_LineKinds)

@@ -16,6 +16,8 @@ private slots:
     void refuses_data();
     void refuses();
     void kindNames();
+    void shareMaster_data();
+    void shareMaster();
 };
 
 void tst_LineAddress::parses_data()
@@ -110,6 +112,55 @@ void tst_LineAddress::kindNames()
     QCOMPARE(LineAddress::parse("/dev/ttyUSB0", nullptr)->kindName(), QString("rtu"));
     QCOMPARE(LineAddress::parse("tcp://h", nullptr)->kindName(), QString("tcp"));
     QCOMPARE(LineAddress::parse("rtu+tcp://h:1", nullptr)->kindName(), QString("rtu+tcp"));
+}
+
+void tst_LineAddress::shareMaster_data()
+{
+    QTest::addColumn<QString>("a");
+    QTest::addColumn<QString>("b");
+    QTest::addColumn<bool>("shared");   // with names looked up
+    QTest::addColumn<bool>("literally");   // without a look-up
+    QTest::newRow("one address") << "rtu+tcp://10.0.0.21:4001" << "rtu+tcp://10.0.0.21:4001" << true << true;
+    QTest::newRow("another port") << "rtu+tcp://10.0.0.21:4001" << "rtu+tcp://10.0.0.21:4002" << false << false;
+    QTest::newRow("another address") << "rtu+tcp://10.0.0.21:4001" << "rtu+tcp://10.0.0.22:4001" << false << false;
+    QTest::newRow("IPv4-mapped") << "rtu+tcp://10.0.0.21:4001" << "rtu+tcp://[::ffff:10.0.0.21]:4001" << true << true;
+    QTest::newRow("IPv4-mapped in hex") << "rtu+tcp://10.0.0.21:4001" << "rtu+tcp://[::ffff:a00:15]:4001" << true << true;
+    QTest::newRow("localhost") << "rtu+tcp://localhost:4001" << "rtu+tcp://127.0.0.1:4001" << true << true;
+    QTest::newRow("a subdomain of localhost") << "rtu+tcp://nport.localhost:4001" << "rtu+tcp://[::1]:4001" << true
+                                              << true;
+    QTest::newRow("a name and the address it has") << "rtu+tcp://cabinet-7:4001" << "rtu+tcp://10.0.0.21:4001" << true
+                                                   << false;
+    QTest::newRow("two names of one address") << "rtu+tcp://cabinet-7:4001" << "rtu+tcp://NPORT-7.plant:4001" << true
+                                              << false;
+    QTest::newRow("a name that does not resolve") << "rtu+tcp://nowhere:4001" << "rtu+tcp://10.0.0.21:4001" << false
+                                                  << false;
+    QTest::newRow("one name in two cases") << "rtu+tcp://Nowhere:4001" << "rtu+tcp://nowhere:4001" << true << true;
+    QTest::newRow("one gateway") << "tcp://10.0.0.20" << "tcp://10.0.0.20" << false << false;
+    QTest::newRow("a gateway and a device server") << "tcp://10.0.0.20:4001" << "rtu+tcp://10.0.0.20:4001" << false
+                                                   << false;
+}
+
+void tst_LineAddress::shareMaster()
+{
+    QFETCH(QString, a);
+    QFETCH(QString, b);
+    QFETCH(bool, shared);
+    QFETCH(bool, literally);
+    int lookUps = 0;
+    // A resolver of this test's own: no name service is asked.
+    const auto resolve = [&lookUps](const QString &name) -> QStringList {
+        ++lookUps;
+        if (name == "cabinet-7" || name == "nport-7.plant")
+            return {"10.0.0.21", "::ffff:10.0.0.21"};
+        return {};
+    };
+    const LineAddress first = *LineAddress::parse(a, nullptr);
+    const LineAddress second = *LineAddress::parse(b, nullptr);
+    QCOMPARE(LineAddress::shareMaster(first, second, resolve), shared);
+    QCOMPARE(LineAddress::shareMaster(second, first, resolve), shared);
+    QCOMPARE(LineAddress::shareMaster(first, second), literally);
+    if (literally)
+        QCOMPARE(lookUps, 0);   // nothing is looked up that the addresses decide
 }
 
 QTEST_APPLESS_MAIN(tst_LineAddress)

@@ -64,6 +64,8 @@ private slots:
     void fromLinesNamesLinesByPosition();
     void fromLinesRefuses_data();
     void fromLinesRefuses();
+    void fromLinesAcceptsDistinctMasters_data();
+    void fromLinesAcceptsDistinctMasters();
     void deviceNames();
     void resolveDevice_data();
     void resolveDevice();
@@ -511,6 +513,45 @@ void tst_StationConfig::fromLinesRefuses_data()
             << QStringList{"rtu+tcp://Server.local:4001,name=a", "rtu+tcp://server.local:4001,name=b"}
             << "lines[1] (b): 'port' rtu+tcp://server.local:4001 is the port of lines[0] (a) too: a line has one "
                "master, so give the devices of both to one line";
+    // The same device server in other words: compared by what the addresses mean.
+    QTest::newRow("one device server by address and as localhost")
+            << QStringList{"rtu+tcp://127.0.0.1:4001,name=a", "rtu+tcp://localhost:4001,name=b"}
+            << "lines[1] (b): 'port' rtu+tcp://localhost:4001 is the port of lines[0] (a) too: a line has one "
+               "master, so give the devices of both to one line";
+    QTest::newRow("one device server as an IPv4-mapped IPv6 address")
+            << QStringList{"rtu+tcp://127.0.0.1:4001,name=a", "rtu+tcp://[::ffff:127.0.0.1]:4001,name=b"}
+            << "lines[1] (b): 'port' rtu+tcp://[::ffff:127.0.0.1]:4001 is the port of lines[0] (a) too: a line has "
+               "one master, so give the devices of both to one line";
+    QTest::newRow("one device server in two IPv6 spellings")
+            << QStringList{"rtu+tcp://[2001:db8::7]:950,name=a", "rtu+tcp://[2001:DB8:0:0:0:0:0:7]:950,name=b"}
+            << "lines[1] (b): 'port' rtu+tcp://[2001:DB8:0:0:0:0:0:7]:950 is the port of lines[0] (a) too: a line has "
+               "one master, so give the devices of both to one line";
+    QTest::newRow("localhost and the IPv6 loopback")
+            << QStringList{"rtu+tcp://[::1]:4001,name=a", "/dev/ttyS0,name=b", "rtu+tcp://LOCALHOST:4001,name=c"}
+            << "lines[2] (c): 'port' rtu+tcp://LOCALHOST:4001 is the port of lines[0] (a) too: a line has one "
+               "master, so give the devices of both to one line";
+}
+
+void tst_StationConfig::fromLinesAcceptsDistinctMasters_data()
+{
+    QTest::addColumn<QStringList>("specs");
+    QTest::newRow("one device server, two ports") << QStringList{"rtu+tcp://127.0.0.1:4001", "rtu+tcp://127.0.0.1:4002"};
+    QTest::newRow("two loopback addresses") << QStringList{"rtu+tcp://127.0.0.1:4001", "rtu+tcp://127.0.0.2:4001"};
+    QTest::newRow("IPv4 and IPv6 loopback") << QStringList{"rtu+tcp://127.0.0.1:4001", "rtu+tcp://[::1]:4001"};
+    // A gateway orders the connections it has.
+    QTest::newRow("one gateway twice") << QStringList{"tcp://127.0.0.1:1502", "tcp://localhost:1502"};
+    QTest::newRow("a gateway and a device server on one port")
+            << QStringList{"tcp://127.0.0.1:1502", "rtu+tcp://127.0.0.1:1502"};
+}
+
+void tst_StationConfig::fromLinesAcceptsDistinctMasters()
+{
+    QFETCH(QStringList, specs);
+    QString error;
+    QList<LineConfig> lines;
+    for (const QString &spec : specs)
+        lines << *StationConfig::parseLineSpec(spec, &error);
+    QVERIFY2(StationConfig::fromLines(lines, &error), qPrintable(error));
 }
 
 void tst_StationConfig::fromLinesRefuses()
