@@ -2,6 +2,67 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>QModbusClient</name>
+    <message>
+        <location filename="../lib/protocol/translations.cpp" line="+38"/>
+        <source>Request timeout.</source>
+        <translation>Zeitüberschreitung der Anfrage.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reply aborted due to connection closure.</source>
+        <translation>Antwort abgebrochen, weil die Verbindung geschlossen wurde.</translation>
+    </message>
+</context>
+<context>
+    <name>QModbusDevice</name>
+    <message>
+        <location line="-10"/>
+        <source>Referenced serial device does not exist.</source>
+        <translation>Das angegebene serielle Gerät existiert nicht.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cannot open serial device due to permissions.</source>
+        <translation>Das serielle Gerät kann wegen fehlender Berechtigung nicht geöffnet werden.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cannot open serial device.</source>
+        <translation>Das serielle Gerät kann nicht geöffnet werden.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Write error.</source>
+        <translation>Schreibfehler.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Read error.</source>
+        <translation>Lesefehler.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Resource error.</source>
+        <translation>Ressourcenfehler.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device operation is not supported error.</source>
+        <translation>Der Vorgang wird vom Gerät nicht unterstützt.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timeout error.</source>
+        <translation>Zeitüberschreitung.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Unknown error.</source>
+        <translation>Unbekannter Fehler.</translation>
+    </message>
+</context>
+<context>
     <name>jumo::AddDeviceDialog</name>
     <message>
         <location filename="../ui/adddevicedialog.cpp" line="+15"/>
@@ -318,24 +379,58 @@ Handbuch %6: &quot;%7&quot;</translation>
     </message>
     <message>
         <location line="+32"/>
+        <location line="+8"/>
         <source>read-only mode</source>
         <translation>Nur-Lese-Modus</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-7"/>
         <source>the device&apos;s identity is not confirmed</source>
         <translation>die Identität des Geräts ist nicht bestätigt</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+8"/>
+        <source>%1 is not confirmed to be a %2 (it is checked again when it answers); set the hold again once it is</source>
+        <translation>%1 ist nicht als %2 bestätigt (es wird erneut geprüft, sobald es antwortet); setzen Sie das Halten erneut, sobald es bestätigt ist</translation>
+    </message>
+    <message>
+        <location line="+79"/>
+        <source>exception %1, %2</source>
+        <translation>Exception %1, %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>exception %1</source>
         <translation>Exception %1</translation>
     </message>
 </context>
 <context>
+    <name>jumo::ClientTransport</name>
+    <message>
+        <location filename="../lib/bus/clienttransport.cpp" line="+44"/>
+        <source>the line was closed</source>
+        <translation>die Leitung wurde geschlossen</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>a request was sent while another was under way</source>
+        <translation>eine Anfrage wurde gesendet, während eine andere noch lief</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>not connected to %1</source>
+        <translation>nicht verbunden mit %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>no reply within %1 ms</source>
+        <translation>keine Antwort innerhalb von %1 ms</translation>
+    </message>
+</context>
+<context>
     <name>jumo::CommandLineTool</name>
     <message>
-        <location filename="../app/cli/commandlinetool.cpp" line="+24"/>
+        <location filename="../app/cli/commandlinetool.cpp" line="+25"/>
         <source>Usage: jumoctl COMMAND [options] [arguments]
 
 Commissioning and monitoring of JUMO power and process controllers over Modbus RTU.
@@ -372,6 +467,11 @@ device opens only its line:
   restore DEVICE FILE [--yes]
                            write what differs, each verified by read-back
   report DEVICE FILE       commissioning report as PDF (.pdf) or HTML
+
+Exit codes: 0 done, 1 failed, 2 wrong arguments or files, 3 a write&apos;s outcome is
+unknown, 4 another family at the address; 129, 130, 141 and 143 after SIGHUP,
+SIGINT, a closed output (SIGPIPE) and SIGTERM, a command on lines then saying
+on stderr what it got done.
 
 &apos;jumoctl COMMAND --help&apos; describes a command.
 </source>
@@ -412,11 +512,16 @@ für ein Gerät öffnet nur dessen Leitung:
                            Abweichendes schreiben, jeweils durch Rücklesen geprüft
   report DEVICE FILE       Inbetriebnahmebericht als PDF (.pdf) oder HTML
 
+Exit-Codes: 0 erledigt, 1 fehlgeschlagen, 2 falsche Argumente oder Dateien, 3 Ausgang eines
+Schreibvorgangs unbekannt, 4 eine andere Familie an der Adresse; 129, 130, 141 und 143 nach
+SIGHUP, SIGINT, einer geschlossenen Ausgabe (SIGPIPE) und SIGTERM, wobei ein Befehl an
+Leitungen auf stderr sagt, was er erledigt hat.
+
 &apos;jumoctl COMMAND --help&apos; beschreibt einen Befehl.
 </translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+66"/>
         <source>jumoctl: the output could not be written: %1</source>
         <translation>jumoctl: die Ausgabe konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -426,7 +531,7 @@ für ein Gerät öffnet nur dessen Leitung:
         <translation>Schreiben fehlgeschlagen</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+35"/>
         <source>warning: refused map file: %1</source>
         <translation>Warnung: Map-Datei abgelehnt: %1</translation>
     </message>
@@ -463,23 +568,18 @@ für ein Gerät öffnet nur dessen Leitung:
 <context>
     <name>jumo::CommissioningReport</name>
     <message>
-        <location filename="../lib/commissioning/commissioningreport.cpp" line="+375"/>
+        <location filename="../lib/commissioning/commissioningreport.cpp" line="+392"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="-157"/>
-        <location line="+255"/>
+        <location line="-207"/>
+        <location line="+324"/>
         <source>Commissioning report</source>
         <translation>Inbetriebnahmebericht</translation>
     </message>
     <message>
-        <location line="-338"/>
-        <source>%1 (none set)</source>
-        <translation>%1 (keines gesetzt)</translation>
-    </message>
-    <message>
-        <location line="+43"/>
+        <location line="-365"/>
         <source>(empty)</source>
         <translation>(leer)</translation>
     </message>
@@ -489,12 +589,7 @@ für ein Gerät öffnet nur dessen Leitung:
         <translation>%1 (veraltet)</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>current</source>
-        <translation>aktuell</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+13"/>
         <source>stale: not read in the last cycle</source>
         <translation>veraltet: im letzten Zyklus nicht gelesen</translation>
     </message>
@@ -514,6 +609,11 @@ für ein Gerät öffnet nur dessen Leitung:
         <translation>%1, Adresse %2, %3</translation>
     </message>
     <message>
+        <location line="+49"/>
+        <source>one of %1 (the device does not say which)</source>
+        <translation>eines von %1 (das Gerät sagt nicht, welches)</translation>
+    </message>
+    <message>
         <location line="+9"/>
         <source>%1 baud, %2</source>
         <translation>%1 Baud, %2</translation>
@@ -530,12 +630,12 @@ für ein Gerät öffnet nur dessen Leitung:
     </message>
     <message>
         <location line="+0"/>
-        <location line="+218"/>
+        <location line="+238"/>
         <source>Date</source>
         <translation>Datum</translation>
     </message>
     <message>
-        <location line="-217"/>
+        <location line="-237"/>
         <source>Cabinet</source>
         <translation>Schaltschrank</translation>
     </message>
@@ -566,13 +666,13 @@ für ein Gerät öffnet nur dessen Leitung:
     </message>
     <message>
         <location line="+1"/>
-        <source>Models</source>
-        <translation>Modelle</translation>
+        <source>Software</source>
+        <translation>Software</translation>
     </message>
     <message>
         <location line="+0"/>
-        <source>Software</source>
-        <translation>Software</translation>
+        <source>Model</source>
+        <translation>Modell</translation>
     </message>
     <message>
         <location line="+16"/>
@@ -592,12 +692,12 @@ für ein Gerät öffnet nur dessen Leitung:
     <message>
         <location line="+8"/>
         <location line="+2"/>
-        <location line="+134"/>
+        <location line="+154"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location line="-136"/>
+        <location line="-156"/>
         <source>Default</source>
         <translation>Standardwert</translation>
     </message>
@@ -617,12 +717,7 @@ für ein Gerät öffnet nur dessen Leitung:
         <translation>Die Gerätefamilie hat keine Live-Werte.</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>As read at %1. A value that could not be read shows %2 and why.</source>
-        <translation>Gelesen am %1. Ein Wert, der nicht gelesen werden konnte, zeigt %2 und den Grund.</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>State</source>
         <translation>Zustand</translation>
     </message>
@@ -677,7 +772,17 @@ für ein Gerät öffnet nur dessen Leitung:
         <translation>Wo</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+30"/>
+        <source>%1 on</source>
+        <translation>%1 ein</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 off</source>
+        <translation>%1 aus</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Writes since %1</source>
         <translation>Schreibvorgänge seit %1</translation>
     </message>
@@ -788,19 +893,19 @@ für ein Gerät öffnet nur dessen Leitung:
         <translation>Inbetriebnahmebericht %1</translation>
     </message>
     <message>
-        <location line="-130"/>
+        <location line="-149"/>
         <source>Signal</source>
         <translation>Signal</translation>
     </message>
     <message>
-        <location line="-50"/>
+        <location line="-51"/>
         <location line="+2"/>
-        <location line="+48"/>
+        <location line="+49"/>
         <source>Value</source>
         <translation>Wert</translation>
     </message>
     <message>
-        <location line="-58"/>
+        <location line="-59"/>
         <location line="+30"/>
         <source>Parameters</source>
         <translation>Parameter</translation>
@@ -811,7 +916,12 @@ für ein Gerät öffnet nur dessen Leitung:
         <translation>Live-Werte</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+3"/>
+        <source>As read at %1; a value with nothing under State is current. A value that could not be read shows %2 and why.</source>
+        <translation>Gelesen am %1; ein Wert ohne Eintrag unter Zustand ist aktuell. Ein Wert, der nicht gelesen werden konnte, zeigt %2 und den Grund.</translation>
+    </message>
+    <message>
+        <location line="+111"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
@@ -916,7 +1026,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
 <context>
     <name>jumo::ControlRow</name>
     <message>
-        <location filename="../ui/controlrow.cpp" line="+59"/>
+        <location filename="../ui/controlrow.cpp" line="+60"/>
         <source>Precondition: %1</source>
         <translation>Voraussetzung: %1</translation>
     </message>
@@ -967,6 +1077,11 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
     </message>
     <message>
         <location line="+3"/>
+        <source>the device&apos;s own value</source>
+        <translation>der eigene Wert des Geräts</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>hand %1 back to the device</source>
         <translation>die Vorgabe für %1 aufheben</translation>
     </message>
@@ -991,7 +1106,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>Unbekannt, bitte am Gerät prüfen: %1</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+24"/>
         <source>Write-only: the lamps show the states the device reports elsewhere.</source>
         <translation>Nur schreibbar: Die Lampen zeigen die Zustände, die das Gerät an anderer Stelle meldet.</translation>
     </message>
@@ -1001,22 +1116,49 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>Nur schreibbar: Das Gerät kann den Wert nicht melden.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+5"/>
+        <location line="+9"/>
+        <location line="+102"/>
         <source>Device: %1</source>
         <translation>Gerät: %1</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="-39"/>
+        <source>every bit off</source>
+        <translation>alle Bits aus</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>on: %1</source>
+        <translation>ein: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>&apos;%1&apos; is no number that can be read one way only; write it without thousands separators</source>
         <translation>„%1“ ist keine eindeutig lesbare Zahl; bitte ohne Tausenderpunkte schreiben</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>write %1 = %2</source>
         <translation>%1 = %2 schreiben</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+20"/>
+        <source>Do you want to %1?</source>
+        <translation>Möchten Sie %1?</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>This changes what the device drives.</source>
+        <translation>Das ändert, was das Gerät ansteuert.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The value is stored in EEPROM, which lasts about 10,000 writes.</source>
+        <translation>Der Wert wird im EEPROM gespeichert, das etwa 10.000 Schreibvorgänge verträgt.</translation>
+    </message>
+    <message>
+        <location line="+32"/>
         <source>switch &quot;%1&quot; on</source>
         <translation>„%1“ einschalten</translation>
     </message>
@@ -1036,26 +1178,27 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>%1 aus</translation>
     </message>
     <message>
-        <location line="-94"/>
+        <location line="-121"/>
         <source>Read-only mode: nothing is written to the devices.</source>
         <translation>Nur-Lese-Modus: Es wird nichts auf die Geräte geschrieben.</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+90"/>
         <source>Confirm write</source>
         <translation>Schreiben bestätigen</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Do you want to %1 on the device?
-This changes what the device drives.</source>
-        <translation>Möchten Sie am Gerät %1?
-Dies verändert die Ansteuerung durch das Gerät.</translation>
-    </message>
-    <message>
-        <location line="-10"/>
+        <location line="-21"/>
         <source>Not written: %1</source>
         <translation>Nicht geschrieben: %1</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::ControlsPanel</name>
+    <message>
+        <location filename="../ui/controlspanel.cpp" line="+57"/>
+        <source>Setpoints</source>
+        <translation>Sollwerte</translation>
     </message>
 </context>
 <context>
@@ -1226,7 +1369,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Trend</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+66"/>
         <source>Wrong device: %1. Its values are not shown and nothing is written to it until the device at this address is of the family it was added as.</source>
         <translation>Falsches Gerät: %1. Seine Werte werden nicht angezeigt und nichts wird geschrieben, bis das Gerät an dieser Adresse zu der Familie gehört, als die es hinzugefügt wurde.</translation>
     </message>
@@ -1244,20 +1387,15 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::DeviceTile</name>
     <message>
-        <location filename="../ui/devicetile.cpp" line="+48"/>
-        <source>%1 @ %2</source>
-        <translation>%1 @ %2</translation>
-    </message>
-    <message>
-        <location line="+106"/>
-        <location line="+130"/>
+        <location filename="../ui/devicetile.cpp" line="+161"/>
+        <location line="+140"/>
         <location line="+126"/>
-        <location line="+205"/>
+        <location line="+226"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="-438"/>
+        <location line="-469"/>
         <source>Bar: %1 to %2 %3</source>
         <translation>Balken: %1 bis %2 %3</translation>
     </message>
@@ -1292,7 +1430,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Kein Balken: Die Skala ist noch nicht bekannt.</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+89"/>
         <location line="+11"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
@@ -1314,18 +1452,18 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+389"/>
+        <location line="+410"/>
         <source>Mode: %1</source>
         <translation>Betriebsart: %1</translation>
     </message>
     <message>
-        <location line="-387"/>
-        <location line="+392"/>
+        <location line="-408"/>
+        <location line="+413"/>
         <source>Program: %1</source>
         <translation>Programm: %1</translation>
     </message>
     <message>
-        <location line="-376"/>
+        <location line="-397"/>
         <source>Wrong device</source>
         <translation>Falsches Gerät</translation>
     </message>
@@ -1410,9 +1548,32 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
 </context>
 <context>
+    <name>jumo::DeviceTitle</name>
+    <message>
+        <location filename="../lib/models/devicetitle.cpp" line="+7"/>
+        <source>%1 @ %2</source>
+        <translation>%1 @ %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 at address %2</source>
+        <translation>%1 an Adresse %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 at address %2 on line %3</source>
+        <translation>%1 an Adresse %2 an Leitung %3</translation>
+    </message>
+</context>
+<context>
     <name>jumo::EventLog</name>
     <message>
-        <location filename="../lib/logs/eventlog.cpp" line="+158"/>
+        <location filename="../lib/logs/eventlog.cpp" line="+119"/>
+        <source>no folder for the logs: neither JUMO_LOG_DIR, XDG_DATA_HOME nor HOME is set to an absolute folder</source>
+        <translation>kein Ordner für die Protokolle: weder JUMO_LOG_DIR, XDG_DATA_HOME noch HOME ist auf einen absoluten Ordner gesetzt</translation>
+    </message>
+    <message>
+        <location line="+50"/>
         <source>cannot write %1</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
@@ -1545,7 +1706,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::FamilyRegistry</name>
     <message>
-        <location filename="../lib/protocol/familyregistry.cpp" line="+48"/>
+        <location filename="../lib/protocol/familyregistry.cpp" line="+58"/>
         <source>%1: family &apos;%2&apos; is defined by each of these files, so none of them is used</source>
         <translation>%1: die Familie &apos;%2&apos; ist in jeder dieser Dateien definiert, daher wird keine davon verwendet</translation>
     </message>
@@ -1636,7 +1797,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LineAddress</name>
     <message>
-        <location filename="../lib/bus/lineaddress.cpp" line="+19"/>
+        <location filename="../lib/bus/lineaddress.cpp" line="+23"/>
         <source>no line address: give a serial port, tcp://HOST[:PORT] or rtu+tcp://HOST:PORT</source>
         <translation>keine Leitungsadresse: geben Sie eine serielle Schnittstelle, tcp://HOST[:PORT] oder rtu+tcp://HOST:PORT an</translation>
     </message>
@@ -1699,7 +1860,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+100"/>
+        <location filename="../app/cli/linecommands.cpp" line="+112"/>
         <source>the audit log did not take a record: %1</source>
         <translation>das Audit-Protokoll hat einen Eintrag nicht aufgenommen: %1</translation>
     </message>
@@ -1741,12 +1902,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     <message>
         <location line="+0"/>
         <location line="+2"/>
-        <location line="+723"/>
+        <location line="+768"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-723"/>
+        <location line="-768"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
@@ -1757,12 +1918,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+723"/>
+        <location line="+768"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-720"/>
+        <location line="-765"/>
         <source>Never write to any line (control-room mode; the system configuration can set it for everyone, a station file for one line).</source>
         <translation>Auf keine Leitung schreiben (Leitwarten-Modus; die Systemkonfiguration kann ihn für alle festlegen, eine Stationsdatei für eine Leitung).</translation>
     </message>
@@ -1807,7 +1968,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>die Leitung angeben: --port PATH, --line SPEC (je Leitung einmal) oder --station FILE</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+15"/>
+        <source>warning: %1</source>
+        <translation>Warnung: %1</translation>
+    </message>
+    <message>
+        <location line="+50"/>
         <source>line %1: %2</source>
         <translation>Leitung %1: %2</translation>
     </message>
@@ -1827,7 +1993,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>ein %1 kann nicht Adresse %2 haben: seine Adressen sind %3..%4</translation>
     </message>
     <message numerus="yes">
-        <location line="+43"/>
+        <location line="+46"/>
         <source>%n device(s) found before the scan stopped</source>
         <translation>
             <numerusform>%n Gerät gefunden, bevor die Suche endete</numerusform>
@@ -1888,23 +2054,33 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>kein Bericht geschrieben</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+21"/>
         <source>terminated: %1</source>
         <translation>beendet: %1</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
+        <source>hangup: %1</source>
+        <translation>Verbindung beendet (SIGHUP): %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>output closed: %1</source>
+        <translation>Ausgabe geschlossen: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>interrupted: %1</source>
         <translation>abgebrochen: %1</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+27"/>
         <source>First address (default 1).</source>
         <translation>Erste Adresse (Standard 1).</translation>
     </message>
     <message>
-        <location line="-351"/>
-        <location line="+351"/>
+        <location line="-375"/>
+        <location line="+375"/>
         <location line="+1"/>
         <source>address</source>
         <translation>Adresse</translation>
@@ -1925,7 +2101,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Adresse %1 antwortet als %2, wie es jeder %2 unabhängig von seiner eigenen Adresse tut: nicht aufgeführt</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <source>address %1 answers, but matches no known family</source>
         <translation>Adresse %1 antwortet, passt aber zu keiner bekannten Gerätefamilie</translation>
     </message>
@@ -1953,7 +2129,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>keine Antwort</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>Reads every readable entry of a device once.</source>
         <translation>Liest jeden lesbaren Eintrag eines Geräts einmal.</translation>
     </message>
@@ -2009,17 +2185,12 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>--verify erwartet Adressen 1..255, nicht &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+129"/>
         <source>the line %1 is read-only (station file): nothing is written to the devices</source>
         <translation>die Leitung %1 ist schreibgeschützt (Stationsdatei): es wird nichts auf die Geräte geschrieben</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <source>Polls devices continuously and prints every poll cycle; devices of several lines are polled at once, each line on its own.</source>
-        <translation>Fragt Geräte fortlaufend ab und gibt jeden Abfragezyklus aus; Geräte mehrerer Leitungen werden gleichzeitig abgefragt, jede Leitung für sich.</translation>
-    </message>
-    <message>
-        <location line="+12"/>
+        <location line="+28"/>
         <source>FAMILY@ADDRESS; LINE/FAMILY@ADDRESS where there are several lines (default with --station: every device of the station file).</source>
         <translation>FAMILY@ADDRESS; LINE/FAMILY@ADDRESS, wo es mehrere Leitungen gibt (Vorgabe mit --station: jedes Gerät der Stationsdatei).</translation>
     </message>
@@ -2029,7 +2200,22 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>jumoctl monitor: mindestens ein Gerät nennen (oder eine Stationsdatei angeben, die Geräte auflistet)</translation>
     </message>
     <message>
-        <location line="+191"/>
+        <location line="+221"/>
+        <source>Compares a device with a parameter file, or two files.
+
+Exit code (as diff(1)): 0 nothing differs; 1 something does; 2 a
+problem: a file that cannot be read or compared (another family,
+unknown ids, invalid values, another software version), a device
+that does not answer; 4 another family at the address.</source>
+        <translation>Vergleicht ein Gerät mit einer Parameterdatei oder zwei Dateien miteinander.
+
+Exit-Code (wie bei diff(1)): 0 nichts weicht ab; 1 etwas weicht ab; 2 ein
+Problem: eine Datei, die nicht gelesen oder verglichen werden kann (andere Familie,
+unbekannte IDs, ungültige Werte, andere Softwareversion), ein Gerät,
+das nicht antwortet; 4 eine andere Familie an der Adresse.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>FAMILY@ADDRESS (LINE/FAMILY@ADDRESS where there are several lines), or a first parameter file.</source>
         <translation>FAMILY@ADDRESS (LINE/FAMILY@ADDRESS, wo es mehrere Leitungen gibt) oder eine erste Parameterdatei.</translation>
     </message>
@@ -2039,7 +2225,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>%1 kann nicht gelesen werden</translation>
     </message>
     <message>
-        <location line="+142"/>
+        <location line="+150"/>
         <source>Writes the commissioning report of a device, a document to sign: a title block (site, cabinet, tag, engineer, date, device, line), identity, parameters with the manual&apos;s defaults, live values, active alarms, today&apos;s writes and signature lines. FILE ending in .pdf gives PDF (A4, numbered pages), else HTML.</source>
         <translation>Schreibt den Inbetriebnahmebericht eines Geräts, ein Dokument zum Unterschreiben: Kopfdaten (Standort, Schaltschrank, Kennzeichen, Inbetriebnehmer, Datum, Gerät, Leitung), Identität, Parameter mit den Standardwerten des Handbuchs, Live-Werte, aktive Alarme, die heutigen Schreibvorgänge und Unterschriftszeilen. Endet DATEI auf .pdf, entsteht PDF (A4, nummerierte Seiten), sonst HTML.</translation>
     </message>
@@ -2076,7 +2262,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Name</translation>
     </message>
     <message>
-        <location line="-1108"/>
+        <location line="-1202"/>
         <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
         <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
     </message>
@@ -2096,7 +2282,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Baudrate: 4800, 9600, 19200 oder 38400 (Standard 9600); hinter einem Gateway die seiner seriellen Seite (sie bestimmt das Zeitverhalten).</translation>
     </message>
     <message>
-        <location line="+338"/>
+        <location line="+362"/>
         <source>Finds devices on the line and names their family; with several lines (--line, --station), on every line at once.</source>
         <translation>Sucht Geräte an der Leitung und benennt ihre Gerätefamilie; bei mehreren Leitungen (--line, --station) an allen Leitungen gleichzeitig.</translation>
     </message>
@@ -2106,7 +2292,7 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         <translation>Adresse %1 (%2 von %3)</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+40"/>
         <source>scanning %1</source>
         <translation>Suche %1</translation>
     </message>
@@ -2119,14 +2305,14 @@ Dies verändert die Ansteuerung durch das Gerät.</translation>
         </translation>
     </message>
     <message>
-        <location line="+64"/>
-        <location line="+482"/>
-        <location line="+164"/>
+        <location line="+63"/>
+        <location line="+542"/>
+        <location line="+172"/>
         <source>FAMILY@ADDRESS, e.g. ipc300@1; LINE/FAMILY@ADDRESS where there are several lines.</source>
         <translation>FAMILY@ADDRESS, z. B. ipc300@1; LINE/FAMILY@ADDRESS, wo es mehrere Leitungen gibt.</translation>
     </message>
     <message>
-        <location line="-579"/>
+        <location line="-647"/>
         <source>Writes entries of a device; each write is verified by reading it back.
 
 ID=VALUE writes the whole entry: for a bit field it replaces EVERY bit of
@@ -2164,7 +2350,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>ID=VALUE, z. B. input_setpoint=42.5, oder ID.BIT=0|1, z. B. binary_signal_write.digital_output=1.</translation>
     </message>
     <message>
-        <location line="+111"/>
+        <location line="+114"/>
         <source>unknown, check the device: </source>
         <translation>unbekannt, Gerät prüfen: </translation>
     </message>
@@ -2179,7 +2365,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>(vorher %1)</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
+        <source>%1; writes are kept in the audit log, so nothing is written</source>
+        <translation>%1; Schreibvorgänge werden im Audit-Log festgehalten, deshalb wird nichts geschrieben</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>read-only mode is set by the system configuration (%1): nothing is written to the devices</source>
         <translation>Der Nur-Lese-Modus ist durch die Systemkonfiguration festgelegt (%1): Es wird nichts auf die Geräte geschrieben</translation>
     </message>
@@ -2189,7 +2380,28 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Nur-Lese-Modus (--read-only): Es wird nichts auf die Geräte geschrieben</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+10"/>
+        <source>Polls devices continuously and prints every poll cycle; devices of several lines are polled at once, each line on its own.
+
+A device that does not answer does not stop the others: its records say so
+(condition offline), and its family is checked whenever it answers (again);
+until then it has no values. Devices never confirmed are named at the end.
+
+Exit code: 0 every value read; 1 a value could not be read, a line was lost,
+or a device was never confirmed; 4 another family answered at a device&apos;s
+address and it was never confirmed; 129, 130, 141, 143 after a signal.</source>
+        <translation>Fragt Geräte fortlaufend ab und gibt jeden Abfragezyklus aus; Geräte mehrerer Leitungen werden gleichzeitig abgefragt, jede Leitung für sich.
+
+Ein Gerät, das nicht antwortet, hält die anderen nicht auf: seine Datensätze sagen es
+(Zustand offline), und seine Familie wird geprüft, sobald es (wieder) antwortet;
+bis dahin hat es keine Werte. Nie bestätigte Geräte werden am Ende genannt.
+
+Exit-Code: 0 jeder Wert gelesen; 1 ein Wert konnte nicht gelesen werden, eine Leitung ging
+verloren oder ein Gerät wurde nie bestätigt; 4 an der Adresse eines Geräts antwortete eine
+andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Poll interval per device in ms (default 0: as fast as the line allows).</source>
         <translation>Abfrageintervall je Gerät in ms (Standard 0: so schnell, wie die Leitung es erlaubt).</translation>
     </message>
@@ -2239,7 +2451,17 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>&apos;%1&apos; ist kein lesbarer Eintrag von %2</translation>
     </message>
     <message>
-        <location line="+154"/>
+        <location line="+140"/>
+        <source>never confirmed: %1 did not answer</source>
+        <translation>nie bestätigt: %1 hat nicht geantwortet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>never confirmed: %1</source>
+        <translation>nie bestätigt: %1</translation>
+    </message>
+    <message>
+        <location line="+49"/>
         <source>no differences</source>
         <translation>keine Unterschiede</translation>
     </message>
@@ -2268,12 +2490,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Schreibt die Parameter einer Datei, die vom Gerät abweichen, jeweils durch Rücklesen geprüft.</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Compares a device with a parameter file, or two files.</source>
-        <translation>Vergleicht ein Gerät mit einer Parameterdatei oder zwei Dateien miteinander.</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+10"/>
         <source>Write without asking.</source>
         <translation>Ohne Rückfrage schreiben.</translation>
     </message>
@@ -2288,18 +2505,18 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>die Dateien gehören zu verschiedenen oder unbekannten Gerätefamilien: %1, %2</translation>
     </message>
     <message>
-        <location line="+27"/>
-        <location line="+37"/>
+        <location line="+31"/>
+        <location line="+40"/>
         <source>refused: %1</source>
         <translation>abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="-32"/>
+        <location line="-35"/>
         <source>read-only mode: nothing would be restored</source>
         <translation>Nur-Lese-Modus: es würde nichts wiederhergestellt</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+15"/>
         <source>these parameters could not be read, nothing was done: %1</source>
         <translation>diese Parameter konnten nicht gelesen werden, es wurde nichts getan: %1</translation>
     </message>
@@ -2312,7 +2529,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+19"/>
+        <location line="+20"/>
         <source>%n parameter(s) missing from the file are left as they are.</source>
         <translation>
             <numerusform>%n Parameter, der in der Datei fehlt, bleibt unverändert.</numerusform>
@@ -2348,7 +2565,8 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>%1 hat nicht geantwortet: kein Bericht geschrieben</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+9"/>
+        <location line="+16"/>
         <source>no report written: its writes of today are unknown: %1</source>
         <translation>kein Bericht geschrieben: die Schreibvorgänge von heute sind unbekannt: %1</translation>
     </message>
@@ -2450,7 +2668,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 <context>
     <name>jumo::LiveValuesModel</name>
     <message>
-        <location filename="../lib/models/livevaluesmodel.cpp" line="+111"/>
+        <location filename="../lib/models/livevaluesmodel.cpp" line="+130"/>
         <source>Value: %1</source>
         <translation>Wert: %1</translation>
     </message>
@@ -2470,7 +2688,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Letzter bekannter Wert: %1, vor %2 s</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
@@ -2508,7 +2726,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
 <context>
     <name>jumo::MainWindow</name>
     <message>
-        <location filename="../ui/mainwindow.cpp" line="+82"/>
+        <location filename="../ui/mainwindow.cpp" line="+90"/>
         <location line="+4"/>
         <source>Time</source>
         <translation>Zeit</translation>
@@ -2575,18 +2793,18 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Meldung</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+15"/>
         <source>JUMO HMI [read-only]</source>
         <translation>JUMO HMI [Nur-Lese-Modus]</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+1091"/>
+        <location line="+1115"/>
         <source>JUMO HMI</source>
         <translation>JUMO HMI</translation>
     </message>
     <message>
-        <location line="-1089"/>
+        <location line="-1113"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
@@ -2717,13 +2935,13 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
     </message>
     <message>
         <location line="+65"/>
-        <location line="+209"/>
+        <location line="+214"/>
         <location line="+34"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-646"/>
+        <location line="-645"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -2743,7 +2961,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Schreibprotokoll</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+52"/>
         <source>Add...</source>
         <translation>Hinzufügen...</translation>
     </message>
@@ -2763,7 +2981,7 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>NUR LESEN</translation>
     </message>
     <message>
-        <location line="+507"/>
+        <location line="+512"/>
         <source>Choose or type the line&apos;s address first: a serial port, tcp://HOST[:PORT] or rtu+tcp://HOST:PORT.</source>
         <translation>Wählen Sie zuerst die Adresse der Leitung oder geben Sie sie ein: eine serielle Schnittstelle, tcp://HOST[:PORT] oder rtu+tcp://HOST:PORT.</translation>
     </message>
@@ -2840,13 +3058,31 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <source>Lines: %1</source>
         <translation>Leitungen: %1</translation>
     </message>
+    <message numerus="yes">
+        <location line="+66"/>
+        <source>no values read: %n line(s) lost (%1)</source>
+        <translation>
+            <numerusform>keine Werte gelesen: %n Leitung verloren (%1)</numerusform>
+            <numerusform>keine Werte gelesen: %n Leitungen verloren (%1)</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+116"/>
+        <location line="+2"/>
+        <source>no values read: the line is lost</source>
+        <translation>keine Werte gelesen: die Leitung ist verloren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>last error: %1</source>
+        <translation>letzter Fehler: %1</translation>
+    </message>
+    <message>
+        <location line="+63"/>
         <source>%1 on line %2</source>
         <translation>%1 an Leitung %2</translation>
     </message>
     <message>
-        <location line="+138"/>
+        <location line="+140"/>
         <source>Connect line %1 first, or choose a connected line.</source>
         <translation>Zuerst Leitung %1 verbinden oder eine verbundene Leitung wählen.</translation>
     </message>
@@ -2861,12 +3097,12 @@ verloren; ein Befehl wird nie zweimal gesendet): Gerät prüfen;
         <translation>Datenaufzeichnung von %1 angehalten: %2</translation>
     </message>
     <message>
-        <location line="-641"/>
+        <location line="-660"/>
         <source>address %1: %2</source>
         <translation>Adresse %1: %2</translation>
     </message>
     <message>
-        <location line="-314"/>
+        <location line="-319"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -3004,7 +3240,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Simulierte Demo-Leitung wird gestartet...</translation>
     </message>
     <message>
-        <location line="+346"/>
+        <location line="+351"/>
         <source>Connected to %1</source>
         <translation>Verbunden mit %1</translation>
     </message>
@@ -3029,7 +3265,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>%1 Anfragen/s</translation>
     </message>
     <message numerus="yes">
-        <location line="+4"/>
+        <location line="+23"/>
         <source>%n error(s); last: %1</source>
         <translation>
             <numerusform>%n Fehler; zuletzt: %1</numerusform>
@@ -3037,7 +3273,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>no errors</source>
         <translation>keine Fehler</translation>
     </message>
@@ -3047,7 +3283,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>die Familie wird nicht am Gerät geprüft (--no-identify)</translation>
     </message>
     <message>
-        <location line="+176"/>
+        <location line="+178"/>
         <source>Scan</source>
         <translation>Suchen</translation>
     </message>
@@ -3070,7 +3306,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::MapCommands</name>
     <message>
-        <location filename="../app/cli/mapcommands.cpp" line="+133"/>
+        <location filename="../app/cli/mapcommands.cpp" line="+145"/>
         <source>unknown family &apos;%1&apos; (known: %2)</source>
         <translation>unbekannte Gerätefamilie &apos;%1&apos; (bekannt: %2)</translation>
     </message>
@@ -3191,7 +3427,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::MapLoader</name>
     <message>
-        <location filename="../lib/protocol/maploader.cpp" line="+38"/>
+        <location filename="../lib/protocol/maploader.cpp" line="+56"/>
         <source>malformed JSON at byte %1: %2</source>
         <translation>fehlerhaftes JSON bei Byte %1: %2</translation>
     </message>
@@ -3281,18 +3517,18 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Familienkennung &apos;%1&apos; darf nur aus Kleinbuchstaben, Ziffern und &apos;_&apos; bestehen</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+22"/>
         <source>&apos;entries&apos; must be a non-empty array</source>
         <translation>&apos;entries&apos; muss ein nicht leeres Array sein</translation>
     </message>
     <message>
         <location line="+25"/>
-        <location line="+94"/>
+        <location line="+95"/>
         <source>&apos;%1&apos; is not a readable entry</source>
         <translation>&apos;%1&apos; ist kein lesbarer Eintrag</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+111"/>
         <source>&apos;protocol&apos; must be an object</source>
         <translation>&apos;protocol&apos; muss ein Objekt sein</translation>
     </message>
@@ -3337,7 +3573,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;errorValues&apos; muss ein Objekt oder null sein</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+71"/>
         <source>entry #%1</source>
         <translation>Eintrag #%1</translation>
     </message>
@@ -3352,20 +3588,20 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Eintrag #%1 (%2)</translation>
     </message>
     <message>
-        <location line="-402"/>
-        <location line="+403"/>
-        <location line="+369"/>
+        <location line="-418"/>
+        <location line="+419"/>
+        <location line="+408"/>
         <location filename="../lib/protocol/overlapcheck.cpp" line="+70"/>
         <source>entry &apos;%1&apos; (%2)</source>
         <translation>Eintrag &apos;%1&apos; (%2)</translation>
     </message>
     <message>
-        <location line="-359"/>
+        <location line="-398"/>
         <source>id must be lower case letters, digits and &apos;_&apos;</source>
         <translation>die Kennung darf nur aus Kleinbuchstaben, Ziffern und &apos;_&apos; bestehen</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>unknown type &apos;%1&apos; (expected float, int16, uint16, int32, uint32, bool, enum, bitfield or text)</source>
         <translation>unbekannter Typ &apos;%1&apos; (erwartet: float, int16, uint16, int32, uint32, bool, enum, bitfield oder text)</translation>
     </message>
@@ -3395,12 +3631,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;bytes&apos; ist nur für Texte zulässig</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>&apos;min&apos; is greater than &apos;max&apos;</source>
         <translation>&apos;min&apos; ist größer als &apos;max&apos;</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+19"/>
         <source>unknown control &apos;%1&apos;</source>
         <translation>unbekanntes Bedienelement &apos;%1&apos;</translation>
     </message>
@@ -3410,17 +3646,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>ein Bedienelement benötigt einen schreibbaren Eintrag</translation>
     </message>
     <message>
-        <location line="-221"/>
+        <location line="-251"/>
         <source>address range %1..%2 is empty</source>
         <translation>Adressbereich %1..%2 ist leer</translation>
     </message>
     <message>
-        <location line="-318"/>
+        <location line="-322"/>
         <source>malformed JSON at byte %1: &apos;%2&apos; given twice in one object</source>
         <translation>fehlerhaftes JSON bei Byte %1: &apos;%2&apos; zweimal im selben Objekt angegeben</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+39"/>
         <source>&apos;shortName&apos; must be 1 to 24 characters, not &apos;%1&apos;</source>
         <translation>&apos;shortName&apos; muss 1 bis 24 Zeichen lang sein, nicht &apos;%1&apos;</translation>
     </message>
@@ -3440,7 +3676,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;%1&apos; muss ein Array sein</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+34"/>
         <source>&apos;%1&apos; is a reserve, which the HMI does not read</source>
         <translation>&apos;%1&apos; ist eine Reserve, die die HMI nicht liest</translation>
     </message>
@@ -3480,7 +3716,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;values&apos; hat %1 Zeilen; ein Gerätebild der Übersicht zeigt höchstens %2</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>&apos;max&apos; must be above &apos;min&apos;</source>
         <translation>&apos;max&apos; muss größer als &apos;min&apos; sein</translation>
     </message>
@@ -3555,12 +3791,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;decimals&apos; oder &apos;significantDigits&apos; angeben, nicht beides</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+19"/>
+        <source>&apos;%1&apos; contains a control character (U+%2)</source>
+        <translation>&apos;%1&apos; enthält ein Steuerzeichen (U+%2)</translation>
+    </message>
+    <message>
+        <location line="+70"/>
         <source>&apos;words&apos; is only for reserved blocks</source>
         <translation>&apos;words&apos; gilt nur für reservierte Blöcke</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>give &apos;unit&apos; or &apos;configuredUnit&apos;, not both</source>
         <translation>&apos;unit&apos; oder &apos;configuredUnit&apos; angeben, nicht beides</translation>
     </message>
@@ -3570,7 +3811,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>eine Einheit gibt es nur für Zahlen</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+10"/>
+        <source>&apos;%1&apos; is only for numbers</source>
+        <translation>&apos;%1&apos; ist nur für Zahlen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;%1&apos; %2 is outside what a %3 holds (%4..%5)</source>
+        <translation>&apos;%1&apos; %2 liegt außerhalb dessen, was ein %3 fasst (%4..%5)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>an entry cannot be an alias of itself</source>
         <translation>ein Eintrag kann kein Alias seiner selbst sein</translation>
     </message>
@@ -3580,7 +3831,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>eine Aktion braucht einen beschreibbaren Eintrag</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+3"/>
+        <source>&apos;action&apos; is for command words (bit fields, enums, integers), not for a %1</source>
+        <translation>&apos;action&apos; ist für Befehlswörter (Bitfelder, Aufzählungen, Ganzzahlen), nicht für ein %1</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>&apos;values&apos; is only for enums</source>
         <translation>&apos;values&apos; ist nur für Enums zulässig</translation>
     </message>
@@ -3596,6 +3852,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+15"/>
+        <source>&apos;values&apos;: the label &apos;%1&apos; of %2 would be written as %3 (a label must not be another value&apos;s number, nor another label in other case)</source>
+        <translation>&apos;values&apos;: die Bezeichnung &apos;%1&apos; von %2 würde als %3 geschrieben (eine Bezeichnung darf weder die Zahl eines anderen Werts noch eine andere Bezeichnung in anderer Schreibweise sein)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>&apos;default&apos; is only for writable entries</source>
         <translation>&apos;default&apos; gibt es nur für beschreibbare Einträge</translation>
     </message>
@@ -3620,7 +3881,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;default&apos; %1 ist keiner der Werte der Aufzählung</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+7"/>
         <source>&apos;default&apos; of a %1 must be a whole number, not %2</source>
         <translation>&apos;default&apos; eines %1 muss eine ganze Zahl sein, nicht %2</translation>
     </message>
@@ -3675,7 +3936,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>ein Bit benötigt eine Bezeichnung</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>unknown kind &apos;%1&apos; (expected alarm, warning, status or command)</source>
         <translation>unbekannte Art &apos;%1&apos; (erwartet: alarm, warning, status oder command)</translation>
     </message>
@@ -3703,6 +3964,16 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+2"/>
         <source>&apos;stateFrom&apos; is only for write-only words (a readable word reports its own bits)</source>
         <translation>&apos;stateFrom&apos; gibt es nur für Nur-Schreib-Wörter (ein lesbares Wort meldet seine Bits selbst)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;stateFrom&apos; is only for single bits, not for a field of %1</source>
+        <translation>&apos;stateFrom&apos; ist nur für einzelne Bits, nicht für ein Feld von %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&apos;stateFrom&apos; must name a single bit as ENTRY.BIT, not &apos;%1&apos;</source>
+        <translation>&apos;stateFrom&apos; muss ein einzelnes Bit als ENTRY.BIT nennen, nicht &apos;%1&apos;</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -3778,9 +4049,57 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
 </context>
 <context>
+    <name>jumo::MbapFramer</name>
+    <message>
+        <location filename="../lib/bus/mbapframer.cpp" line="+30"/>
+        <source>a header with protocol id %1 (Modbus is 0): %2</source>
+        <translation>ein Header mit Protokoll-ID %1 (Modbus ist 0): %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>a header with length %1 (a Modbus TCP frame has %2..%3): %4</source>
+        <translation>ein Header mit Länge %1 (ein Modbus-TCP-Rahmen hat %2..%3): %4</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>a frame whose length does not fit its content: %1</source>
+        <translation>ein Rahmen, dessen Länge nicht zu seinem Inhalt passt: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>a reply with transaction id %1 (%2 expected)</source>
+        <translation>eine Antwort mit Transaktions-ID %1 (%2 erwartet)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>a reply with transaction id %1 while nothing was asked</source>
+        <translation>eine Antwort mit Transaktions-ID %1, obwohl nichts angefragt war</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>a reply from unit %1 to a request for unit %2</source>
+        <translation>eine Antwort von Unit %1 auf eine Anfrage an Unit %2</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>the gateway sent %1</source>
+        <translation>das Gateway sandte %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>no reply within %1 ms</source>
+        <translation>keine Antwort innerhalb von %1 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>an incomplete reply within %1 ms (%2 byte(s): %3)</source>
+        <translation>eine unvollständige Antwort innerhalb von %1 ms (%2 Byte: %3)</translation>
+    </message>
+</context>
+<context>
     <name>jumo::MqttClient</name>
     <message>
-        <location filename="../lib/mqtt/mqttclient.cpp" line="+36"/>
+        <location filename="../lib/mqtt/mqttclient.cpp" line="+38"/>
         <source>the broker did not answer within the keepalive time</source>
         <translation>der Broker hat innerhalb der Keepalive-Zeit nicht geantwortet</translation>
     </message>
@@ -3815,7 +4134,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Der letzte Wille (Last Will) lässt sich nicht setzen: %1</translation>
     </message>
     <message>
-        <location line="+159"/>
+        <location line="+174"/>
         <source>the broker refused the connection: %1</source>
         <translation>Der Broker hat die Verbindung abgelehnt: %1</translation>
     </message>
@@ -3909,29 +4228,29 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ParameterEditModel</name>
     <message>
-        <location filename="../lib/models/parametereditmodel.cpp" line="+185"/>
-        <location line="+260"/>
+        <location filename="../lib/models/parametereditmodel.cpp" line="+166"/>
+        <location line="+271"/>
         <source>On</source>
         <translation>Ein</translation>
     </message>
     <message>
-        <location line="-260"/>
-        <location line="+262"/>
+        <location line="-271"/>
+        <location line="+273"/>
         <source>Off</source>
         <translation>Aus</translation>
     </message>
     <message>
-        <location line="-243"/>
+        <location line="-254"/>
         <source>write-only</source>
         <translation>nur schreibbar</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>%1 (stale)</source>
         <translation>%1 (veraltet)</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+36"/>
         <source>Not written: %1</source>
         <translation>Nicht geschrieben: %1</translation>
     </message>
@@ -3947,7 +4266,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../ui/parametereditor.cpp" line="+167"/>
+        <location filename="../ui/parametereditor.cpp" line="+168"/>
         <source>Confirmed by read-back: %1</source>
         <translation>Durch Rücklesen bestätigt: %1</translation>
     </message>
@@ -4212,12 +4531,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+5"/>
-        <location line="+367"/>
+        <location line="+369"/>
         <source>stopped before its turn</source>
         <translation>angehalten, bevor es an der Reihe war</translation>
     </message>
     <message>
-        <location line="-362"/>
+        <location line="-364"/>
         <source>Load parameter backup</source>
         <translation>Parametersicherung laden</translation>
     </message>
@@ -4379,17 +4698,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+4"/>
-        <location line="+34"/>
+        <location line="+36"/>
         <source>Not written: %1. The changes stay and can be written once the device answers.</source>
         <translation>Nicht geschrieben: %1. Die Änderungen bleiben und können geschrieben werden, sobald das Gerät antwortet.</translation>
     </message>
-    <message>
-        <location line="-16"/>
-        <source>%1 at address %2</source>
-        <translation>%1 an Adresse %2</translation>
-    </message>
     <message numerus="yes">
-        <location line="+44"/>
+        <location line="+28"/>
         <source>Writing %n change(s), each verified by reading it back...</source>
         <translation>
             <numerusform>%n Änderung wird geschrieben und durch Rücklesen geprüft...</numerusform>
@@ -5001,7 +5315,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::PublisherProgram</name>
     <message>
-        <location filename="../lib/mqtt/publisherprogram.cpp" line="+35"/>
+        <location filename="../lib/mqtt/publisherprogram.cpp" line="+36"/>
         <source>Publishes the devices of a station&apos;s lines to an MQTT broker: identity, values with their validity and status, alarm bits, line state. Owns the lines and only reads them.</source>
         <translation>Veröffentlicht die Geräte der Linien einer Station an einem MQTT-Broker: Identität, Werte mit Gültigkeit und Status, Alarmbits, Linienzustand. Ist Master der Linien und liest sie nur.</translation>
     </message>
@@ -5171,11 +5485,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+16"/>
-        <source>&apos;%1&apos; cannot be a topic prefix</source>
-        <translation>&apos;%1&apos; kann kein Topic-Präfix sein</translation>
+        <source>&apos;%1&apos; cannot be a topic prefix: one or more levels joined by &apos;/&apos;, without &apos;+&apos;, &apos;#&apos; or control characters, not starting with &apos;$&apos;</source>
+        <translation>&apos;%1&apos; kann kein Topic-Präfix sein: eine oder mehrere durch &apos;/&apos; verbundene Ebenen, ohne &apos;+&apos;, &apos;#&apos; oder Steuerzeichen, nicht mit &apos;$&apos; beginnend</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>--heartbeat must be 100..60000 ms</source>
         <translation>--heartbeat muss 100..60000 ms sein</translation>
     </message>
@@ -5262,7 +5576,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RegisterMap</name>
     <message>
-        <location filename="../lib/protocol/registermap.cpp" line="+198"/>
+        <location filename="../lib/protocol/registermap.cpp" line="+222"/>
         <source>the gateway&apos;s path to the device is unavailable (sent by the gateway, the request did not reach the device)</source>
         <translation>der Weg des Gateways zum Gerät ist nicht verfügbar (vom Gateway gesendet, die Anfrage hat das Gerät nicht erreicht)</translation>
     </message>
@@ -5614,62 +5928,51 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
 </context>
 <context>
-    <name>jumo::RtuTcpTransport</name>
+    <name>jumo::RtuStreamFramer</name>
     <message>
-        <location filename="../lib/bus/rtutcptransport.cpp" line="+36"/>
-        <source>the device server %1 did not accept a connection within %2 s</source>
-        <translation>der Geräteserver %1 hat innerhalb von %2 s keine Verbindung angenommen</translation>
-    </message>
-    <message>
-        <location line="+33"/>
-        <source>the line was closed</source>
-        <translation>die Leitung wurde geschlossen</translation>
-    </message>
-    <message>
-        <location line="+41"/>
-        <source>not connected to the device server %1</source>
-        <translation>nicht mit dem Geräteserver %1 verbunden</translation>
-    </message>
-    <message>
-        <location line="+25"/>
-        <source>not sent: the line was never silent for %1 ms within %2 ms (noise or another master on the serial side?)</source>
-        <translation>nicht gesendet: die Leitung war innerhalb von %2 ms nie %1 ms lang still (Störungen oder ein anderer Master auf der seriellen Seite?)</translation>
-    </message>
-    <message>
-        <location line="+61"/>
+        <location filename="../lib/bus/rtustreamframer.cpp" line="+53"/>
         <source>no reply within %1 ms</source>
         <translation>keine Antwort innerhalb von %1 ms</translation>
     </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>no reply that fits the request within %1 ms (%n that did not fit dropped)</source>
+        <translation>
+            <numerusform>keine zur Anfrage passende Antwort innerhalb von %1 ms (%n unpassende verworfen)</numerusform>
+            <numerusform>keine zur Anfrage passende Antwort innerhalb von %1 ms (%n unpassende verworfen)</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>no complete reply within %1 ms (%2 byte(s) received: %3)</source>
         <translation>keine vollständige Antwort innerhalb von %1 ms (%2 Byte empfangen: %3)</translation>
     </message>
+</context>
+<context>
+    <name>jumo::RtuTcpTransport</name>
     <message>
-        <location line="+64"/>
-        <source>exception %1</source>
-        <translation>Ausnahme %1</translation>
+        <location filename="../lib/bus/rtutcptransport.cpp" line="+55"/>
+        <source>not sent: the line was never silent for %1 ms within %2 ms (noise or another master on the serial side?)</source>
+        <translation>nicht gesendet: die Leitung war innerhalb von %2 ms nie %1 ms lang still (Störungen oder ein anderer Master auf der seriellen Seite?)</translation>
     </message>
-    <message>
-        <location line="+30"/>
-        <source>the device server %1 closed the connection</source>
-        <translation>der Geräteserver %1 hat die Verbindung geschlossen</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>connection to the device server %1 lost: %2</source>
-        <translation>Verbindung zum Geräteserver %1 verloren: %2</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>no connection to the device server %1: %2</source>
-        <translation>keine Verbindung zum Geräteserver %1: %2</translation>
+    <message numerus="yes">
+        <location line="+37"/>
+        <source>%n frame(s) before the reply that answer another request</source>
+        <translation>
+            <numerusform>%n Rahmen vor der Antwort, der eine andere Anfrage beantwortet</numerusform>
+            <numerusform>%n Rahmen vor der Antwort, die eine andere Anfrage beantworten</numerusform>
+        </translation>
     </message>
 </context>
 <context>
     <name>jumo::RtuTransport</name>
     <message>
-        <location filename="../lib/bus/rtutransport.cpp" line="+143"/>
+        <location filename="../lib/bus/rtutransport.cpp" line="+26"/>
+        <source>the port %1</source>
+        <translation>die Schnittstelle %1</translation>
+    </message>
+    <message>
+        <location line="+108"/>
         <source>reply with function code %1 to a request with %2</source>
         <translation>Antwort mit Funktionscode %1 auf eine Anfrage mit %2</translation>
     </message>
@@ -5682,6 +5985,16 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+8"/>
         <source>write reply names %1 word(s) at %2 where %3 at %4 were written</source>
         <translation>Schreibantwort nennt %1 Wort/Wörter ab %2, geschrieben wurden %3 ab %4</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>no reply</source>
+        <translation>keine Antwort</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>exception %1</source>
+        <translation>Exception %1</translation>
     </message>
 </context>
 <context>
@@ -5766,6 +6079,64 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+3"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::SocketTransport</name>
+    <message>
+        <location filename="../lib/bus/sockettransport.cpp" line="+34"/>
+        <source>the gateway %1</source>
+        <translation>das Gateway %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device server %1</source>
+        <translation>der Geräteserver %1</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>the gateway %1 closed the connection</source>
+        <translation>das Gateway %1 hat die Verbindung geschlossen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device server %1 closed the connection</source>
+        <translation>der Geräteserver %1 hat die Verbindung geschlossen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the connection was refused or closed</source>
+        <translation>die Verbindung wurde abgelehnt oder geschlossen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>connection to the gateway %1 lost: %2</source>
+        <translation>Verbindung zum Gateway %1 verloren: %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>connection to the device server %1 lost: %2</source>
+        <translation>Verbindung zum Geräteserver %1 verloren: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no connection to the gateway %1: %2</source>
+        <translation>keine Verbindung zum Gateway %1: %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no connection to the device server %1: %2</source>
+        <translation>keine Verbindung zum Geräteserver %1: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the gateway %1 did not accept a connection within %2 s</source>
+        <translation>das Gateway %1 hat innerhalb von %2 s keine Verbindung angenommen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the device server %1 did not accept a connection within %2 s</source>
+        <translation>der Geräteserver %1 hat innerhalb von %2 s keine Verbindung angenommen</translation>
     </message>
 </context>
 <context>
@@ -5858,18 +6229,18 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::StationConfig</name>
     <message>
-        <location filename="../lib/bus/stationconfig.cpp" line="+50"/>
+        <location filename="../lib/bus/stationconfig.cpp" line="+48"/>
         <source>the line address (serial port or URL) is empty</source>
         <translation>die Adresse der Leitung (serielle Schnittstelle oder URL) ist leer</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location line="+150"/>
+        <location line="+148"/>
         <source>&apos;name&apos; must be 1..%1 of the letters A-Z, a-z, digits, &apos;_&apos;, &apos;.&apos; and &apos;-&apos;, not &apos;%2&apos;</source>
         <translation>&apos;name&apos; muss aus 1..%1 der Zeichen A-Z, a-z, Ziffern, &apos;_&apos;, &apos;.&apos; und &apos;-&apos; bestehen, nicht &apos;%2&apos;</translation>
     </message>
     <message>
-        <location line="-143"/>
+        <location line="-141"/>
         <source>&apos;%1&apos; must be 4800, 9600, 19200 or 38400, not %2</source>
         <translation>&apos;%1&apos; muss 4800, 9600, 19200 oder 38400 sein, nicht %2</translation>
     </message>
@@ -5894,12 +6265,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>der Leitungsname &apos;%1&apos; wird auch von lines[%2] verwendet</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+32"/>
         <source>&apos;port&apos; %1 is the port of lines[%2] (%3) too: a line has one master, so give the devices of both to one line</source>
         <translation>&apos;port&apos; %1 ist auch der Anschluss von lines[%2] (%3): eine Leitung hat einen Master, daher die Geräte beider einer Leitung geben</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
         <source>malformed JSON at byte %1: %2</source>
         <translation>fehlerhaftes JSON bei Byte %1: %2</translation>
     </message>
@@ -6028,58 +6399,71 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
 </context>
 <context>
-    <name>jumo::TcpTransport</name>
+    <name>jumo::SystemSettings</name>
     <message>
-        <location filename="../lib/bus/tcptransport.cpp" line="+21"/>
-        <source>the gateway %1 did not accept a connection within %2 s</source>
-        <translation>das Gateway %1 hat innerhalb von %2 s keine Verbindung angenommen</translation>
+        <location filename="../app/cli/systemsettings.cpp" line="+48"/>
+        <location line="+11"/>
+        <source>%1 cannot be read (%2): read-only mode is on until it can</source>
+        <translation>%1 kann nicht gelesen werden (%2): der Nur-Lese-Modus gilt, bis die Datei gelesen werden kann</translation>
     </message>
     <message>
-        <location line="+55"/>
-        <source>the line was closed</source>
-        <translation>die Leitung wurde geschlossen</translation>
-    </message>
-    <message>
-        <location line="+29"/>
-        <source>broadcasts are not sent through a Modbus TCP gateway</source>
-        <translation>über ein Modbus-TCP-Gateway werden keine Broadcasts gesendet</translation>
-    </message>
-    <message>
-        <location line="+16"/>
-        <source>not connected to the gateway %1</source>
-        <translation>nicht mit dem Gateway %1 verbunden</translation>
-    </message>
-    <message>
-        <location line="+50"/>
-        <source>the gateway %1 sent an incomplete reply and then nothing for %2 ms</source>
-        <translation>das Gateway %1 hat eine unvollständige Antwort gesendet und dann %2 ms lang nichts mehr</translation>
-    </message>
-    <message>
-        <location line="+27"/>
-        <source>the connection was refused or closed</source>
-        <translation>die Verbindung wurde abgelehnt oder geschlossen</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the gateway %1 closed the connection</source>
-        <translation>das Gateway %1 hat die Verbindung geschlossen</translation>
+        <location line="-10"/>
+        <source>it is a folder</source>
+        <translation>es ist ein Ordner</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+11"/>
-        <source>no connection to the gateway %1: %2</source>
-        <translation>keine Verbindung zum Gateway %1: %2</translation>
+        <source>a link to nothing</source>
+        <translation>ein Verweis ins Leere</translation>
     </message>
     <message>
-        <location line="-1"/>
-        <source>connection to the gateway %1 lost: %2</source>
-        <translation>Verbindung zum Gateway %1 verloren: %2</translation>
+        <location line="+1"/>
+        <source>it is no regular file</source>
+        <translation>es ist keine reguläre Datei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no permission</source>
+        <translation>keine Berechtigung</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>malformed</source>
+        <translation>fehlerhaft</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>access error</source>
+        <translation>Zugriffsfehler</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: &apos;%2&apos; is taken as readOnly</source>
+        <translation>%1: &apos;%2&apos; wird als readOnly genommen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: &apos;%2=%3&apos; is no true or false: read-only mode is on</source>
+        <translation>%1: &apos;%2=%3&apos; ist weder true noch false: der Nur-Lese-Modus ist an</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: unknown key &apos;%2&apos; (known: %3)</source>
+        <translation>%1: unbekannter Schlüssel &apos;%2&apos; (bekannt: %3)</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::TcpTransport</name>
+    <message>
+        <location filename="../lib/bus/tcptransport.cpp" line="+20"/>
+        <source>broadcasts are not sent through a Modbus TCP gateway</source>
+        <translation>über ein Modbus-TCP-Gateway werden keine Broadcasts gesendet</translation>
     </message>
 </context>
 <context>
     <name>jumo::Theme</name>
     <message>
-        <location filename="../ui/theme.cpp" line="+301"/>
+        <location filename="../ui/theme.cpp" line="+309"/>
         <source>&amp;System</source>
         <translation>&amp;System</translation>
     </message>
@@ -6102,7 +6486,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::TrafficView</name>
     <message>
-        <location filename="../ui/trafficview.cpp" line="+27"/>
+        <location filename="../ui/trafficview.cpp" line="+28"/>
         <source>Device</source>
         <translation>Gerät</translation>
     </message>
@@ -6337,6 +6721,14 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
 </context>
 <context>
+    <name>jumo::ValueFormat</name>
+    <message>
+        <location filename="../lib/protocol/valueformat.cpp" line="+75"/>
+        <source>%1 (none set)</source>
+        <translation>%1 (keines gesetzt)</translation>
+    </message>
+</context>
+<context>
     <name>jumo::ValueText</name>
     <message>
         <location filename="../lib/bus/valuetext.cpp" line="+29"/>
@@ -6455,8 +6847,24 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::WriteCommand</name>
     <message>
-        <location filename="../lib/models/writecommand.cpp" line="+37"/>
-        <location line="+6"/>
+        <location filename="../lib/models/writecommand.cpp" line="+27"/>
+        <location line="+2"/>
+        <source>confirmed by read-back: %1</source>
+        <translation>durch Zurücklesen bestätigt: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>written, but the device does not report %1</source>
+        <translation>geschrieben, aber das Gerät meldet nicht %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>written, but the device reads back %1</source>
+        <translation>geschrieben, aber das Gerät liest %1 zurück</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <location line="+7"/>
         <source>Writing %1...</source>
         <translation>%1 wird geschrieben...</translation>
     </message>
@@ -6626,7 +7034,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::maps</name>
     <message>
-        <location filename="mapstrings.cpp" line="+6"/>
+        <location filename="mapstrings.cpp" line="+7"/>
         <source>Invalid function</source>
         <translation>Ungültige Funktion</translation>
     </message>
@@ -6947,16 +7355,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+1"/>
-        <source>Analog input 1</source>
-        <translation>Analogeingang 1</translation>
+        <source>Analog input 1 (mV)</source>
+        <oldsource>Analog input 2</oldsource>
+        <translation>Analogeingang 1 (mV)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Analog input 2</source>
-        <translation>Analogeingang 2</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Internal Pt100</source>
         <translation>Interner Pt100</translation>
     </message>
@@ -6966,7 +7370,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Abtastzykluszeit</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Math 1</source>
         <translation>Mathematik 1</translation>
     </message>
@@ -6991,12 +7395,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Ungefilterter Istwert</translation>
     </message>
     <message>
-        <location line="-71"/>
+        <location line="-73"/>
         <source>Setpoint</source>
         <translation>Sollwert</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+74"/>
         <source>Output (displayed value)</source>
         <translation>Stellgrad (Anzeigewert)</translation>
     </message>
@@ -7651,12 +8055,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Sollwert W4</translation>
     </message>
     <message>
-        <location line="-200"/>
+        <location line="-202"/>
         <source>Process value</source>
         <translation>Istwert</translation>
     </message>
     <message>
-        <location line="+201"/>
+        <location line="+204"/>
         <source>Logic 1+2</source>
         <translation>Logik 1+2</translation>
     </message>
@@ -7721,7 +8125,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Typ 703044/48 (96 mm x 96 mm)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Invalid Modbus function</source>
         <translation>Ungültige Modbus-Funktion</translation>
     </message>
@@ -7891,12 +8295,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>PROFINET</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Language</source>
-        <translation>Sprache</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>5.1.2 Operating level parameters</source>
         <translation>5.1.2 Parameter der Bedienerebene</translation>
     </message>
@@ -8026,12 +8425,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Stromeingang</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+246"/>
         <source>Device temperature</source>
         <translation>Gerätetemperatur</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-243"/>
         <source>Digital input 1</source>
         <translation>Digitaleingang 1</translation>
     </message>
@@ -8196,12 +8595,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Störung</translation>
     </message>
     <message>
-        <location line="-85"/>
+        <location line="-86"/>
         <source>Power reduction</source>
         <translation>Leistungsreduzierung</translation>
     </message>
     <message>
-        <location line="-237"/>
+        <location line="-249"/>
+        <source>JUMO dTRON 304/308/316 (and plast) compact controllers</source>
+        <translation>JUMO dTRON 304/308/316 (und plast) Kompaktregler</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Self-optimisation</source>
         <translation>Selbstoptimierung</translation>
     </message>
@@ -8246,7 +8650,32 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Läuft</translation>
     </message>
     <message>
-        <location line="+223"/>
+        <location line="+59"/>
+        <source>Analog input 2 (mV)</source>
+        <translation>Analogeingang 2 (mV)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Analog input 1 (degrees)</source>
+        <translation>Analogeingang 1 (Grad)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Analog input 2 (degrees)</source>
+        <translation>Analogeingang 2 (Grad)</translation>
+    </message>
+    <message>
+        <location line="+137"/>
+        <source>Setpoint (RAM)</source>
+        <translation>Sollwert (RAM)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>JUMO IPC 300 electronic transformer</source>
+        <translation>JUMO IPC 300 elektronischer Transformator</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Calibration</source>
         <translation>Kalibrierung</translation>
     </message>
@@ -8276,7 +8705,22 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Strom</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+24"/>
+        <source>Language (code)</source>
+        <translation>Sprache (Code)</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Device temperature (°C)</source>
+        <translation>Gerätetemperatur (°C)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device temperature (°F)</source>
+        <translation>Gerätetemperatur (°F)</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>Trigger for manual Teach-In</source>
         <translation>Auslöser für manuelles Teach-In</translation>
     </message>
@@ -8614,6 +9058,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+1"/>
         <source>Configuration level &gt; Analog output &gt; Value to be output = &quot;From interface&quot; (6.2)</source>
         <translation>Konfigurationsebene &gt; Analogausgang &gt; Auszugebender Wert = &quot;Von Schnittstelle&quot; (6.2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Quantrol LC100 / LC200 / LC300 universal PID controller</source>
+        <translation>Quantrol LC100 / LC200 / LC300 Universal-PID-Regler</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -9052,6 +9501,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+1"/>
+        <source>JUMO TYA 200 thyristor power units</source>
+        <translation>JUMO TYA 200 Thyristor-Leistungssteller</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Invalid data address (also sent when more words than admissible are to be read or written)</source>
         <translation>Ungültige Datenadresse (wird auch gesendet, wenn mehr Worte als zulässig gelesen oder geschrieben werden sollen)</translation>
     </message>
@@ -9316,7 +9770,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Netzfrequenz</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Load voltage slave/slave1</source>
         <translation>Lastspannung Slave/Slave1</translation>
     </message>
@@ -10079,7 +10533,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+83"/>
+        <location filename="../app/jumo-hmi.cpp" line="+134"/>
         <source>JUMO commissioning and monitoring HMI.</source>
         <translation>JUMO-HMI für Inbetriebnahme und Überwachung.</translation>
     </message>
@@ -10119,7 +10573,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Die Seite dieses Geräts öffnen, z. B. ipc300@1 (line2/ipc300@1 bei mehreren Leitungen).</translation>
     </message>
     <message>
-        <location line="-54"/>
+        <location line="-97"/>
         <source>--%1 does not go with --remote: a remote view reads the broker only</source>
         <translation>--%1 passt nicht zu --remote: eine Fernansicht liest nur den Broker</translation>
     </message>
@@ -10129,7 +10583,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;%1&apos; kann kein Topic-Präfix sein</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+61"/>
+        <source>Settings cannot be saved (%1 is not writable): what is changed in this run is lost when it ends</source>
+        <translation>Die Einstellungen können nicht gespeichert werden (%1 ist nicht beschreibbar): was in diesem Lauf geändert wird, geht an seinem Ende verloren</translation>
+    </message>
+    <message>
+        <location line="+39"/>
         <source>A line of this run, repeatable: ADDRESS[,name=NAME][,baud=N][,format=8N1][,timeout=MS][,min-response=MS][,retries=N][,read-only]; ADDRESS is a serial port, tcp://HOST:PORT or rtu+tcp://HOST:PORT. The lines kept in the settings are left as they are.</source>
         <translation>Eine Leitung dieses Laufs, wiederholbar: ADRESSE[,name=NAME][,baud=N][,format=8N1][,timeout=MS][,min-response=MS][,retries=N][,read-only]; ADRESSE ist eine serielle Schnittstelle, tcp://HOST:PORT oder rtu+tcp://HOST:PORT. Die in den Einstellungen gespeicherten Leitungen bleiben, wie sie sind.</translation>
     </message>
@@ -10199,7 +10658,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+27"/>
+        <source>jumo-hmi: no display to open the window on (DISPLAY or WAYLAND_DISPLAY is not set or cannot be reached): start it in a desktop session</source>
+        <translation>jumo-hmi: keine Anzeige, auf der das Fenster geöffnet werden kann (DISPLAY oder WAYLAND_DISPLAY ist nicht gesetzt oder nicht erreichbar): starten Sie es in einer Desktop-Sitzung</translation>
+    </message>
+    <message>
+        <location line="+27"/>
         <source>jumo-hmi: unknown theme &apos;%1&apos; (system, light, dark or high-contrast)</source>
         <translation>jumo-hmi: unbekanntes Farbschema „%1“ (system, light, dark oder high-contrast)</translation>
     </message>
@@ -10209,7 +10673,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>jumo-hmi: --%1 gehört nur zu --remote</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
+        <source>read-only mode is set by the system configuration (%1): nothing is written to the devices</source>
+        <translation>Der Nur-Lese-Modus ist durch die Systemkonfiguration festgelegt (%1): Es wird nichts auf die Geräte geschrieben</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>give the lines one way: --port, --line (repeatable), --station or --demo</source>
         <translation>die Leitungen auf eine Weise angeben: --port, --line (wiederholbar), --station oder --demo</translation>
     </message>
@@ -10219,12 +10688,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>die Station hat keine Leitungen</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>Map files refused: %1</source>
         <translation>Map-Dateien abgelehnt: %1</translation>
     </message>
     <message>
-        <location filename="../app/jumo-sim.cpp" line="+57"/>
+        <location filename="../app/jumo-sim.cpp" line="+58"/>
         <source>Simulated JUMO devices on a serial line, or behind TCP as a Modbus TCP gateway or a serial device server. DEVICE is FAMILY@ADDRESS, e.g. ipc300@1.</source>
         <translation>Simulierte JUMO-Geräte an einer seriellen Leitung oder hinter TCP als Modbus-TCP-Gateway oder serieller Geräteserver. DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1.</translation>
     </message>
@@ -10304,7 +10773,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>mindestens ein Gerät angeben, z. B. ipc300@1</translation>
     </message>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+10"/>
+        <location filename="../app/jumo-hmi.cpp" line="+12"/>
         <location filename="../app/jumo-sim.cpp" line="+8"/>
         <source>&apos;%1&apos; is not FAMILY@ADDRESS with a known family</source>
         <translation>&apos;%1&apos; ist nicht FAMILY@ADDRESS mit einer bekannten Gerätefamilie</translation>
