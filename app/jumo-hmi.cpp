@@ -290,14 +290,15 @@ int main(int argc, char *argv[])
         if (const QString unsaved = unsavedSettingsProblem(); !unsaved.isEmpty())
             notes << unsaved;
     }
-    // --line and --station make the station of this run; --port stays one line as before.
-    if (parser.isSet(QStringLiteral("line")) || parser.isSet(QStringLiteral("station"))) {
+    // --port, --line and --station make the station of this run, with the --device list.
+    if (parser.isSet(QStringLiteral("port")) || parser.isSet(QStringLiteral("line"))
+        || parser.isSet(QStringLiteral("station")) || parser.isSet(QStringLiteral("device"))) {
         auto usage = [](const QString &message) {
             QTextStream(stderr) << QStringLiteral("jumo-hmi: ") << message << Qt::endl;
             return 2;
         };
-        if (parser.isSet(QStringLiteral("port")) || options.demo
-            || (parser.isSet(QStringLiteral("line")) && parser.isSet(QStringLiteral("station"))))
+        if (options.demo || int(parser.isSet(QStringLiteral("port"))) + int(parser.isSet(QStringLiteral("line")))
+                                    + int(parser.isSet(QStringLiteral("station"))) > 1)
             return usage(QApplication::translate("main", "give the lines one way: --port, --line (repeatable), "
                                                          "--station or --demo"));
         QString error;
@@ -306,10 +307,22 @@ int main(int argc, char *argv[])
             station = jumo::StationConfig::load(parser.value(QStringLiteral("station")), registry, &error);
         } else {
             jumo::BusSettings defaults;
-            defaults.format = jumo::LineFormat::parse(parser.value(QStringLiteral("baud")).toInt(),
-                                                      parser.value(QStringLiteral("format")))
-                                      .value_or(defaults.format);
+            const std::optional<jumo::LineFormat> format = jumo::LineFormat::parse(
+                    parser.value(QStringLiteral("baud")).toInt(), parser.value(QStringLiteral("format")));
+            if (!format)
+                return usage(QApplication::translate("main", "--baud %1 --format %2: no line format of this "
+                                                             "program (e.g. --baud 19200 --format 8E1)")
+                                     .arg(parser.value(QStringLiteral("baud")), parser.value(QStringLiteral("format"))));
+            defaults.format = *format;
             QList<jumo::LineConfig> lines;
+            // --port is the one line of this run, as a --line without options would be:
+            // the lines and devices kept in the settings are neither polled nor changed.
+            if (parser.isSet(QStringLiteral("port"))) {
+                jumo::LineConfig line;
+                line.settings = defaults;
+                line.settings.portName = parser.value(QStringLiteral("port"));
+                lines << line;
+            }
             for (const QString &spec : parser.values(QStringLiteral("line"))) {
                 std::optional<jumo::LineConfig> line = jumo::StationConfig::parseLineSpec(spec, defaults, &error);
                 if (!line)
@@ -320,6 +333,8 @@ int main(int argc, char *argv[])
         }
         if (!station)
             return usage(error);
+        if (station->lines.isEmpty() && !parser.isSet(QStringLiteral("station")))
+            return usage(QApplication::translate("main", "--device needs the line it is on: --port, --line or --station"));
         if (station->lines.isEmpty())
             return usage(QApplication::translate("main", "the station has no lines"));
         for (const QString &text : parser.values(QStringLiteral("device"))) {
@@ -330,6 +345,10 @@ int main(int argc, char *argv[])
             if (!devices.contains(device->device))
                 devices << device->device;
         }
+        // Checked again with the devices: two at one address on a line are refused, naming both.
+        station = jumo::StationConfig::fromLines(station->lines, &error);
+        if (!station)
+            return usage(error);
         options.lines = station->lines;
     }
     jumo::MainWindow window(registry, options);
@@ -344,24 +363,6 @@ int main(int argc, char *argv[])
     // For a minute: a message hides the line's state in the status bar while it shows.
     if (!notes.isEmpty())
         window.statusBar()->showMessage(notes.join(QStringLiteral("; ")), 60000);
-    if (parser.isSet(QStringLiteral("port"))) {
-        window.connectionBar()->setSettings(parser.value(QStringLiteral("port")), parser.value(QStringLiteral("baud")).toInt(),
-                                            parser.value(QStringLiteral("format")));
-        for (const QString &device : parser.values(QStringLiteral("device"))) {
-            bool ok = false;
-            const int address = device.section(QLatin1Char('@'), 1).toInt(&ok);
-            const auto map = registry.family(device.section(QLatin1Char('@'), 0, 0));
-            if (!map || !ok || address < 1 || address > 255) {
-                QTextStream(stderr) << QApplication::translate("main", "'%1' is not FAMILY@ADDRESS with a known family")
-                                               .arg(device)
-                                    << Qt::endl;
-                return 2;
-            }
-            window.addDevice(map, quint8(address));
-        }
-        if (!window.connectLine())
-            QTextStream(stderr) << window.bus()->lastError() << Qt::endl;
-    }
     if (parser.isSet(QStringLiteral("report-startup"))) {
         QObject::connect(window.bus(), &jumo::Bus::entriesUpdated, &window, [started](jumo::DeviceId, const QStringList &ids) {
             static bool reported = false;

@@ -2799,12 +2799,12 @@ andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal
     </message>
     <message>
         <location line="+0"/>
-        <location line="+1115"/>
+        <location line="+1148"/>
         <source>JUMO HMI</source>
         <translation>JUMO HMI</translation>
     </message>
     <message>
-        <location line="-1113"/>
+        <location line="-1146"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
@@ -2854,7 +2854,12 @@ andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal
         <translation>Gerät &amp;hinzufügen...</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+3"/>
+        <source>&amp;Remove the shown device...</source>
+        <translation>Angezeigtes Gerät &amp;entfernen...</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>&amp;Commissioning report of the shown device...</source>
         <translation>Inbetriebnahme&amp;bericht des angezeigten Geräts...</translation>
     </message>
@@ -2935,13 +2940,13 @@ andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal
     </message>
     <message>
         <location line="+65"/>
-        <location line="+214"/>
+        <location line="+219"/>
         <location line="+34"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-645"/>
+        <location line="-650"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -2981,7 +2986,12 @@ andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal
         <translation>NUR LESEN</translation>
     </message>
     <message>
-        <location line="+512"/>
+        <location line="+315"/>
+        <source>Address %1 on line %2 is taken by %3: a line has one device per address.</source>
+        <translation>Adresse %1 an Leitung %2 ist durch %3 belegt: eine Leitung hat ein Gerät je Adresse.</translation>
+    </message>
+    <message>
+        <location line="+202"/>
         <source>Choose or type the line&apos;s address first: a serial port, tcp://HOST[:PORT] or rtu+tcp://HOST:PORT.</source>
         <translation>Wählen Sie zuerst die Adresse der Leitung oder geben Sie sie ein: eine serielle Schnittstelle, tcp://HOST[:PORT] oder rtu+tcp://HOST:PORT.</translation>
     </message>
@@ -3082,7 +3092,22 @@ andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal
         <translation>%1 an Leitung %2</translation>
     </message>
     <message>
-        <location line="+140"/>
+        <location line="+129"/>
+        <source>Remove device</source>
+        <translation>Gerät entfernen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove %1 from this window?</source>
+        <translation>%1 aus diesem Fenster entfernen?</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>It is no longer polled; its page, trend and data logging close. Nothing is written to the device.</source>
+        <translation>Es wird nicht mehr abgefragt; seine Seite, sein Trend und seine Datenaufzeichnung werden geschlossen. Auf das Gerät wird nichts geschrieben.</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>Connect line %1 first, or choose a connected line.</source>
         <translation>Zuerst Leitung %1 verbinden oder eine verbundene Leitung wählen.</translation>
     </message>
@@ -3097,12 +3122,12 @@ andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal
         <translation>Datenaufzeichnung von %1 angehalten: %2</translation>
     </message>
     <message>
-        <location line="-660"/>
+        <location line="-688"/>
         <source>address %1: %2</source>
         <translation>Adresse %1: %2</translation>
     </message>
     <message>
-        <location line="-319"/>
+        <location line="-324"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -3122,12 +3147,7 @@ andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal
         <translation>Leitung durch&amp;suchen...</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>&amp;Remove the shown device</source>
-        <translation>Angezeigtes Gerät &amp;entfernen</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>&amp;Parameters: back up, compare, restore...</source>
         <translation>&amp;Parameter: sichern, vergleichen, wiederherstellen...</translation>
     </message>
@@ -3220,17 +3240,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Nächster &amp;Reiter der Geräteseite</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+106"/>
         <source>Add device</source>
         <translation>Gerät hinzufügen</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>%1 @ %2 is on line %3 already.</source>
-        <translation>%1 @ %2 ist schon an Leitung %3.</translation>
-    </message>
-    <message>
-        <location line="+20"/>
+        <location line="+24"/>
         <source>Demo line failed: %1</source>
         <translation>Demo-Leitung fehlgeschlagen: %1</translation>
     </message>
@@ -3283,7 +3298,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>die Familie wird nicht am Gerät geprüft (--no-identify)</translation>
     </message>
     <message>
-        <location line="+178"/>
+        <location line="+206"/>
         <source>Scan</source>
         <translation>Suchen</translation>
     </message>
@@ -10678,17 +10693,27 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Der Nur-Lese-Modus ist durch die Systemkonfiguration festgelegt (%1): Es wird nichts auf die Geräte geschrieben</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>give the lines one way: --port, --line (repeatable), --station or --demo</source>
         <translation>die Leitungen auf eine Weise angeben: --port, --line (wiederholbar), --station oder --demo</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+11"/>
+        <source>--baud %1 --format %2: no line format of this program (e.g. --baud 19200 --format 8E1)</source>
+        <translation>--baud %1 --format %2: kein Leitungsformat dieses Programms (z. B. --baud 19200 --format 8E1)</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>--device needs the line it is on: --port, --line or --station</source>
+        <translation>--device braucht die Leitung, an der es ist: --port, --line oder --station</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>the station has no lines</source>
         <translation>die Station hat keine Leitungen</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+23"/>
         <source>Map files refused: %1</source>
         <translation>Map-Dateien abgelehnt: %1</translation>
     </message>
@@ -10773,13 +10798,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>mindestens ein Gerät angeben, z. B. ipc300@1</translation>
     </message>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+12"/>
-        <location filename="../app/jumo-sim.cpp" line="+8"/>
+        <location line="+8"/>
         <source>&apos;%1&apos; is not FAMILY@ADDRESS with a known family</source>
         <translation>&apos;%1&apos; ist nicht FAMILY@ADDRESS mit einer bekannten Gerätefamilie</translation>
     </message>
     <message>
-        <location filename="../app/jumo-sim.cpp" line="+10"/>
+        <location line="+10"/>
         <source>cannot open %1: %2</source>
         <translation>%1 kann nicht geöffnet werden: %2</translation>
     </message>

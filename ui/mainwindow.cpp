@@ -285,8 +285,8 @@ void MainWindow::buildMenus()
     devices->addAction(tr("&Add a device..."), QKeySequence::New, this, &MainWindow::addDeviceInteractively);
     devices->addAction(tr("&Scan the line..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), this,
                        &MainWindow::openScanDialog);
-    devices->addAction(tr("&Remove the shown device"), QKeySequence(Qt::CTRL | Qt::Key_Delete), this,
-                       &MainWindow::removeCurrentDevice);
+    devices->addAction(tr("&Remove the shown device..."), QKeySequence(Qt::CTRL | Qt::Key_Delete), this,
+                       &MainWindow::removeCurrentDeviceInteractively);
     devices->addSeparator();
     devices->addAction(tr("&Parameters: back up, compare, restore..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P),
                        this, [this] {
@@ -490,14 +490,19 @@ void MainWindow::addDeviceInteractively()
     if (dialog.exec() != QDialog::Accepted || !dialog.family())
         return;
     StationLine *line = m_lines.value(dialog.line(), m_currentLine);
-    if (!addDevice(line, dialog.family(), dialog.address())) {
+    // One device per address on a line: a second one would read the first one's registers.
+    if (const int taken = indexAt(line, dialog.address()); taken >= 0) {
+        const Bus *bus = line->bus();
         QMessageBox::information(this, tr("Add device"),
-                                 tr("%1 @ %2 is on line %3 already.")
-                                         .arg(dialog.family()->shortName)
+                                 tr("Address %1 on line %2 is taken by %3: a line has one device per address.")
                                          .arg(dialog.address())
-                                         .arg(line->name()));
+                                         .arg(line->name(),
+                                              DeviceTitle::brief(*bus->deviceMap(m_devices[taken].id),
+                                                                 bus->deviceAddress(m_devices[taken].id))));
         return;
     }
+    if (!addDevice(line, dialog.family(), dialog.address()))
+        return;
     const int index = indexOf(line, dialog.family()->family, dialog.address());
     showDevice(ensurePage(index));
 }
@@ -956,7 +961,7 @@ bool MainWindow::addDevice(std::shared_ptr<const RegisterMap> map, quint8 addres
 
 bool MainWindow::addDevice(StationLine *line, std::shared_ptr<const RegisterMap> map, quint8 address)
 {
-    if (!map || !line || indexOf(line, map->family, address) >= 0)
+    if (!map || !line || indexAt(line, address) >= 0)
         return false;
     Bus *bus = line->bus();
     const DeviceId id = bus->addDevice(map, address);
@@ -1020,6 +1025,15 @@ int MainWindow::indexOf(DeviceId id) const
 {
     for (int i = 0; i < m_devices.size(); ++i) {
         if (m_devices[i].id == id)
+            return i;
+    }
+    return -1;
+}
+
+int MainWindow::indexAt(const StationLine *line, quint8 address) const
+{
+    for (int i = 0; i < m_devices.size(); ++i) {
+        if (m_devices[i].line == line && line->bus()->deviceAddress(m_devices[i].id) == address)
             return i;
     }
     return -1;
@@ -1114,6 +1128,25 @@ DeviceTile *MainWindow::deviceTile(const QString &lineName, const QString &famil
     const StationLine *l = line(lineName);
     const int index = l ? indexOf(l, family, address) : -1;
     return index >= 0 ? m_devices[index].tile : nullptr;
+}
+
+void MainWindow::removeCurrentDeviceInteractively()
+{
+    const int index = currentDeviceIndex();
+    if (index < 0)
+        return;
+    // A shortcut pressed by mistake must not end the monitoring of a device: asked first.
+    const DeviceEntry &d = m_devices[index];
+    QMessageBox box(QMessageBox::Question, tr("Remove device"),
+                    tr("Remove %1 from this window?").arg(DeviceTitle::full(*d.line->bus()->deviceMap(d.id),
+                                                                            d.line->bus()->deviceAddress(d.id),
+                                                                            d.line->name())),
+                    QMessageBox::Yes | QMessageBox::No, this);
+    box.setInformativeText(tr("It is no longer polled; its page, trend and data logging close. Nothing is written to "
+                              "the device."));
+    box.setDefaultButton(QMessageBox::No);
+    if (box.exec() == QMessageBox::Yes)
+        removeCurrentDevice();
 }
 
 void MainWindow::removeCurrentDevice()
@@ -1277,12 +1310,9 @@ void MainWindow::restoreSettings()
         StationLine *line = addLine(kept.name, kept.settings);
         if (!line)
             continue;   // a name edited by hand into something unfit, or twice
-        for (const QString &device : kept.devices) {
-            const auto map = m_registry.family(device.section(QLatin1Char('@'), 0, 0));
-            bool ok = false;
-            const int address = device.section(QLatin1Char('@'), 1).toInt(&ok);
-            if (map && ok && address >= 1 && address <= 255)
-                addDevice(line, map, quint8(address));
+        for (const QString &text : kept.devices) {
+            if (const std::optional<DeviceSpec> device = DeviceSpec::parse(text, m_registry, nullptr))
+                addDevice(line, m_registry.family(device->family), device->address);
         }
     }
 }

@@ -147,6 +147,8 @@ private:
     // rows), -1 when it is gone. Tiles and callbacks keep ids, never positions.
     int indexOf(DeviceId id) const;
     int indexOf(const StationLine *line, const QString &family, quint8 address) const;
+    // The device at this address on the line, of whatever family; -1 when none.
+    int indexAt(const StationLine *line, quint8 address) const;
     void onNavigation(int row);
     // The line rows and device rows of the list again, after lines or devices changed.
     void rebuildNavigation();
@@ -179,6 +181,7 @@ private:
     void setTheme(int kind);
     void startDemo();
     void removeCurrentDevice();
+    void removeCurrentDeviceInteractively();
     void onLineStateChanged(StationLine *line);
     void updateStatus();
     void restoreSettings();

@@ -23,6 +23,9 @@ check "'name' must be 1..32" --line "/tmp/a,name=bad%name"
 check "give the lines one way" --line /tmp/a --port /tmp/b
 check "the line name 'x' is used by lines[0] too" --line /tmp/a,name=x --line /tmp/b,name=x
 check "unknown family 'nope'" --line /tmp/a --device nope@1
+check "address 2 is used twice on the line" --port /tmp/a --device ipc300@2 --device tya200@2
+check "--device needs the line it is on" --device ipc300@1
+check "no line format" --port /tmp/a --baud 12
 check "/nonexistent/station.json" --station /nonexistent/station.json
 # The remote viewer takes the broker only, and a broker URL it can use.
 check "--demo does not go with --remote" --remote mqtt://127.0.0.1 --demo

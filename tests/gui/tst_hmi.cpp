@@ -258,6 +258,7 @@ private slots:
     void trendOpensWithTheKeyValues();
     void faceplatesReadAtAGlance();
     void textFieldsKeepTheirEditingKeys();
+    void oneDevicePerAddressOnALine();
     void mnemonicsAreUnique_data();
     void mnemonicsAreUnique();
     void parameterEditorWritesReviewedChanges();
@@ -1324,10 +1325,33 @@ void tst_Hmi::textFieldsKeepTheirEditingKeys()
     QCOMPARE(window->devicePage("ipc300", 1), page);
     QVERIFY(page->isVisible());
     QCOMPARE(edit->text(), QStringLiteral("41.5 "));
-    // Outside a text field the shortcut removes the shown device.
-    page->tabs()->setFocus();
-    QTest::keyClick(page->tabs(), Qt::Key_Delete, Qt::ControlModifier);
+    // Outside a text field the shortcut asks to remove the shown device, naming it, with
+    // No as the default: a key pressed by mistake keeps the device.
+    auto pressShortcut = [&] {
+        page->tabs()->setFocus();
+        QTest::keyClick(page->tabs(), Qt::Key_Delete, Qt::ControlModifier);
+    };
+    const Question kept = answerQuestion(pressShortcut, std::nullopt);
+    QCOMPARE(kept.asked, 1);
+    QVERIFY(kept.noIsDefault);
+    QVERIFY2(kept.text.contains("IPC 300 at address 1 on line line1"), qPrintable(kept.text));
+    QCOMPARE(window->devicePage("ipc300", 1), page);
+    window->activateWindow();   // back from the question
+    QVERIFY(QTest::qWaitForWindowActive(window.get()));
+    const Question removed = answerQuestion(pressShortcut, QMessageBox::Yes);
+    QCOMPARE(removed.asked, 1);
     QTRY_VERIFY(!window->devicePage("ipc300", 1));
+}
+
+void tst_Hmi::oneDevicePerAddressOnALine()
+{
+    // A second device at an address in use would read the first one's registers as its own.
+    auto window = connectedWindow(false);
+    QVERIFY(window);
+    QVERIFY(!window->addDevice(families().family("tya200"), 1));
+    QVERIFY(!window->addDevice(families().family("ipc300"), 1));
+    QVERIFY(!window->deviceTile("tya200", 1));
+    QVERIFY(window->addDevice(families().family("tya200"), 2));
 }
 
 void tst_Hmi::mnemonicsAreUnique_data()
