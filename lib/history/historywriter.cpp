@@ -36,6 +36,12 @@ QVariant nullableText(const QString &text)
     return text.isNull() ? QVariant(QMetaType::fromType<QString>()) : QVariant(text);
 }
 
+// An empty text, never NULL: a null QString binds as NULL, which the NOT NULL columns refuse.
+QString notNull(const QString &text)
+{
+    return text.isNull() ? QStringLiteral("") : text;
+}
+
 QString metaName(const char *what, const QString &station)
 {
     return QLatin1String(what) + QLatin1Char(':') + station;
@@ -126,19 +132,19 @@ bool HistoryWriter::resolveIds(const QList<HistorySample> &samples, QList<int> *
         insert.prepare(QStringLiteral("INSERT INTO history_series (station, line, device, entry, is_number, unit) "
                                       "VALUES (?, ?, ?, ?, ?, ?) ON CONFLICT (station, line, device, entry) "
                                       "DO UPDATE SET is_number = excluded.is_number, unit = excluded.unit"));
-        insert.addBindValue(info->key.station);
-        insert.addBindValue(info->key.line);
-        insert.addBindValue(info->key.device);
-        insert.addBindValue(info->entry);
+        insert.addBindValue(notNull(info->key.station));
+        insert.addBindValue(notNull(info->key.line));
+        insert.addBindValue(notNull(info->key.device));
+        insert.addBindValue(notNull(info->entry));
         insert.addBindValue(info->numeric ? 1 : 0);
-        insert.addBindValue(info->unit);
+        insert.addBindValue(notNull(info->unit));
         QSqlQuery select = m_db.query();
         select.prepare(QStringLiteral("SELECT id FROM history_series WHERE station = ? AND line = ? AND device = ? "
                                       "AND entry = ?"));
-        select.addBindValue(info->key.station);
-        select.addBindValue(info->key.line);
-        select.addBindValue(info->key.device);
-        select.addBindValue(info->entry);
+        select.addBindValue(notNull(info->key.station));
+        select.addBindValue(notNull(info->key.line));
+        select.addBindValue(notNull(info->key.device));
+        select.addBindValue(notNull(info->entry));
         if (!insert.exec() || !select.exec() || !select.next()) {
             *error = m_db.failure(tr("write"), insert.lastError().isValid() ? insert.lastError() : select.lastError());
             return false;

@@ -55,7 +55,8 @@ const HistoryKey key{QStringLiteral("hall-3"), QStringLiteral("line1"), QStringL
 
 HistorySeriesInfo info(const QString &entry)
 {
-    return HistorySeriesInfo{key, entry, true, QStringLiteral("V")};
+    // A map entry without a unit has a null QString, which is no NULL in the store.
+    return HistorySeriesInfo{key, entry, true, entry == "load_voltage" ? QStringLiteral("V") : QString()};
 }
 
 // A whole minute some time ago, so that everything recorded lies in the past.
@@ -263,7 +264,8 @@ void tst_History::storeGivesBackStepsAndGaps()
         store.record(sample(voltage, t0 + 60000, SampleState::Ok, 231));
         store.record(sample(voltage, t0 + 120000, SampleState::Offline));
         store.record(sample(voltage, t0 + 180000, SampleState::Ok, 229));
-        QVERIFY(waitWritten(store, written, 4));
+        store.record(sample(store.series(info("status")), t0, SampleState::Ok, 1));
+        QVERIFY(waitWritten(store, written, 5));
 
         // Answered from the store's reader thread, by signal.
         QSignalSpy answered(&store, &HistorySource::samplesAnswered);
@@ -284,7 +286,9 @@ void tst_History::storeGivesBackStepsAndGaps()
     QVERIFY2(reader.open(&error), qPrintable(error));
     const auto series = reader.series(key.station, &error);
     QVERIFY(series);
-    QCOMPARE(series->size(), 1);
+    QCOMPARE(series->size(), 2);
+    QCOMPARE(series->at(1).entry, QString("status"));
+    QCOMPARE(series->at(1).unit, QString(""));
     QCOMPARE(series->at(0).entry, QString("load_voltage"));
     QCOMPARE(series->at(0).unit, QString("V"));
     const HistoryTrace trace = reader.samples(key, "load_voltage", t0 + 30000, t0 + 40 * minute, 1000);
