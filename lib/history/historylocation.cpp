@@ -1,7 +1,9 @@
 #include "history/historylocation.h"
 
+#include "protocol/maskedaddress.h"
+#include "protocol/regularfile.h"
+
 #include <QDir>
-#include <QFile>
 #include <QUrl>
 
 namespace jumo {
@@ -11,18 +13,6 @@ namespace {
 bool hasScheme(const QString &text)
 {
     return text.contains(QLatin1String("://"));
-}
-
-// The address with whatever stands between "USER:" and the last '@' masked, for an
-// address Qt cannot parse (its error text would quote it whole).
-QString masked(const QString &text)
-{
-    const qsizetype start = text.indexOf(QLatin1String("://")) + 3;
-    const qsizetype at = text.lastIndexOf(QLatin1Char('@'));
-    const qsizetype colon = text.indexOf(QLatin1Char(':'), start);
-    if (at < start || colon < 0 || colon > at)
-        return text;
-    return text.left(colon + 1) + QStringLiteral("***") + text.mid(at);
 }
 
 } // namespace
@@ -45,7 +35,7 @@ std::optional<HistoryLocation> HistoryLocation::parse(const QString &text, QStri
     auto fail = [&](const QString &why) -> std::optional<HistoryLocation> {
         if (error)
             *error = tr("'%1' is no history database: %2 (use postgresql://[USER@]HOST[:PORT]/DATABASE or a file)")
-                             .arg(masked(text), why);
+                             .arg(maskedAddress(text), why);
         return std::nullopt;
     };
     if (text.isEmpty())
@@ -97,16 +87,14 @@ std::optional<HistoryLocation> HistoryLocation::fromOptions(const Options &optio
     if (!options.username.isEmpty())
         location->username = options.username;
     if (!options.passwordFile.isEmpty()) {
-        QFile file(options.passwordFile);
-        if (!file.open(QIODevice::ReadOnly)) {
+        QString why;
+        const std::optional<QString> password = RegularFile::firstLine(options.passwordFile, &why);
+        if (!password) {
             if (error)
-                *error = tr("cannot read the password file %1: %2").arg(options.passwordFile, file.errorString());
+                *error = tr("cannot read the password file %1").arg(why);
             return std::nullopt;
         }
-        QByteArray line = file.readLine(4096);
-        while (line.endsWith('\n') || line.endsWith('\r'))
-            line.chop(1);
-        location->password = QString::fromUtf8(line);
+        location->password = *password;
     } else {
         location->password = qEnvironmentVariable("JUMO_HISTORY_PASSWORD");
     }

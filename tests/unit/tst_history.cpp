@@ -11,6 +11,7 @@
 #include "smalldisk.h"
 
 #include <QDateTime>
+#include <QFile>
 #include <QSignalSpy>
 #include <QSqlQuery>
 #include <QTemporaryDir>
@@ -89,6 +90,7 @@ class tst_History : public QObject
 private slots:
     void locationParses_data();
     void locationParses();
+    void passwordComesFromAFile();
     void changesBeyondPrecision_data();
     void changesBeyondPrecision();
     void minuteRowsKeepOnlyChanges();
@@ -132,6 +134,27 @@ void tst_History::locationParses()
     else
         QVERIFY2(why.contains(error), qPrintable(why));
     QVERIFY(!why.contains("secret"));
+}
+
+void tst_History::passwordComesFromAFile()
+{
+    QTemporaryDir dir;
+    QFile file(dir.filePath("password"));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("s3cret/@\r\nsecond line\n");
+    file.close();
+    QString error;
+    const auto location = HistoryLocation::fromOptions({"postgresql://db/history", "jumo", file.fileName()}, &error);
+    QVERIFY2(location, qPrintable(error));
+    QCOMPARE(location->password, QString("s3cret/@"));
+    QCOMPARE(location->username, QString("jumo"));
+    QVERIFY(!location->display().contains("s3cret"));
+
+    QVERIFY(!HistoryLocation::fromOptions({"postgresql://db/history", {}, dir.filePath("missing")}, &error));
+    QVERIFY2(error.startsWith("cannot read the password file " + dir.filePath("missing") + ": "), qPrintable(error));
+    // A password is for a server, not for a file.
+    QVERIFY(!HistoryLocation::fromOptions({"history.sqlite", {}, file.fileName()}, &error));
+    QVERIFY2(error.contains("not for the file history.sqlite"), qPrintable(error));
 }
 
 void tst_History::changesBeyondPrecision_data()
