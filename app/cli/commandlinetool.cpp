@@ -1,6 +1,7 @@
 #include "commandlinetool.h"
 
 #include "exitcodes.h"
+#include "historycommands.h"
 #include "protocol/familyregistry.h"
 #include "linecommands.h"
 #include "mapcommands.h"
@@ -38,6 +39,10 @@ QString CommandLineTool::usage() const
               "Stations of several lines:\n"
               "  station FILE [--check|--json]\n"
               "                           check a station file, list its lines and devices\n"
+              "\n"
+              "Recorded values (no line is opened):\n"
+              "  history --station FILE|--db URL DEVICE ENTRY... [--from T --to T] [--csv|--json]\n"
+              "                           print what was recorded, with its validity\n"
               "\n"
               "Commands on lines (all take --port PATH --baud N --format 8N1|8E1|8O1|8N2\n"
               "--timeout MS --read-only --verbose for one line, or --line SPEC once per\n"
@@ -133,6 +138,8 @@ std::optional<int> CommandLineTool::runCommand(const QStringList &arguments)
         return maps.decode(rest);
     if (command == QLatin1String("station"))
         return StationCommands(registry, m_out, m_err).station(rest);
+    if (command == QLatin1String("history"))
+        return HistoryCommands(registry, m_out, m_err).history(rest);
     if (LineCommands::commands().contains(command)) {
         m_lineCommands = std::make_unique<LineCommands>(registry, m_out, m_err);
         connect(m_lineCommands.get(), &LineCommands::finished, this, [this](int code) { emit finished(checkOutput(code)); });

@@ -1,29 +1,11 @@
 #include "mqtt/mqttsettings.h"
 
-#include <QFile>
+#include "protocol/maskedaddress.h"
+#include "protocol/regularfile.h"
+
 #include <QUrl>
 
 namespace jumo {
-
-namespace {
-
-// The address as typed, with whatever stands between "USER:" and "@" masked: for an
-// address Qt cannot parse (and whose error text quotes it whole).
-QString withoutPassword(const QString &text)
-{
-    const qsizetype scheme = text.indexOf(QLatin1String("://"));
-    const qsizetype start = scheme < 0 ? 0 : scheme + 3;
-    // The last '@': a password may hold '/' and '@' as typed.
-    const qsizetype at = text.lastIndexOf(QLatin1Char('@'));
-    if (at < start)
-        return text;
-    const qsizetype colon = text.indexOf(QLatin1Char(':'), start);
-    if (colon < 0 || colon > at)
-        return text;
-    return text.left(colon + 1) + QStringLiteral("***") + text.mid(at);
-}
-
-} // namespace
 
 std::optional<MqttSettings> MqttSettings::fromUrl(const QString &text, QString *error)
 {
@@ -32,7 +14,7 @@ std::optional<MqttSettings> MqttSettings::fromUrl(const QString &text, QString *
     const QString scheme = url.scheme().toLower();
     auto fail = [&](const QString &why) -> std::optional<MqttSettings> {
         // Never a password in a message (it would end up in logs).
-        const QString shown = url.isValid() ? url.toString(QUrl::RemovePassword) : withoutPassword(text);
+        const QString shown = url.isValid() ? url.toString(QUrl::RemovePassword) : maskedAddress(text);
         if (error)
             *error = tr("'%1' is no broker address: %2 (use mqtt://[USER@]HOST[:PORT] or mqtts://...)").arg(shown, why);
         return std::nullopt;
@@ -106,16 +88,11 @@ std::optional<MqttSettings> MqttSettings::fromOptions(const Options &options, QS
 
 std::optional<QString> MqttSettings::passwordFromFile(const QString &path, QString *error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        if (error)
-            *error = tr("cannot read the password file %1: %2").arg(path, file.errorString());
-        return std::nullopt;
-    }
-    QByteArray line = file.readLine(4096);
-    while (line.endsWith('\n') || line.endsWith('\r'))
-        line.chop(1);
-    return QString::fromUtf8(line);
+    QString why;
+    const std::optional<QString> password = RegularFile::firstLine(path, &why);
+    if (!password && error)
+        *error = tr("cannot read the password file %1").arg(why);
+    return password;
 }
 
 } // namespace jumo

@@ -96,4 +96,15 @@ std::optional<QByteArray> RegularFile::read(const QString &path, qint64 maxBytes
     return data;
 }
 
+std::optional<QString> RegularFile::firstLine(const QString &path, QString *error)
+{
+    const std::optional<QByteArray> data = read(path, 64 * 1024, error);
+    if (!data)
+        return std::nullopt;
+    QByteArray line = data->left(data->indexOf('\n'));
+    while (line.endsWith('\r'))
+        line.chop(1);
+    return QString::fromUtf8(line);
+}
+
 } // namespace jumo

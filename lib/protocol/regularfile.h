@@ -22,6 +22,8 @@ public:
     // The whole file; nullopt with "PATH: reason" in error when it cannot be read or is
     // no regular file of at most maxBytes. Qt resources (":/...") are read as they are.
     static std::optional<QByteArray> read(const QString &path, qint64 maxBytes = defaultLimit, QString *error = nullptr);
+    // The first line without its line end, as UTF-8 (a password file); errors as read().
+    static std::optional<QString> firstLine(const QString &path, QString *error = nullptr);
     // Opens a regular file for reading, or for appending (created when missing), into
     // file; false with the reason in error. Never blocks on a FIFO.
     static bool openForReading(QFile &file, const QString &path, QString *error);

@@ -188,7 +188,7 @@ void tst_Jumoctl::decodeShowsErrorValues()
 void tst_Jumoctl::helpForEveryCommand_data()
 {
     QTest::addColumn<QString>("command");
-    for (const char *c : {"families", "map", "plan", "decode", "ports"})
+    for (const char *c : {"families", "map", "plan", "decode", "ports", "history"})
         QTest::newRow(c) << c;
 }
 

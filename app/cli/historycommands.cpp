@@ -1,0 +1,255 @@
+#include "historycommands.h"
+
+#include "bus/stationconfig.h"
+#include "commandparser.h"
+#include "exitcodes.h"
+#include "history/historyreader.h"
+#include "logs/eventlog.h"
+#include "protocol/csv.h"
+#include "protocol/familyregistry.h"
+#include "protocol/valuecodec.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QRegularExpression>
+#include <QSet>
+
+#include <cmath>
+
+namespace jumo {
+
+namespace {
+
+QString isoTime(qint64 ms)
+{
+    return QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC).toString(Qt::ISODateWithMs);
+}
+
+QString valueText(const HistoryPoint &p, double number)
+{
+    if (!p.text.isEmpty())
+        return p.text;
+    return std::isnan(number) ? QString() : ValueCodec::formatFloat(number);
+}
+
+QJsonValue jsonNumber(double number)
+{
+    return std::isnan(number) ? QJsonValue() : QJsonValue(number);
+}
+
+// Whether the device text names this device: "ipc300@1", "line1/ipc300@1" or
+// "hall-3/line1/ipc300@1".
+bool names(const HistoryKey &key, const QString &device)
+{
+    return key.device == device || key.line + QLatin1Char('/') + key.device == device || key.name() == device;
+}
+
+} // namespace
+
+HistoryCommands::HistoryCommands(const FamilyRegistry &registry, QTextStream &out, QTextStream &err)
+    : m_registry(registry), m_out(out), m_err(err)
+{
+}
+
+std::optional<QDateTime> HistoryCommands::parseTime(const QString &text, const QDateTime &now)
+{
+    if (text == QLatin1String("now"))
+        return now;
+    static const QRegularExpression relative(QStringLiteral("^-(\\d{1,9})([smhd])$"));
+    if (const QRegularExpressionMatch m = relative.match(text); m.hasMatch()) {
+        const qint64 count = m.captured(1).toLongLong();
+        const QChar unit = m.captured(2).at(0);
+        const qint64 seconds = unit == QLatin1Char('s') ? 1 : unit == QLatin1Char('m') ? 60 : unit == QLatin1Char('h') ? 3600 : 86400;
+        return now.addSecs(-count * seconds);
+    }
+    QDateTime time = QDateTime::fromString(text, Qt::ISODateWithMs);
+    if (!time.isValid())
+        return std::nullopt;
+    return time;
+}
+
+int HistoryCommands::history(const QStringList &arguments)
+{
+    CommandParser parser(QStringLiteral("history"),
+                         tr("Prints the recorded values of a device's entries from FROM to TO with their state and "
+                            "validity: every sample kept, and one-minute rows (minimum, mean, maximum) where the "
+                            "samples are thinned out. Reads the station's history (--station FILE: its file in the "
+                            "log folder) or the database given by --db; no line is opened."));
+    parser.addOption({QStringLiteral("station"), tr("The station file whose history is read."), tr("FILE")});
+    parser.addOption({QStringLiteral("db"),
+                      tr("The history: an SQLite file, or postgresql://[USER@]HOST[:PORT]/DATABASE (the password "
+                         "from JUMO_HISTORY_PASSWORD or ~/.pgpass)."),
+                      tr("URL")});
+    parser.addOption({QStringLiteral("from"),
+                      tr("Start: an ISO 8601 time (local unless it names its offset), 'now', or a time before now "
+                         "such as -90s, -15m, -2h, -7d. Default: -1h."),
+                      tr("TIME"), QStringLiteral("-1h")});
+    parser.addOption({QStringLiteral("to"), tr("End, as --from. Default: now."), tr("TIME"), QStringLiteral("now")});
+    parser.addOption({QStringLiteral("csv"), tr("CSV: time,device,entry,value,unit,state,validity,resolution,"
+                                                "minimum,mean,maximum.")});
+    parser.addOption({QStringLiteral("json"), tr("One JSON document: the device, the span and each entry's records.")});
+    parser.addPositionalArgument(QStringLiteral("device"),
+                                 tr("The device: FAMILY@ADDRESS, LINE/FAMILY@ADDRESS or STATION/LINE/FAMILY@ADDRESS."));
+    parser.addPositionalArgument(QStringLiteral("entry"), tr("Entries to print."), QStringLiteral("ENTRY..."));
+    if (const auto stop = parser.parseArguments(arguments, m_out, m_err, 2))
+        return *stop;
+    auto usage = [this](const QString &message) {
+        m_err << tr("jumoctl history: %1").arg(message) << Qt::endl;
+        return exitcode::Usage;
+    };
+    const bool csv = parser.isSet(QStringLiteral("csv"));
+    const bool json = parser.isSet(QStringLiteral("json"));
+    if (csv && json)
+        return usage(tr("give at most one of --csv and --json"));
+    if (parser.isSet(QStringLiteral("station")) == parser.isSet(QStringLiteral("db")))
+        return usage(tr("give exactly one of --station FILE and --db URL"));
+
+    const QDateTime now = QDateTime::currentDateTimeUtc();
+    const std::optional<QDateTime> from = parseTime(parser.value(QStringLiteral("from")), now);
+    const std::optional<QDateTime> to = parseTime(parser.value(QStringLiteral("to")), now);
+    if (!from)
+        return usage(tr("--from: '%1' is no time").arg(parser.value(QStringLiteral("from"))));
+    if (!to)
+        return usage(tr("--to: '%1' is no time").arg(parser.value(QStringLiteral("to"))));
+    if (*to <= *from)
+        return usage(tr("--to must be after --from"));
+
+    HistoryLocation location;
+    QString station;
+    QString error;
+    if (parser.isSet(QStringLiteral("station"))) {
+        const std::optional<StationConfig> config = StationConfig::load(parser.value(QStringLiteral("station")), m_registry, &error);
+        if (!config) {
+            m_err << error << Qt::endl;
+            return exitcode::Usage;
+        }
+        const QString folder = EventLog::defaultFolder(&error);
+        if (folder.isEmpty()) {
+            m_err << tr("jumoctl history: no log folder to find the history in: %1").arg(error) << Qt::endl;
+            return exitcode::Failed;
+        }
+        station = config->name;
+        location = HistoryLocation::file(HistoryLocation::defaultFile(folder, station));
+    } else {
+        const std::optional<HistoryLocation> parsed =
+                HistoryLocation::fromOptions({parser.value(QStringLiteral("db")), {}, {}}, &error);
+        if (!parsed)
+            return usage(error);
+        location = *parsed;
+    }
+
+    HistoryReader reader(location);
+    if (!reader.open(&error)) {
+        m_err << tr("jumoctl history: %1").arg(error) << Qt::endl;
+        return exitcode::Failed;
+    }
+    const std::optional<QList<HistorySeriesInfo>> series = reader.series(station, &error);
+    if (!series) {
+        m_err << tr("jumoctl history: %1").arg(error) << Qt::endl;
+        return exitcode::Failed;
+    }
+    const QString device = parser.positionalArguments().constFirst();
+    QList<HistoryKey> keys;
+    QSet<QString> devices;
+    for (const HistorySeriesInfo &info : *series) {
+        devices.insert(info.key.name());
+        if (names(info.key, device) && !keys.contains(info.key))
+            keys.append(info.key);
+    }
+    if (keys.isEmpty()) {
+        QStringList recorded = devices.values();
+        recorded.sort();
+        m_err << tr("jumoctl history: nothing of %1 is recorded in %2").arg(device, location.display()) << Qt::endl;
+        if (!recorded.isEmpty())
+            m_err << tr("recorded devices: %1").arg(recorded.join(QStringLiteral(", "))) << Qt::endl;
+        return exitcode::Failed;
+    }
+    if (keys.size() > 1) {
+        QStringList named;
+        for (const HistoryKey &k : std::as_const(keys))
+            named << k.name();
+        return usage(tr("%1 names several devices: %2").arg(device, named.join(QStringLiteral(", "))));
+    }
+    const HistoryKey key = keys.constFirst();
+    const QStringList entries = parser.positionalArguments().mid(1);
+    QHash<QString, HistorySeriesInfo> infos;
+    for (const HistorySeriesInfo &info : *series) {
+        if (info.key == key)
+            infos.insert(info.entry, info);
+    }
+    for (const QString &entry : entries) {
+        if (!infos.contains(entry)) {
+            QStringList recorded = infos.keys();
+            recorded.sort();
+            return usage(tr("%1 is not recorded for %2 (recorded: %3)")
+                                 .arg(entry, key.name(), recorded.join(QStringLiteral(", "))));
+        }
+    }
+
+    const qint64 fromMs = from->toMSecsSinceEpoch();
+    const qint64 toMs = to->toMSecsSinceEpoch();
+    if (csv)
+        m_out << "time,device,entry,value,unit,state,validity,resolution,minimum,mean,maximum\n";
+    QJsonArray jsonEntries;
+    for (const QString &entry : entries) {
+        const QString unit = infos.value(entry).unit;
+        QJsonArray records;
+        const bool ok = reader.records(
+                key, entry, fromMs, toMs,
+                [&](const HistoryRecord &r) {
+                    const HistoryPoint &p = r.point;
+                    const QString resolution = r.minute ? QStringLiteral("minute") : QStringLiteral("raw");
+                    if (json) {
+                        QJsonObject o{{"time", isoTime(p.timeMs)},
+                                      {"state", sampleStateName(p.state)},
+                                      {"validity", sampleValidityName(p.state)},
+                                      {"resolution", resolution}};
+                        o.insert("value", p.text.isEmpty() ? jsonNumber(p.value) : QJsonValue(p.text));
+                        if (r.minute) {
+                            o.insert("minimum", jsonNumber(p.minimum));
+                            o.insert("mean", jsonNumber(p.mean));
+                            o.insert("maximum", jsonNumber(p.maximum));
+                        }
+                        records.append(o);
+                    } else if (csv) {
+                        m_out << isoTime(p.timeMs) << ',' << csvField(key.name()) << ',' << csvField(entry) << ','
+                              << csvField(valueText(p, p.value)) << ',' << csvField(unit) << ','
+                              << sampleStateName(p.state) << ',' << sampleValidityName(p.state) << ',' << resolution
+                              << ',' << (r.minute ? valueText(p, p.minimum) : QString()) << ','
+                              << (r.minute ? valueText(p, p.mean) : QString()) << ','
+                              << (r.minute ? valueText(p, p.maximum) : QString()) << '\n';
+                    } else {
+                        const QString value = valueText(p, p.value);
+                        m_out << QDateTime::fromMSecsSinceEpoch(p.timeMs).toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz"))
+                              << "  " << entry << "  "
+                              << (value.isEmpty() ? QStringLiteral("-") : unit.isEmpty() ? value : value + QLatin1Char(' ') + unit)
+                              << "  " << sampleStateName(p.state);
+                        if (r.minute)
+                            m_out << "  " << tr("(minute: %1 to %2, mean %3)")
+                                                     .arg(valueText(p, p.minimum), valueText(p, p.maximum),
+                                                          valueText(p, p.mean));
+                        m_out << '\n';
+                    }
+                    return m_out.status() == QTextStream::Ok;
+                },
+                &error);
+        if (!ok) {
+            m_out.flush();
+            m_err << tr("jumoctl history: %1").arg(error) << Qt::endl;
+            return exitcode::Failed;
+        }
+        if (json)
+            jsonEntries.append(QJsonObject{{"entry", entry}, {"unit", unit}, {"records", records}});
+    }
+    if (json)
+        m_out << QJsonDocument(QJsonObject{{"device", key.name()},
+                                           {"from", isoTime(fromMs)},
+                                           {"to", isoTime(toMs)},
+                                           {"entries", jsonEntries}})
+                         .toJson(QJsonDocument::Indented);
+    m_out.flush();
+    return exitcode::Ok;
+}
+
+} // namespace jumo

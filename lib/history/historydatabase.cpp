@@ -1,0 +1,277 @@
+#include "history/historydatabase.h"
+
+#include <QAtomicInteger>
+#include <QDir>
+#include <QFileInfo>
+#include <QSqlError>
+#include <QSqlQuery>
+#include <QVariant>
+
+namespace jumo {
+
+namespace {
+
+QString nextConnectionName()
+{
+    static QAtomicInteger<quint64> counter;
+    return QStringLiteral("jumo-history-%1").arg(counter.fetchAndAddRelaxed(1));
+}
+
+// The tables, in both dialects. Samples are keyed by series and time, so a series'
+// samples lie together and a query of one entry reads one range of the key.
+QStringList schemaStatements(bool postgres)
+{
+    const QString key = postgres ? QStringLiteral("BIGSERIAL PRIMARY KEY") : QStringLiteral("INTEGER PRIMARY KEY");
+    const QString compact = postgres ? QString() : QStringLiteral(" WITHOUT ROWID");
+    return {
+        QStringLiteral("CREATE TABLE IF NOT EXISTS history_meta (name TEXT PRIMARY KEY, value TEXT NOT NULL)"),
+        QStringLiteral("CREATE TABLE IF NOT EXISTS history_series (id %1, station TEXT NOT NULL, line TEXT NOT NULL, "
+                       "device TEXT NOT NULL, entry TEXT NOT NULL, is_number SMALLINT NOT NULL, unit TEXT NOT NULL, "
+                       "UNIQUE (station, line, device, entry))")
+                .arg(key),
+        QStringLiteral("CREATE TABLE IF NOT EXISTS history_raw (series BIGINT NOT NULL, t BIGINT NOT NULL, "
+                       "state SMALLINT NOT NULL, value DOUBLE PRECISION, text_value TEXT, PRIMARY KEY (series, t))%1")
+                .arg(compact),
+        QStringLiteral("CREATE TABLE IF NOT EXISTS history_minute (series BIGINT NOT NULL, t BIGINT NOT NULL, "
+                       "state SMALLINT NOT NULL, value DOUBLE PRECISION, minimum DOUBLE PRECISION, "
+                       "maximum DOUBLE PRECISION, mean DOUBLE PRECISION, text_value TEXT, PRIMARY KEY (series, t))%1")
+                .arg(compact),
+    };
+}
+
+QString upsert(const QString &table, const QStringList &columns, int rows)
+{
+    const QString row = QLatin1Char('(') + QStringList(columns.size(), QStringLiteral("?")).join(QLatin1Char(',')) + QLatin1Char(')');
+    QStringList updates;
+    for (const QString &c : columns.mid(2))
+        updates << QStringLiteral("%1 = excluded.%1").arg(c);
+    return QStringLiteral("INSERT INTO %1 (%2) VALUES %3 ON CONFLICT (series, t) DO UPDATE SET %4")
+            .arg(table, columns.join(QStringLiteral(", ")), QStringList(rows, row).join(QLatin1Char(',')),
+                 updates.join(QStringLiteral(", ")));
+}
+
+} // namespace
+
+HistoryDatabase::HistoryDatabase(const HistoryLocation &location)
+    : m_location(location), m_connectionName(nextConnectionName())
+{
+}
+
+HistoryDatabase::~HistoryDatabase()
+{
+    close();
+}
+
+bool HistoryDatabase::open(bool writable, QString *error)
+{
+    close();
+    const bool postgres = isPostgres();
+    m_db = QSqlDatabase::addDatabase(postgres ? QStringLiteral("QPSQL") : QStringLiteral("QSQLITE"), m_connectionName);
+    if (!m_db.isValid()) {
+        if (error)
+            *error = tr("cannot open the history %1: Qt's %2 driver is not installed (%3)")
+                             .arg(m_location.display(), postgres ? QStringLiteral("QPSQL") : QStringLiteral("QSQLITE"),
+                                  postgres ? QStringLiteral("libqt6sql6-psql") : QStringLiteral("libqt6sql6-sqlite"));
+        close();
+        return false;
+    }
+    if (postgres) {
+        m_db.setHostName(m_location.host);
+        m_db.setPort(m_location.port);
+        m_db.setDatabaseName(m_location.database);
+        m_db.setUserName(m_location.username);
+        m_db.setPassword(m_location.password);
+        m_db.setConnectOptions(QStringLiteral("connect_timeout=10"));
+    } else {
+        const QFileInfo info(m_location.path);
+        if (!writable && !info.exists()) {
+            if (error)
+                *error = tr("no history at %1").arg(m_location.path);
+            close();
+            return false;
+        }
+        if (writable)
+            QDir().mkpath(info.absolutePath());
+        m_db.setDatabaseName(m_location.path);
+        // A reader waits for a checkpoint rather than failing; never longer than this.
+        m_db.setConnectOptions(writable ? QStringLiteral("QSQLITE_BUSY_TIMEOUT=10000")
+                                        : QStringLiteral("QSQLITE_BUSY_TIMEOUT=10000;QSQLITE_OPEN_READONLY"));
+    }
+    if (!m_db.open()) {
+        if (error)
+            *error = failure(tr("open"), m_db.lastError());
+        close();
+        return false;
+    }
+    if (!postgres && writable) {
+        // WAL: readers (a trend, jumoctl) never wait for the writer, and a crash leaves
+        // every committed transaction. FULL: a commit is on the disk when it returns.
+        QSqlQuery mode = query();
+        if (!mode.exec(QStringLiteral("PRAGMA journal_mode=WAL")) || !mode.next()
+            || mode.value(0).toString().compare(QLatin1String("wal"), Qt::CaseInsensitive) != 0) {
+            if (error)
+                *error = failure(tr("open"), mode.lastError());
+            close();
+            return false;
+        }
+        if (!exec(QStringLiteral("PRAGMA synchronous=FULL"), error)) {
+            close();
+            return false;
+        }
+    }
+    if (!(writable ? createSchema(error) : checkSchema(error))) {
+        close();
+        return false;
+    }
+    return true;
+}
+
+void HistoryDatabase::close()
+{
+    if (m_db.isValid()) {
+        m_db.close();
+        m_db = QSqlDatabase();
+        QSqlDatabase::removeDatabase(m_connectionName);
+    }
+}
+
+bool HistoryDatabase::isOpen() const
+{
+    return m_db.isValid() && m_db.isOpen();
+}
+
+QString HistoryDatabase::failure(const QString &doing, const QSqlError &error) const
+{
+    QString why = error.databaseText().trimmed();
+    if (why.isEmpty())
+        why = error.driverText().trimmed();
+    if (why.isEmpty())
+        why = tr("unknown error");
+    //: %1 is "open", "write", "read"; %2 the file or database; %3 the reason
+    return tr("cannot %1 the history %2: %3").arg(doing, m_location.display(), why);
+}
+
+QSqlQuery HistoryDatabase::query() const
+{
+    QSqlQuery q(m_db);
+    q.setForwardOnly(true);
+    return q;
+}
+
+bool HistoryDatabase::exec(const QString &sql, QString *error)
+{
+    QSqlQuery q = query();
+    if (q.exec(sql))
+        return true;
+    if (error)
+        *error = failure(tr("write"), q.lastError());
+    return false;
+}
+
+bool HistoryDatabase::createSchema(QString *error)
+{
+    // Two stations making the tables of one PostgreSQL database at once: the loser of the
+    // race tries again and finds them.
+    for (int attempt = 0;; ++attempt) {
+        QString why;
+        bool ok = m_db.transaction();
+        for (const QString &statement : schemaStatements(isPostgres())) {
+            if (!ok)
+                break;
+            ok = exec(statement, &why);
+        }
+        if (ok)
+            ok = checkSchemaVersionOrSet(&why);
+        if (ok && m_db.commit())
+            return true;
+        if (why.isEmpty())
+            why = failure(tr("write"), m_db.lastError());
+        m_db.rollback();
+        if (attempt > 0 || !why.contains(QLatin1String("duplicate key"), Qt::CaseInsensitive)) {
+            if (error)
+                *error = why;
+            return false;
+        }
+    }
+}
+
+bool HistoryDatabase::checkSchemaVersionOrSet(QString *error)
+{
+    const std::optional<QString> version = meta(QStringLiteral("schema"), error);
+    if (!version)
+        return false;
+    if (version->isEmpty())
+        return setMeta(QStringLiteral("schema"), QString::number(schemaVersion), error);
+    if (version->toInt() > schemaVersion) {
+        if (error)
+            *error = tr("cannot use the history %1: it was written by a newer version (schema %2, this one knows %3)")
+                             .arg(m_location.display(), *version)
+                             .arg(schemaVersion);
+        return false;
+    }
+    return true;
+}
+
+bool HistoryDatabase::checkSchema(QString *error)
+{
+    QSqlQuery q = query();
+    if (!q.exec(QStringLiteral("SELECT value FROM history_meta WHERE name = 'schema'")) || !q.next()) {
+        if (error)
+            *error = tr("%1 holds no history").arg(m_location.display());
+        return false;
+    }
+    if (q.value(0).toInt() > schemaVersion) {
+        if (error)
+            *error = tr("cannot use the history %1: it was written by a newer version (schema %2, this one knows %3)")
+                             .arg(m_location.display(), q.value(0).toString())
+                             .arg(schemaVersion);
+        return false;
+    }
+    return true;
+}
+
+std::optional<QString> HistoryDatabase::meta(const QString &name, QString *error)
+{
+    QSqlQuery q = query();
+    q.prepare(QStringLiteral("SELECT value FROM history_meta WHERE name = ?"));
+    q.addBindValue(name);
+    if (!q.exec()) {
+        if (error)
+            *error = failure(tr("read"), q.lastError());
+        return std::nullopt;
+    }
+    return q.next() ? q.value(0).toString() : QString();
+}
+
+bool HistoryDatabase::setMeta(const QString &name, const QString &value, QString *error)
+{
+    QSqlQuery q = query();
+    q.prepare(QStringLiteral("INSERT INTO history_meta (name, value) VALUES (?, ?) "
+                             "ON CONFLICT (name) DO UPDATE SET value = excluded.value"));
+    q.addBindValue(name);
+    q.addBindValue(value);
+    if (q.exec())
+        return true;
+    if (error)
+        *error = failure(tr("write"), q.lastError());
+    return false;
+}
+
+QString HistoryDatabase::upsertRaw(int rows)
+{
+    return upsert(QStringLiteral("history_raw"),
+                  {QStringLiteral("series"), QStringLiteral("t"), QStringLiteral("state"), QStringLiteral("value"),
+                   QStringLiteral("text_value")},
+                  rows);
+}
+
+QString HistoryDatabase::upsertMinute(int rows)
+{
+    return upsert(QStringLiteral("history_minute"),
+                  {QStringLiteral("series"), QStringLiteral("t"), QStringLiteral("state"), QStringLiteral("value"),
+                   QStringLiteral("minimum"), QStringLiteral("maximum"), QStringLiteral("mean"),
+                   QStringLiteral("text_value")},
+                  rows);
+}
+
+} // namespace jumo

@@ -1,0 +1,65 @@
+// One Qt SQL connection to a history on the thread that makes it: opening (WAL for
+// SQLite), the schema (the same tables in SQLite and PostgreSQL), the station's
+// bookkeeping, and errors worded for people. The one place that knows the two dialects.
+#pragma once
+
+#include "history/historylocation.h"
+
+#include <QCoreApplication>
+#include <QSqlDatabase>
+#include <QString>
+
+#include <optional>
+
+class QSqlError;
+class QSqlQuery;
+
+namespace jumo {
+
+class HistoryDatabase
+{
+    Q_DECLARE_TR_FUNCTIONS(jumo::HistoryDatabase)
+
+public:
+    static constexpr int schemaVersion = 1;
+
+    explicit HistoryDatabase(const HistoryLocation &location);
+    ~HistoryDatabase();
+    HistoryDatabase(const HistoryDatabase &) = delete;
+    HistoryDatabase &operator=(const HistoryDatabase &) = delete;
+
+    // Writable: makes the file (and its folder) or the tables where they are missing.
+    // Read-only: an SQLite file must exist and hold a history.
+    bool open(bool writable, QString *error);
+    void close();
+    bool isOpen() const;
+    QSqlDatabase &database() { return m_db; }
+    const HistoryLocation &location() const { return m_location; }
+    bool isPostgres() const { return m_location.kind == HistoryLocation::Kind::Postgres; }
+
+    // "cannot write the history postgresql://...: WHY".
+    QString failure(const QString &doing, const QSqlError &error) const;
+    // A query on this connection, forward only.
+    QSqlQuery query() const;
+    bool exec(const QString &sql, QString *error);
+
+    // The store's bookkeeping, per station: "rolled:hall-3" and the like.
+    std::optional<QString> meta(const QString &name, QString *error);
+    bool setMeta(const QString &name, const QString &value, QString *error);
+
+    // Inserts of that many rows, replacing a row of the same series and time (the same
+    // statement in both dialects).
+    static QString upsertRaw(int rows);
+    static QString upsertMinute(int rows);
+
+private:
+    bool createSchema(QString *error);
+    bool checkSchema(QString *error);
+    bool checkSchemaVersionOrSet(QString *error);
+
+    HistoryLocation m_location;
+    QString m_connectionName;
+    QSqlDatabase m_db;
+};
+
+} // namespace jumo

@@ -1,0 +1,82 @@
+#include "history/historytypes.h"
+
+#include <QHash>
+
+#include <array>
+
+namespace jumo {
+
+namespace {
+
+constexpr std::array<const char *, 15> stateNames{
+    "ok",      "underrange", "overrange", "invalid", "stale",       "timeout",      "exception",    "offline",
+    "line_lost", "disconnected", "unavailable", "unconfirmed", "wrong_device", "not_read", "not_recorded",
+};
+static_assert(stateNames.size() == size_t(SampleState::NotRecorded) + 1);
+
+} // namespace
+
+QString sampleStateName(SampleState state)
+{
+    return QString::fromLatin1(stateNames[size_t(state)]);
+}
+
+std::optional<SampleState> sampleStateFromName(const QString &name)
+{
+    for (size_t i = 0; i < stateNames.size(); ++i) {
+        if (name == QLatin1String(stateNames[i]))
+            return SampleState(i);
+    }
+    return std::nullopt;
+}
+
+std::optional<SampleState> sampleStateFromNumber(int number)
+{
+    if (number < 0 || number > int(SampleState::NotRecorded))
+        return std::nullopt;
+    return SampleState(number);
+}
+
+QString sampleValidityName(SampleState state)
+{
+    if (state == SampleState::Stale)
+        return QStringLiteral("stale");
+    return isGap(state) ? QStringLiteral("unknown") : QStringLiteral("current");
+}
+
+bool hasValue(SampleState state)
+{
+    return state == SampleState::Ok || state == SampleState::Stale;
+}
+
+bool isGap(SampleState state)
+{
+    return state >= SampleState::Timeout;
+}
+
+QString HistoryKey::name() const
+{
+    return station + QLatin1Char('/') + line + QLatin1Char('/') + device;
+}
+
+size_t qHash(const HistoryKey &key, size_t seed)
+{
+    return qHashMulti(seed, key.station, key.line, key.device);
+}
+
+QList<HistoryGap> HistoryTrace::gaps() const
+{
+    QList<HistoryGap> out;
+    for (qsizetype i = 0; i < points.size(); ++i) {
+        if (!isGap(points[i].state))
+            continue;
+        qsizetype next = i + 1;
+        while (next < points.size() && isGap(points[next].state))
+            ++next;
+        out.append({points[i].timeMs, next < points.size() ? points[next].timeMs : endMs, points[i].state});
+        i = next - 1;
+    }
+    return out;
+}
+
+} // namespace jumo
