@@ -430,7 +430,7 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::CommandLineTool</name>
     <message>
-        <location filename="../app/cli/commandlinetool.cpp" line="+25"/>
+        <location filename="../app/cli/commandlinetool.cpp" line="+26"/>
         <source>Usage: jumoctl COMMAND [options] [arguments]
 
 Commissioning and monitoring of JUMO power and process controllers over Modbus RTU.
@@ -447,6 +447,10 @@ The serial ports of this machine:
 Stations of several lines:
   station FILE [--check|--json]
                            check a station file, list its lines and devices
+
+Recorded values (no line is opened):
+  history --station FILE|--db URL DEVICE ENTRY... [--from T --to T] [--csv|--json]
+                           print what was recorded, with its validity
 
 Commands on lines (all take --port PATH --baud N --format 8N1|8E1|8O1|8N2
 --timeout MS --read-only --verbose for one line, or --line SPEC once per
@@ -492,6 +496,10 @@ Stationen mit mehreren Leitungen:
   station FILE [--check|--json]
                            Stationsdatei prüfen, ihre Leitungen und Geräte auflisten
 
+Aufgezeichnete Werte (es wird keine Leitung geöffnet):
+  history --station FILE|--db URL DEVICE ENTRY... [--from T --to T] [--csv|--json]
+                           das Aufgezeichnete mit seiner Gültigkeit ausgeben
+
 Befehle an Leitungen (alle mit --port PATH --baud N --format 8N1|8E1|8O1|8N2
 --timeout MS --read-only --verbose für eine Leitung, oder --line SPEC je Leitung,
 oder --station FILE); DEVICE ist FAMILY@ADDRESS, z. B. ipc300@1, oder
@@ -521,7 +529,7 @@ Leitungen auf stderr sagt, was er erledigt hat.
 </translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+70"/>
         <source>jumoctl: the output could not be written: %1</source>
         <translation>jumoctl: die Ausgabe konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -536,7 +544,7 @@ Leitungen auf stderr sagt, was er erledigt hat.
         <translation>Warnung: Map-Datei abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>jumoctl: unknown command &apos;%1&apos;</source>
         <translation>jumoctl: unbekannter Befehl &apos;%1&apos;</translation>
     </message>
@@ -1722,6 +1730,292 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <location line="-39"/>
         <source>not a regular file</source>
         <translation>keine reguläre Datei</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::HistoryCommands</name>
+    <message>
+        <location filename="../app/cli/historycommands.cpp" line="+75"/>
+        <source>Prints the recorded values of a device&apos;s entries from FROM to TO with their state and validity: every sample kept, and one-minute rows (minimum, mean, maximum) where the samples are thinned out. Reads the station&apos;s history (--station FILE: its file in the log folder) or the database given by --db; no line is opened.</source>
+        <translation>Gibt die aufgezeichneten Werte der Einträge eines Geräts von FROM bis TO mit Zustand und Gültigkeit aus: jeden aufbewahrten Messwert und Minutenzeilen (Minimum, Mittelwert, Maximum), wo die Messwerte ausgedünnt sind. Liest die Historie der Station (--station FILE: ihre Datei im Protokollordner) oder die mit --db angegebene Datenbank; es wird keine Leitung geöffnet.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The station file whose history is read.</source>
+        <translation>Die Stationsdatei, deren Historie gelesen wird.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>FILE</source>
+        <translation>FILE</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The history: an SQLite file, or postgresql://[USER@]HOST[:PORT]/DATABASE (the password from JUMO_HISTORY_PASSWORD or ~/.pgpass).</source>
+        <translation>Die Historie: eine SQLite-Datei oder postgresql://[USER@]HOST[:PORT]/DATABASE (das Passwort aus JUMO_HISTORY_PASSWORD oder ~/.pgpass).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>URL</source>
+        <translation>URL</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Start: an ISO 8601 time (local unless it names its offset), &apos;now&apos;, or a time before now such as -90s, -15m, -2h, -7d. Default: -1h.</source>
+        <translation>Beginn: eine Zeit nach ISO 8601 (Ortszeit, wenn sie keinen Versatz nennt), &apos;now&apos; oder eine Zeit vor jetzt wie -90s, -15m, -2h, -7d. Standard: -1h.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+1"/>
+        <source>TIME</source>
+        <translation>TIME</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>End, as --from. Default: now.</source>
+        <translation>Ende, wie --from. Standard: now.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV: time,device,entry,value,unit,state,validity,resolution,minimum,mean,maximum.</source>
+        <translation>CSV: time,device,entry,value,unit,state,validity,resolution,minimum,mean,maximum.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>One JSON document: the device, the span and each entry&apos;s records.</source>
+        <translation>Ein JSON-Dokument: das Gerät, die Zeitspanne und die Datensätze jedes Eintrags.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The device: FAMILY@ADDRESS, LINE/FAMILY@ADDRESS or STATION/LINE/FAMILY@ADDRESS.</source>
+        <translation>Das Gerät: FAMILY@ADDRESS, LINE/FAMILY@ADDRESS oder STATION/LINE/FAMILY@ADDRESS.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Entries to print.</source>
+        <translation>Auszugebende Einträge.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+46"/>
+        <location line="+5"/>
+        <location line="+90"/>
+        <source>jumoctl history: %1</source>
+        <translation>jumoctl history: %1</translation>
+    </message>
+    <message>
+        <location line="-135"/>
+        <source>give at most one of --csv and --json</source>
+        <translation>höchstens eines von --csv und --json angeben</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>give exactly one of --station FILE and --db URL</source>
+        <translation>genau eines von --station FILE und --db URL angeben</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--from: &apos;%1&apos; is no time</source>
+        <translation>--from: &apos;%1&apos; ist keine Zeit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>--to: &apos;%1&apos; is no time</source>
+        <translation>--to: &apos;%1&apos; ist keine Zeit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>--to must be after --from</source>
+        <translation>--to muss nach --from liegen</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>jumoctl history: no log folder to find the history in: %1</source>
+        <translation>jumoctl history: kein Protokollordner, in dem die Historie liegen könnte: %1</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>jumoctl history: nothing of %1 is recorded in %2</source>
+        <translation>jumoctl history: von %1 ist in %2 nichts aufgezeichnet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>recorded devices: %1</source>
+        <translation>aufgezeichnete Geräte: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 names several devices: %2</source>
+        <translation>%1 bezeichnet mehrere Geräte: %2</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 is not recorded for %2 (recorded: %3)</source>
+        <translation>%1 ist für %2 nicht aufgezeichnet (aufgezeichnet: %3)</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>(minute: %1 to %2, mean %3)</source>
+        <translation>(Minute: %1 bis %2, Mittelwert %3)</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::HistoryDatabase</name>
+    <message>
+        <location filename="../lib/history/historydatabase.cpp" line="+72"/>
+        <source>cannot open the history %1: Qt&apos;s %2 driver is not installed (%3)</source>
+        <translation>die Historie %1 kann nicht geöffnet werden: Qts Treiber %2 ist nicht installiert (%3)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>no history at %1</source>
+        <translation>keine Historie unter %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <location line="+11"/>
+        <source>open</source>
+        <translation>geöffnet</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>unknown error</source>
+        <translation>unbekannter Fehler</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>cannot %1 the history %2: %3</source>
+        <extracomment>%1 is &quot;open&quot;, &quot;write&quot;, &quot;read&quot;; %2 the file or database; %3 the reason</extracomment>
+        <translation>die Historie %2 kann nicht %1 werden: %3</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <location line="+21"/>
+        <location line="+68"/>
+        <source>write</source>
+        <translation>geschrieben</translation>
+    </message>
+    <message>
+        <location line="-49"/>
+        <location line="+18"/>
+        <source>cannot use the history %1: it was written by a newer version (schema %2, this one knows %3)</source>
+        <translation>die Historie %1 ist nicht verwendbar: sie wurde von einer neueren Version geschrieben (Schema %2, diese kennt %3)</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>%1 holds no history</source>
+        <translation>%1 enthält keine Historie</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>read</source>
+        <translation>gelesen</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::HistoryLocation</name>
+    <message>
+        <location filename="../lib/history/historylocation.cpp" line="+37"/>
+        <source>&apos;%1&apos; is no history database: %2 (use postgresql://[USER@]HOST[:PORT]/DATABASE or a file)</source>
+        <translation>&apos;%1&apos; ist keine Historien-Datenbank: %2 (postgresql://[USER@]HOST[:PORT]/DATABASE oder eine Datei verwenden)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>empty</source>
+        <translation>leer</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>unknown scheme &apos;%1&apos;</source>
+        <translation>unbekanntes Schema &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a password in the address can be read by every user of this computer; use a password file or JUMO_HISTORY_PASSWORD</source>
+        <translation>ein Passwort in der Adresse kann jeder Benutzer dieses Rechners lesen; verwenden Sie eine Passwortdatei oder JUMO_HISTORY_PASSWORD</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no host</source>
+        <translation>kein Host</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>name one database: postgresql://HOST/DATABASE</source>
+        <translation>eine Datenbank nennen: postgresql://HOST/DATABASE</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>an address has no query</source>
+        <translation>eine Adresse hat keine Abfrage</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>port out of range</source>
+        <translation>Port außerhalb des Bereichs</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>a user and a password are for a PostgreSQL database, not for the file %1</source>
+        <translation>Benutzer und Passwort sind für eine PostgreSQL-Datenbank, nicht für die Datei %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>cannot read the password file %1</source>
+        <translation>die Passwortdatei %1 ist nicht lesbar</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::HistoryReader</name>
+    <message>
+        <location filename="../lib/history/historyreader.cpp" line="+65"/>
+        <location line="+28"/>
+        <location line="+19"/>
+        <location line="+32"/>
+        <location line="+17"/>
+        <source>read</source>
+        <translation>gelesen</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::HistoryWriter</name>
+    <message>
+        <location filename="../lib/history/historywriter.cpp" line="+105"/>
+        <location line="+6"/>
+        <location line="+38"/>
+        <location line="+37"/>
+        <location line="+41"/>
+        <location line="+6"/>
+        <location line="+102"/>
+        <location line="+21"/>
+        <location line="+4"/>
+        <location line="+24"/>
+        <location line="+14"/>
+        <location line="+3"/>
+        <location line="+4"/>
+        <source>write</source>
+        <translation>geschrieben</translation>
+    </message>
+    <message>
+        <location line="-201"/>
+        <location line="+94"/>
+        <location line="+20"/>
+        <source>read</source>
+        <translation>gelesen</translation>
+    </message>
+    <message>
+        <location line="+100"/>
+        <location line="+38"/>
+        <source>History not recorded: %1</source>
+        <translation>Historie nicht aufgezeichnet: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="-12"/>
+        <source>History recorded again (%n sample(s) since the failure not recorded)</source>
+        <translation>
+            <numerusform>Historie wird wieder aufgezeichnet (%n Messwert seit dem Fehler nicht aufgezeichnet)</numerusform>
+            <numerusform>Historie wird wieder aufgezeichnet (%n Messwerte seit dem Fehler nicht aufgezeichnet)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4162,7 +4456,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::MqttSettings</name>
     <message>
-        <location filename="../lib/mqtt/mqttsettings.cpp" line="+37"/>
+        <location filename="../lib/mqtt/mqttsettings.cpp" line="+19"/>
         <source>&apos;%1&apos; is no broker address: %2 (use mqtt://[USER@]HOST[:PORT] or mqtts://...)</source>
         <translation>&apos;%1&apos; ist keine Broker-Adresse: %2 (mqtt://[BENUTZER@]HOST[:PORT] oder mqtts://... angeben)</translation>
     </message>
@@ -4213,8 +4507,8 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+12"/>
-        <source>cannot read the password file %1: %2</source>
-        <translation>Die Passwortdatei %1 ist nicht lesbar: %2</translation>
+        <source>cannot read the password file %1</source>
+        <translation>Die Passwortdatei %1 ist nicht lesbar</translation>
     </message>
 </context>
 <context>
