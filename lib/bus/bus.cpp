@@ -88,6 +88,9 @@ void Bus::close()
 {
     m_line.close();
     abortQueued(tr("the line was closed"));
+    // The request under way ends now (a write as unknown): the transport says so only
+    // from the event loop, when whoever closed the line may be gone (a CLI on a signal).
+    loseInFlight(tr("the line was closed"));
     invalidateAll(ReadError::LineClosed);
     m_identities.forgetAll();
 }

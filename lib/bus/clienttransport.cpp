@@ -25,6 +25,7 @@ bool ClientTransport::open(QString *error)
     if (m_state != State::Closed)
         closeLink();
     m_replyTimer.stop();
+    ++m_opened;
     m_state = State::Connecting;
     switch (openLink(error)) {
     case Link::Failed:
@@ -50,12 +51,13 @@ void ClientTransport::shutDown(const QString &reason)
     m_replyTimer.stop();
     closeLink();
     if (m_request) {
-        // Queued: whoever closes (or hears of the loss) goes on first.
+        // Queued: whoever closes (or hears of the loss) goes on first. Not after the
+        // transport was opened again: it would end the new connection's request.
         m_request.reset();
         ModbusResult result;
         result.status = ModbusResult::Status::LineDown;
         result.errorText = reason;
-        QMetaObject::invokeMethod(this, [this, result] { emit finished(result); }, Qt::QueuedConnection);
+        emitLater(result);
     }
 }
 
@@ -168,9 +170,20 @@ void ClientTransport::fail(ModbusResult::Status status, const QString &reason)
 void ClientTransport::deliver(const ModbusResult &result)
 {
     if (m_inSend)
-        QMetaObject::invokeMethod(this, [this, result] { emit finished(result); }, Qt::QueuedConnection);
+        emitLater(result);
     else
         emit finished(result);
+}
+
+void ClientTransport::emitLater(const ModbusResult &result)
+{
+    QMetaObject::invokeMethod(
+            this,
+            [this, result, opened = m_opened] {
+                if (opened == m_opened)
+                    emit finished(result);
+            },
+            Qt::QueuedConnection);
 }
 
 void ClientTransport::noteRejected(const QString &what)

@@ -69,11 +69,14 @@ private:
     void shutDown(const QString &reason);
     void onReplyTimeout();
     void deliver(const ModbusResult &result);
+    // finished() from the event loop, unless the transport was opened again meanwhile.
+    void emitLater(const ModbusResult &result);
 
     State m_state = State::Closed;
     std::optional<ModbusRequest> m_request;
     bool m_transmitted = false;
     bool m_inSend = false;   // finished() is queued while send() runs
+    quint64 m_opened = 0;    // counts open(): a queued finished() of an earlier connection is dropped
     QTimer m_replyTimer;
     QElapsedTimer m_lastRejectLog;
     int m_rejectsUnlogged = 0;

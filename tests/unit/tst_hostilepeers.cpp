@@ -144,6 +144,8 @@ private slots:
     void deviceServerTwoRepliesInOneSegment();
     void finishedOnceNeverFromInsideSend_data();
     void finishedOnceNeverFromInsideSend();
+    void closedRequestDoesNotEndTheNextConnections_data();
+    void closedRequestDoesNotEndTheNextConnections();
 };
 
 void tst_HostilePeers::gatewayStallsInTheMiddleOfAReply_data()
@@ -390,6 +392,43 @@ void tst_HostilePeers::finishedOnceNeverFromInsideSend()
     const ModbusResult result = resultOf(finished, 0);
     QCOMPARE(int(result.status), status);
     QVERIFY2(result.errorText.contains(said), qPrintable(result.errorText));
+}
+
+void tst_HostilePeers::closedRequestDoesNotEndTheNextConnections_data()
+{
+    QTest::addColumn<QString>("scheme");
+    QTest::newRow("gateway") << "tcp";
+    QTest::newRow("device server") << "rtu+tcp";
+}
+
+void tst_HostilePeers::closedRequestDoesNotEndTheNextConnections()
+{
+    // Closed with a request under way and opened again at once (the bus reopening a line):
+    // the old request's end, said from the event loop, must not end the new connection's
+    // request with the old connection's "line down".
+    QFETCH(QString, scheme);
+    HostilePeer silent([](const QByteArray &) { return QByteArray(); });
+    std::unique_ptr<Transport> transport;
+    if (scheme == "tcp")
+        transport = connectedTo<TcpTransport>(silent);
+    else
+        transport = connectedTo<RtuTcpTransport>(silent);
+    QVERIFY(transport);
+    QSignalSpy finished(transport.get(), &Transport::finished);
+    transport->send(ModbusRequest::read(1, 0x00B1, 2));
+    transport->close();
+    // Opened again and asked again: the new request ends by its own timeout, once.
+    QSignalSpy opened(transport.get(), &Transport::opened);
+    QString error;
+    QVERIFY2(transport->open(&error), qPrintable(error));
+    QVERIFY(opened.count() > 0 || opened.wait(10000));
+    ModbusRequest request = ModbusRequest::read(1, 0x00B1, 2);
+    request.timeoutMs = 500;
+    transport->send(request);
+    QVERIFY(finished.wait(10000));
+    QTest::qWait(300);
+    QCOMPARE(finished.count(), 1);
+    QCOMPARE(int(resultOf(finished, 0).status), int(ModbusResult::Status::Timeout));
 }
 
 QTEST_GUILESS_MAIN(tst_HostilePeers)
