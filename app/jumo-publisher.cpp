@@ -8,6 +8,8 @@
 #include <QCoreApplication>
 #include <QTextStream>
 
+#include <csignal>
+
 int main(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv);
@@ -17,8 +19,10 @@ int main(int argc, char *argv[])
     QTextStream out(stdout);
     QTextStream err(stderr);
     jumo::PublisherProgram program(out, err);
-    // SIGTERM (systemd) and SIGINT: "stopped" is published, then the program ends.
+    // SIGTERM (systemd), SIGINT and SIGHUP (a closed terminal): "stopped" is published,
+    // then the program ends. A closed socket is an error to handle, not a signal that ends it.
     jumo::onTerminationSignals([&program](int) { program.stop(); });
+    std::signal(SIGPIPE, SIG_IGN);
     if (const std::optional<int> code = program.run(app.arguments().mid(1)))
         return *code;
     QObject::connect(&program, &jumo::PublisherProgram::finished, &app, &QCoreApplication::exit);

@@ -38,6 +38,7 @@ void onTerminationSignals(const std::function<void(int)> &handler)
     action.sa_flags = SA_RESTART;   // nothing blocks outside the event loop (prompts included)
     ::sigaction(SIGINT, &action, nullptr);
     ::sigaction(SIGTERM, &action, nullptr);
+    ::sigaction(SIGHUP, &action, nullptr);
     // Past a file size limit (ulimit -f) a write fails with EFBIG, which the logs and
     // files report, instead of the signal ending the program without a word.
     ::signal(SIGXFSZ, SIG_IGN);

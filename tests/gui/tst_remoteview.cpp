@@ -14,8 +14,15 @@
 
 #include <QAbstractButton>
 #include <QAbstractSpinBox>
+#include <QApplication>
 #include <QComboBox>
+#include <QHostInfo>
+#include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
+#include <QPointer>
+#include <QScrollBar>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 
 using namespace jumo;
@@ -48,9 +55,20 @@ private slots:
     void nothingInItCanWrite();
     void deadStationShowsWithinTwoSeconds();
     void brokerRestartComesBackByItself();
+    void aDeviceLeavesAndComesBack();
+    void aLineLeavesAndComesBack();
+    void aClearedInfoTakesTheDeviceOut();
+    void everyViewerShowsTheStationsOrder();
+    void noLossRecordedAtTheStart();
+    void forgeryBannerStays();
+    void pageListShowsLineNamesWhole();
+    void terminatedViewerEndsPromptly();
 
 private:
-    bool startPublisher();
+    // The devices as "LINE/FAMILY@ADDRESS" in the station's order; empty: the default two.
+    bool startPublisher(const QStringList &devices = {}, const QStringList &extraLines = {});
+    void restartPublisher(const QStringList &devices, const QStringList &extraLines = {});
+    static QStringList shownOrder(const RemoteWindow &window);
     std::unique_ptr<RemoteWindow> openViewer();
     QString brokerUrl() const { return QStringLiteral("mqtt://127.0.0.1:%1").arg(m_broker->port()); }
     void setVoltage(float volts);
@@ -59,11 +77,12 @@ private:
     std::unique_ptr<TestLine> m_line;
     std::unique_ptr<SimulatorPeer> m_peer;
     std::unique_ptr<QProcess> m_publisher;
-    QTemporaryDir m_logs;
+    std::unique_ptr<QTemporaryDir> m_logs;   // a journal of its own for each case
 };
 
 void TstRemoteView::init()
 {
+    m_logs = std::make_unique<QTemporaryDir>();
     m_broker = std::make_unique<MosquittoBroker>();
     QVERIFY(m_broker->start());
     m_line = std::make_unique<TestLine>();
@@ -88,22 +107,40 @@ void TstRemoteView::cleanup()
     m_broker.reset();
 }
 
-bool TstRemoteView::startPublisher()
+bool TstRemoteView::startPublisher(const QStringList &devices, const QStringList &extraLines)
 {
+    QStringList arguments{QStringLiteral("--broker"), brokerUrl(), QStringLiteral("--name"), station,
+                          QStringLiteral("--line"), m_line->masterEnd() + QStringLiteral(",name=cabinet-a,baud=19200")};
+    for (const QString &line : extraLines)
+        arguments << QStringLiteral("--line") << line;
+    for (const QString &device :
+         devices.isEmpty() ? QStringList{QStringLiteral("cabinet-a/ipc300@1"), QStringLiteral("cabinet-a/dtron300@2")} : devices)
+        arguments << QStringLiteral("--device") << device;
     m_publisher = std::make_unique<QProcess>();
-    m_publisher->start(QStringLiteral(JUMO_PUBLISHER_PATH),
-                       {QStringLiteral("--broker"), brokerUrl(), QStringLiteral("--name"), station,
-                        QStringLiteral("--line"), m_line->masterEnd() + QStringLiteral(",name=cabinet-a,baud=19200"),
-                        QStringLiteral("--device"), QStringLiteral("cabinet-a/ipc300@1"), QStringLiteral("--device"),
-                        QStringLiteral("cabinet-a/dtron300@2")});
+    m_publisher->start(QStringLiteral(JUMO_PUBLISHER_PATH), arguments);
     return m_publisher->waitForStarted(10000);
+}
+
+void TstRemoteView::restartPublisher(const QStringList &devices, const QStringList &extraLines)
+{
+    m_publisher->terminate();
+    QVERIFY(m_publisher->waitForFinished(10000));
+    QVERIFY(startPublisher(devices, extraLines));
+}
+
+QStringList TstRemoteView::shownOrder(const RemoteWindow &window)
+{
+    QStringList shown;
+    for (DeviceTile *tile : window.tilesInOrder())
+        shown << tile->objectName();
+    return shown;
 }
 
 std::unique_ptr<RemoteWindow> TstRemoteView::openViewer()
 {
     RemoteWindow::Options options;
     options.broker = *MqttSettings::fromUrl(brokerUrl(), nullptr);
-    options.logFolder = m_logs.path();
+    options.logFolder = m_logs->path();
     auto window = std::make_unique<RemoteWindow>(families(), options);
     QString error;
     if (!window->start(&error)) {
@@ -240,6 +277,207 @@ void TstRemoteView::brokerRestartComesBackByItself()
     QTRY_VERIFY_WITH_TIMEOUT(heard(ipc), 30000);
     QTRY_VERIFY_WITH_TIMEOUT(ipc->barsFilled() > 0, 10000);
     QVERIFY(ipc->valuesText().contains(QLatin1String("231.3 V")));
+}
+
+void TstRemoteView::aDeviceLeavesAndComesBack()
+{
+    auto window = openViewer();
+    QVERIFY(window);
+    QTRY_VERIFY_WITH_TIMEOUT(window->deviceTile("cabinet-a", "dtron300", 2), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(window->deviceTile("cabinet-a", "ipc300", 1), 30000);
+    // Its page is open when it goes.
+    DevicePage *page = window->devicePage("cabinet-a", "dtron300", 2);
+    QVERIFY(page);
+    window->showDevice(page);
+    QPointer<DevicePage> watched(page);
+
+    restartPublisher({"cabinet-a/ipc300@1"});
+    QTRY_VERIFY_WITH_TIMEOUT(!window->deviceTile("cabinet-a", "dtron300", 2), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(watched.isNull(), 10000);
+    auto *navigation = window->findChild<QListWidget *>(QStringLiteral("navigation"));
+    QCOMPARE(navigation->currentRow(), 0);
+    for (int row = 0; row < navigation->count(); ++row)
+        QVERIFY2(!navigation->item(row)->text().contains(QLatin1String("dTRON")), qPrintable(navigation->item(row)->text()));
+    QTRY_VERIFY_WITH_TIMEOUT(heard(window->deviceTile("cabinet-a", "ipc300", 1)), 30000);
+
+    restartPublisher({"cabinet-a/ipc300@1", "cabinet-a/dtron300@2"});
+    QTRY_VERIFY_WITH_TIMEOUT(window->deviceTile("cabinet-a", "dtron300", 2), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(heard(window->deviceTile("cabinet-a", "dtron300", 2)), 30000);
+    QVERIFY(window->devicePage("cabinet-a", "dtron300", 2));
+}
+
+void TstRemoteView::aLineLeavesAndComesBack()
+{
+    TestLine second;
+    QVERIFY(second.start());
+    SimulatorPeer secondPeer(QStringLiteral("quantrol"));
+    QVERIFY(secondPeer.start(second.deviceEnd(), {1}));
+    const QStringList cabinetB{second.masterEnd() + QStringLiteral(",name=cabinet-b,baud=19200")};
+    restartPublisher({"cabinet-a/ipc300@1", "cabinet-a/dtron300@2", "cabinet-b/quantrol@1"}, cabinetB);
+    auto window = openViewer();
+    QVERIFY(window);
+    QTRY_VERIFY_WITH_TIMEOUT(window->deviceTile("cabinet-b", "quantrol", 1), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(window->lineHeader("cabinet-b"), 30000);
+    DevicePage *page = window->devicePage("cabinet-b", "quantrol", 1);
+    QVERIFY(page);
+    window->showDevice(page);
+
+    restartPublisher({"cabinet-a/ipc300@1", "cabinet-a/dtron300@2"});
+    QTRY_VERIFY_WITH_TIMEOUT(!window->lineHeader("cabinet-b"), 30000);
+    QVERIFY(!window->deviceTile("cabinet-b", "quantrol", 1));
+    auto *navigation = window->findChild<QListWidget *>(QStringLiteral("navigation"));
+    for (int row = 0; row < navigation->count(); ++row)
+        QVERIFY2(!navigation->item(row)->text().contains(QLatin1String("cabinet-b")), qPrintable(navigation->item(row)->text()));
+    QTRY_VERIFY_WITH_TIMEOUT(heard(window->deviceTile("cabinet-a", "ipc300", 1)), 30000);
+
+    restartPublisher({"cabinet-a/ipc300@1", "cabinet-a/dtron300@2", "cabinet-b/quantrol@1"}, cabinetB);
+    QTRY_VERIFY_WITH_TIMEOUT(window->lineHeader("cabinet-b"), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(window->deviceTile("cabinet-b", "quantrol", 1), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(heard(window->deviceTile("cabinet-b", "quantrol", 1)), 30000);
+}
+
+void TstRemoteView::aClearedInfoTakesTheDeviceOut()
+{
+    auto window = openViewer();
+    QVERIFY(window);
+    QTRY_VERIFY_WITH_TIMEOUT(window->deviceTile("cabinet-a", "dtron300", 2), 30000);
+    QPointer<DeviceTile> tile(window->deviceTile("cabinet-a", "dtron300", 2));
+    window->showDevice(window->devicePage("cabinet-a", "dtron300", 2));
+    // Anyone publishing an empty retained info: out of every viewer at once; the station
+    // publishes its own again and the device is back.
+    MqttClient vandal;
+    vandal.setSettings(*MqttSettings::fromUrl(brokerUrl(), nullptr));
+    QVERIFY(vandal.connectToBroker());
+    QTRY_VERIFY_WITH_TIMEOUT(vandal.isConnected(), 10000);
+    QSignalSpy removed(window->station(), &RemoteStation::deviceRemoved);
+    QVERIFY(vandal.publish(QStringLiteral("jumo/%1/devices/cabinet-a/dtron300@2/info").arg(station), {}, true));
+    QTRY_COMPARE_WITH_TIMEOUT(removed.size(), 1, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(tile.isNull(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(window->deviceTile("cabinet-a", "dtron300", 2), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(heard(window->deviceTile("cabinet-a", "dtron300", 2)), 20000);
+}
+
+void TstRemoteView::everyViewerShowsTheStationsOrder()
+{
+    // Not by address and not by arrival: as the station lists them.
+    restartPublisher({"cabinet-a/dtron300@2", "cabinet-a/ipc300@1"});
+    const QStringList expected{QStringLiteral("tile_dtron300_2"), QStringLiteral("tile_ipc300_1")};
+    auto first = openViewer();
+    QVERIFY(first);
+    QTRY_COMPARE_WITH_TIMEOUT(shownOrder(*first), expected, 30000);
+    auto second = openViewer();
+    QVERIFY(second);
+    QTRY_COMPARE_WITH_TIMEOUT(shownOrder(*second), expected, 30000);
+    auto *navigation = second->findChild<QListWidget *>(QStringLiteral("navigation"));
+    QTRY_VERIFY_WITH_TIMEOUT(navigation->count() == 5, 10000);
+    QVERIFY2(navigation->item(3)->text().contains(QLatin1String("dTRON")), qPrintable(navigation->item(3)->text()));
+    QVERIFY2(navigation->item(4)->text().contains(QLatin1String("IPC")), qPrintable(navigation->item(4)->text()));
+}
+
+void TstRemoteView::noLossRecordedAtTheStart()
+{
+    // A viewer that starts while the station is live records no loss and no return: it
+    // lost nothing.
+    auto window = openViewer();
+    QVERIFY(window);
+    QTRY_VERIFY_WITH_TIMEOUT(window->deviceTile("cabinet-a", "ipc300", 1), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(heard(window->deviceTile("cabinet-a", "ipc300", 1)), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(window->deviceTile("cabinet-a", "dtron300", 2)
+                                     && heard(window->deviceTile("cabinet-a", "dtron300", 2)),
+                             30000);
+    QFile journal(m_logs->filePath(QStringLiteral("remote-alarm-journal.jsonl")));
+    const QByteArray rows = journal.open(QIODevice::ReadOnly) ? journal.readAll() : QByteArray();
+    for (const QByteArray &row : rows.split('\n'))
+        QVERIFY2(!row.contains("\"communication\""), row.constData());
+}
+
+void TstRemoteView::forgeryBannerStays()
+{
+    // The test broker is anonymous: the viewer's own probe comes back.
+    auto window = openViewer();
+    QVERIFY(window);
+    auto *banner = window->findChild<QLabel *>(QStringLiteral("forgeryBanner"));
+    auto *status = window->findChild<QLabel *>(QStringLiteral("forgeryStatus"));
+    QVERIFY(banner && status);
+    QTRY_VERIFY_WITH_TIMEOUT(banner->isVisible(), 30000);
+    QVERIFY(banner->text().contains(QLatin1String("values and liveness may be forged")));
+    QVERIFY(status->isVisible());
+    QVERIFY(status->text().contains(QLatin1String("values and liveness may be forged")));
+    QTRY_VERIFY_WITH_TIMEOUT(window->deviceTile("cabinet-a", "ipc300", 1)
+                                     && heard(window->deviceTile("cabinet-a", "ipc300", 1)),
+                             30000);
+    if (const QString folder = qEnvironmentVariable("JUMO_SCREENSHOT_DIR"); !folder.isEmpty())
+        window->grab().save(folder + QStringLiteral("/remote-forgery-banner.png"));
+    // It stays: through a broker restart and the station coming back.
+    m_broker->kill();
+    QTRY_VERIFY_WITH_TIMEOUT(!window->station()->isConnected(), 10000);
+    QVERIFY(m_broker->restart());
+    QTRY_VERIFY_WITH_TIMEOUT(heard(window->deviceTile("cabinet-a", "ipc300", 1)), 30000);
+    QVERIFY(banner->isVisible());
+    QVERIFY(status->isVisible());
+}
+
+void TstRemoteView::pageListShowsLineNamesWhole()
+{
+    // A long line name, the state in a word after it: no sideways scroll bar, the name whole.
+    const QString longName = QStringLiteral("north-hall-feeders-2");
+    m_publisher->terminate();
+    QVERIFY(m_publisher->waitForFinished(10000));
+    m_publisher = std::make_unique<QProcess>();
+    m_publisher->start(QStringLiteral(JUMO_PUBLISHER_PATH),
+                       {QStringLiteral("--broker"), brokerUrl(), QStringLiteral("--name"), station, QStringLiteral("--line"),
+                        m_line->masterEnd() + QStringLiteral(",name=%1,baud=19200").arg(longName), QStringLiteral("--device"),
+                        longName + QStringLiteral("/ipc300@1")});
+    QVERIFY(m_publisher->waitForStarted(10000));
+    auto window = openViewer();
+    QVERIFY(window);
+    QTRY_VERIFY_WITH_TIMEOUT(window->deviceTile(longName, "ipc300", 1), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(heard(window->deviceTile(longName, "ipc300", 1)), 30000);
+    auto *navigation = window->findChild<QListWidget *>(QStringLiteral("navigation"));
+    QListWidgetItem *lineRow = nullptr;
+    for (int row = 0; row < navigation->count(); ++row) {
+        if (navigation->item(row)->text().startsWith(longName))
+            lineRow = navigation->item(row);
+    }
+    QVERIFY(lineRow);
+    QApplication::processEvents();
+    QVERIFY(!navigation->horizontalScrollBar()->isVisible());
+    const QFontMetrics metrics(lineRow->font());
+    QVERIFY2(metrics.horizontalAdvance(lineRow->text()) + 16 < navigation->viewport()->width(),
+             qPrintable(QStringLiteral("%1 in %2 px").arg(lineRow->text()).arg(navigation->viewport()->width())));
+    // Lost, it still fits: the reason is in the tooltip.
+    m_publisher->kill();
+    QVERIFY(m_publisher->waitForFinished(10000));
+    QTRY_VERIFY_WITH_TIMEOUT(lineRow->text().contains(QLatin1String("lost")), 10000);
+    QVERIFY(lineRow->toolTip().contains(station));
+    QVERIFY(metrics.horizontalAdvance(lineRow->text()) + 16 < navigation->viewport()->width());
+}
+
+void TstRemoteView::terminatedViewerEndsPromptly()
+{
+    // jumo-hmi --remote as a program: SIGTERM ends it with its goodbye, at once.
+    QProcess viewer;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    environment.insert(QStringLiteral("JUMO_LOG_DIR"), m_logs->path());
+    viewer.setProcessEnvironment(environment);
+    viewer.start(QStringLiteral(JUMO_HMI_PATH), {QStringLiteral("--remote"), brokerUrl(), QStringLiteral("--remote-station"), station});
+    QVERIFY(viewer.waitForStarted(10000));
+    const QString viewers = QStringLiteral("jumo/%1/viewers/+").arg(station);
+    QTRY_VERIFY_WITH_TIMEOUT(retainedMessages(m_broker->port(), viewers, {}, 2).values().contains(
+                                     TopicScheme::viewerPayload(QHostInfo::localHostName())),
+                             30000);
+    QElapsedTimer stopping;
+    stopping.start();
+    viewer.terminate();
+    QVERIFY(viewer.waitForFinished(30000));
+    qInfo("jumo-hmi --remote ended %lld ms after SIGTERM", qint64(stopping.elapsed()));
+    QCOMPARE(viewer.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(viewer.exitCode(), 0);
+    QVERIFY2(stopping.elapsed() < 5000, qPrintable(QString::number(stopping.elapsed())));
+    QTRY_VERIFY_WITH_TIMEOUT(retainedMessages(m_broker->port(), viewers, {}, 2).values().contains(
+                                     TopicScheme::viewerGonePayload()),
+                             10000);
 }
 
 QTEST_MAIN(TstRemoteView)
