@@ -15,6 +15,8 @@
 #include "protocol/familyregistry.h"
 
 #include <QApplication>
+
+#include <climits>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenuBar>
@@ -411,6 +413,12 @@ void RemoteWindow::updateStatus()
             silent << name;
     }
     QStringList parts;
+    // What a station undid of other clients' messages under it (the broker lets them in).
+    for (const QString &name : m_station->stations()) {
+        const RemoteStationState *s = m_station->station(name);
+        if (const qint64 undone = s->status.restored + s->status.cleared; s->statusKnown && undone > 0)
+            parts << tr("%1 undid %n message(s) of other clients", nullptr, int(std::min<qint64>(undone, INT_MAX))).arg(name);
+    }
     if (!live.isEmpty())
         parts << tr("Live: %1").arg(live.join(QStringLiteral(", ")));
     if (!receiving.isEmpty())

@@ -68,12 +68,6 @@ RemoteStation::RemoteStation(const FamilyRegistry &registry, QObject *parent)
 
 RemoteStation::~RemoteStation() = default;
 
-qint64 RemoteStation::monotonicMs()
-{
-    return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch())
-            .count();
-}
-
 bool RemoteStation::start(const MqttSettings &broker, QString *error)
 {
     m_stopping = false;
@@ -107,6 +101,19 @@ void RemoteStation::stop()
     m_liveness.stop();
 }
 
+void RemoteStation::takeMessage(const QString &topic, const QByteArray &payload, bool retained, bool liveness)
+{
+    if (!liveness) {
+        onMessage(topic, payload, retained);
+        return;
+    }
+    const std::optional<TopicScheme::Topic> parsed = m_scheme.parse(topic);
+    if (parsed && parsed->kind == TopicScheme::Kind::Status)
+        onStatus(parsed->station, payload, false);
+    else if (parsed && parsed->kind == TopicScheme::Kind::Heartbeat)
+        onHeartbeat(parsed->station, payload);
+}
+
 void RemoteStation::onConnectionChanged()
 {
     const QString reason = !m_client.isConnected() ? m_client.lastError() : m_liveness.client().lastError();
@@ -119,17 +126,6 @@ const RemoteStationState *RemoteStation::station(const QString &name) const
 {
     auto it = m_stations.find(name);
     return it == m_stations.end() ? nullptr : &it->state;
-}
-
-bool RemoteStation::isLive(const QString &name) const
-{
-    auto it = m_stations.find(name);
-    return it != m_stations.end() && it->live;
-}
-
-bool RemoteStation::anyWritable() const
-{
-    return std::any_of(m_stations.cbegin(), m_stations.cend(), [](const Station &s) { return s.state.writable; });
 }
 
 QStringList RemoteStation::lines(const QString &station) const
@@ -163,43 +159,34 @@ std::optional<DeviceId> RemoteStation::findDevice(const QString &station, const 
 
 std::shared_ptr<const RegisterMap> RemoteStation::deviceMap(DeviceId id) const
 {
-    const RemoteDevice *d = device(id);
-    return d ? d->map : nullptr;
+    return device(id) ? device(id)->map : nullptr;
 }
 
 QString RemoteStation::deviceName(DeviceId id) const
 {
-    const RemoteDevice *d = device(id);
-    return d ? d->name : QString();
+    return device(id) ? device(id)->name : QString();
 }
 
 DeviceCondition RemoteStation::condition(DeviceId id) const
 {
-    const RemoteDevice *d = device(id);
-    return d ? d->condition : DeviceCondition();
+    return device(id) ? device(id)->condition : DeviceCondition();
+}
+
+const RemoteStation::Entry *RemoteStation::entry(DeviceId id, const QString &entryId) const
+{
+    auto it = m_entries.find(id);
+    auto e = it == m_entries.end() ? QMap<QString, Entry>::const_iterator() : it->find(entryId);
+    return it == m_entries.end() || e == it->end() ? nullptr : &*e;
 }
 
 const EntryState *RemoteStation::entryState(DeviceId id, const QString &entryId) const
 {
-    auto it = m_entries.find(id);
-    if (it == m_entries.end())
-        return nullptr;
-    auto e = it->find(entryId);
-    return e == it->end() ? nullptr : &e->state;
+    return entry(id, entryId) ? &entry(id, entryId)->state : nullptr;
 }
 
 const ValueMessage *RemoteStation::published(DeviceId id, const QString &entryId) const
 {
-    auto it = m_entries.find(id);
-    if (it == m_entries.end())
-        return nullptr;
-    auto e = it->find(entryId);
-    return e == it->end() ? nullptr : &e->published;
-}
-
-QStringList RemoteStation::entryIds(DeviceId id) const
-{
-    return m_entries.value(id).keys();
+    return entry(id, entryId) ? &entry(id, entryId)->published : nullptr;
 }
 
 void RemoteStation::refuse(const QString &what, const QString &reason)
@@ -405,15 +392,9 @@ void RemoteStation::onDeviceMessage(Station &s, const TopicScheme::Topic &topic,
         return;
     }
     const QString waitingKey = topic.line + QLatin1Char('/') + topic.device;
-    auto dropWaiting = [&s](const QString &key) {
-        const QList<Waiting> gone = s.waiting.take(key);
-        s.waitingMessages -= int(gone.size());
-        for (const Waiting &w : gone)
-            s.waitingBytes -= w.payload.size();
-    };
     if (topic.kind == Kind::DeviceInfo) {
         if (payload.isEmpty()) {
-            dropWaiting(waitingKey);
+            s.waiting.take(waitingKey);
             return;
         }
         const std::optional<DeviceInfoMessage> info = TopicScheme::parseDeviceInfo(payload);
@@ -428,9 +409,7 @@ void RemoteStation::onDeviceMessage(Station &s, const TopicScheme::Topic &topic,
             return;
         }
         const DeviceId id = addDevice(topic.station, topic.line, topic.device, *info, m_registry.family(spec->family));
-        const QList<Waiting> waiting = s.waiting.value(waitingKey);
-        dropWaiting(waitingKey);
-        for (const Waiting &w : waiting) {
+        for (const WaitingMessages::Message &w : s.waiting.take(waitingKey)) {
             if (m_devices.contains(id))
                 applyDeviceMessage(id, w.kind, w.entry, w.payload);
         }
@@ -438,27 +417,8 @@ void RemoteStation::onDeviceMessage(Station &s, const TopicScheme::Topic &topic,
     }
     // A value or condition of a device whose info has not come (yet): kept while it may
     // still come in the broker's retained burst, within bounds; live ones make nothing.
-    if (!retained)
-        return;
-    QList<Waiting> &list = s.waiting[waitingKey];
-    for (qsizetype i = 0; i < list.size(); ++i) {
-        if (list[i].kind == topic.kind && list[i].entry == topic.entry) {
-            s.waitingBytes -= list[i].payload.size();
-            --s.waitingMessages;
-            list.removeAt(i);
-            break;
-        }
-    }
-    if (payload.isEmpty() || s.waitingMessages >= maxWaitingMessages || s.waitingBytes + payload.size() > maxWaitingBytes) {
-        if (list.isEmpty())
-            s.waiting.remove(waitingKey);
-        if (!payload.isEmpty())
-            refuse(what, tr("no info for this device, and too much waiting for one"));
-        return;
-    }
-    list.append({topic.kind, topic.entry, payload});
-    ++s.waitingMessages;
-    s.waitingBytes += payload.size();
+    if (retained && !s.waiting.keep(waitingKey, topic.kind, topic.entry, payload))
+        refuse(what, tr("no info for this device, and too much waiting for one"));
 }
 
 DeviceId RemoteStation::addDevice(const QString &station, const QString &line, const QString &name,

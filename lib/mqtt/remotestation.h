@@ -12,12 +12,15 @@
 #include "mqtt/livenesslink.h"
 #include "mqtt/mqttclient.h"
 #include "mqtt/topicscheme.h"
+#include "mqtt/waitingmessages.h"
 
 #include <QHash>
 #include <QMap>
 #include <QObject>
 #include <QSet>
 
+#include <algorithm>
+#include <chrono>
 #include <memory>
 
 class QTimer;
@@ -84,6 +87,9 @@ public:
     bool start(const MqttSettings &broker, QString *error);
     // Says "gone" and disconnects cleanly; takes no message after it.
     void stop();
+    // A message as the broker delivers it, on the main connection or on the LivenessLink's
+    // (tests and the fuzz target hand messages in here).
+    void takeMessage(const QString &topic, const QByteArray &payload, bool retained, bool liveness = false);
     bool isConnected() const { return m_client.isConnected() && m_liveness.isConnected(); }
     MqttClient &client() { return m_client; }
     LivenessLink &liveness() { return m_liveness; }
@@ -94,9 +100,16 @@ public:
     const RemoteStationState *station(const QString &name) const;
     // Online, heard within the silence limit, caught up and the broker connected: what it
     // published counts as it was published.
-    bool isLive(const QString &station) const;
+    bool isLive(const QString &station) const
+    {
+        const auto it = m_stations.find(station);
+        return it != m_stations.end() && it->live;
+    }
     // This viewer's user may publish into some station's tree (the probe came back).
-    bool anyWritable() const;
+    bool anyWritable() const
+    {
+        return std::any_of(m_stations.cbegin(), m_stations.cend(), [](const Station &s) { return s.state.writable; });
+    }
     QStringList lines(const QString &station) const;
     const LineMessage *line(const QString &station, const QString &line) const;
 
@@ -112,14 +125,18 @@ public:
     const EntryState *entryState(DeviceId id, const QString &entryId) const;
     // The entry as published (text, status, bits).
     const ValueMessage *published(DeviceId id, const QString &entryId) const;
-    QStringList entryIds(DeviceId id) const;
+    QStringList entryIds(DeviceId id) const { return m_entries.value(id).keys(); }
     // Messages dropped for a limit or as malformed, since the start.
     quint64 refusedCount() const { return m_refused; }
     // The machine's monotonic clock (ms since it started), the same for every mirror and
     // mirrored line in the process: a time taken here means the same there, and the age of
     // a value read long before this program started is still positive.
     qint64 clockMs() const { return monotonicMs(); }
-    static qint64 monotonicMs();
+    static qint64 monotonicMs()
+    {
+        using namespace std::chrono;
+        return duration_cast<milliseconds>(steady_clock::now().time_since_epoch()).count();
+    }
 
 signals:
     void connectionChanged(bool connected, const QString &reason);
@@ -148,12 +165,6 @@ private:
         ValueMessage published;
         EntryState state;
     };
-    struct Waiting
-    {
-        TopicScheme::Kind kind;
-        QString entry;
-        QByteArray payload;
-    };
     struct Station
     {
         RemoteStationState state;
@@ -163,11 +174,10 @@ private:
         bool everHeartbeat = false;
         QDateTime lastContact;        // this viewer's time of the last heartbeat
         QDateTime caughtUpStarted;    // "started" of the last "online" on the main connection
-        QHash<QString, QList<Waiting>> waiting;   // "line/family@address" -> its retained messages
-        int waitingMessages = 0;
-        qint64 waitingBytes = 0;
+        WaitingMessages waiting{maxWaitingMessages, maxWaitingBytes};   // by "line/family@address"
     };
 
+    const Entry *entry(DeviceId id, const QString &entryId) const;
     void onConnectionChanged();
     void onMessage(const QString &topic, const QByteArray &payload, bool retained);
     void onStatus(const QString &station, const QByteArray &payload, bool caughtUp);
