@@ -116,6 +116,9 @@ void RemoteStation::takeMessage(const QString &topic, const QByteArray &payload,
 
 void RemoteStation::onConnectionChanged()
 {
+    // Stopping: its owner may be on its way out, nobody is to hear of it.
+    if (m_stopping)
+        return;
     const QString reason = !m_client.isConnected() ? m_client.lastError() : m_liveness.client().lastError();
     emit connectionChanged(isConnected(), isConnected() ? QString() : reason);
     for (const QString &name : m_stations.keys())

@@ -182,11 +182,7 @@ void StationPublisher::removeLine(const QString &name)
 
 void StationPublisher::syncDevices(const QString &lineName)
 {
-    Line *line = nullptr;
-    for (Line &l : m_lines) {
-        if (l.name == lineName)
-            line = &l;
-    }
+    Line *line = lineNamed(lineName);
     if (!line || !line->bus)
         return;
     const QList<DeviceId> present = line->bus->devices();
@@ -323,11 +319,7 @@ void StationPublisher::publishLine(Line &line, bool force)
 void StationPublisher::publishDevice(DeviceId id)
 {
     Device &d = m_devices[id];
-    Line *line = nullptr;
-    for (Line &l : m_lines) {
-        if (l.name == d.line)
-            line = &l;
-    }
+    Line *line = lineNamed(d.line);
     if (!line || !line->bus)
         return;
     publish(m_scheme.deviceInfo(m_station, d.line, d.name),
@@ -342,11 +334,7 @@ void StationPublisher::publishCondition(DeviceId id, bool force)
     if (it == m_devices.end())
         return;
     Device &d = *it;
-    Line *line = nullptr;
-    for (Line &l : m_lines) {
-        if (l.name == d.line)
-            line = &l;
-    }
+    Line *line = lineNamed(d.line);
     if (!line || !line->bus || !m_client.isConnected())
         return;
     const DeviceCondition condition = line->bus->condition(id);
@@ -409,11 +397,7 @@ void StationPublisher::restore(const QString &topic)
             } else if (parsed->kind == Kind::DeviceCondition) {
                 publishCondition(it.key(), true);
             } else {
-                const Line *line = nullptr;
-                for (const Line &l : std::as_const(m_lines)) {
-                    if (l.name == it->line)
-                        line = &l;
-                }
+                const Line *line = lineNamed(it->line);
                 if (line && line->bus)
                     publish(topic, TopicScheme::deviceInfoPayload(it->line, *it->map, line->bus->deviceAddress(it.key())));
             }
@@ -450,11 +434,7 @@ void StationPublisher::publishEntries(DeviceId id, const QStringList &entryIds, 
     if (it == m_devices.end())
         return;
     Device &d = *it;
-    Line *line = nullptr;
-    for (Line &l : m_lines) {
-        if (l.name == d.line)
-            line = &l;
-    }
+    Line *line = lineNamed(d.line);
     if (!line || !line->bus)
         return;
     const Bus &bus = *line->bus;
@@ -516,6 +496,15 @@ void StationPublisher::clear(const QString &topic)
     m_guard.expect(topic, QByteArray());
     if (!m_client.publish(topic, QByteArray(), true) && !m_pendingClears.contains(topic))
         m_pendingClears << topic;
+}
+
+StationPublisher::Line *StationPublisher::lineNamed(const QString &name)
+{
+    for (Line &l : m_lines) {
+        if (l.name == name)
+            return &l;
+    }
+    return nullptr;
 }
 
 StationPublisher::Line *StationPublisher::lineOf(const Bus *bus)

@@ -111,6 +111,7 @@ private:
     bool owns(const TopicScheme::Topic &topic) const;
     void clear(const QString &topic);
     Line *lineOf(const Bus *bus);
+    Line *lineNamed(const QString &name);
     void publish(const QString &topic, const QByteArray &payload, bool retain = true);
 
     MqttClient m_client;

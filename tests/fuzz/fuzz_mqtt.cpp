@@ -5,7 +5,9 @@
 // the waiting messages, the words decoded through the family's map) and RemoteLines on
 // top (MirroredLines, the station's order). Nothing may crash, and what the mirror holds
 // stays within its limits: known families only, addresses within the family's range,
-// entries of the family's map, at most maxDevicesPerStation devices a station.
+// entries of the family's map, at most maxDevicesPerStation devices a station, the
+// station's order parsed only as LINE/FAMILY@ADDRESS names and shown as a permutation of
+// each line's devices.
 #include "mqtt/remotelines.h"
 #include "mqtt/remotestation.h"
 #include "protocol/familyregistry.h"
@@ -71,6 +73,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 const RegisterEntry *e = d->map->entry(entry);
                 const EntryState *s = mirror.entryState(id, entry);
                 if (!e || !e->isReadable() || !s || !mirror.published(id, entry) || s->value.display.size() > (1 << 20))
+                    __builtin_trap();
+            }
+        }
+        for (const QString &name : mirror.stations()) {
+            const QStringList order = mirror.station(name)->order;
+            if (order.size() > RemoteStation::maxDevicesPerStation)
+                __builtin_trap();
+            for (const QString &device : order) {
+                if (device.count(QLatin1Char('/')) != 1 || !TopicScheme::isTopicLevel(device.section(QLatin1Char('/'), 0, 0)))
                     __builtin_trap();
             }
         }

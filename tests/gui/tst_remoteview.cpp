@@ -17,6 +17,9 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QHostInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
@@ -31,6 +34,15 @@ using namespace jumo::test;
 namespace {
 
 const QString station = QStringLiteral("hall3");
+
+// How long the long runs go on: JUMO_REMOTE_RUN_S seconds (with QTEST_FUNCTION_TIMEOUT
+// raised to match), else the short version that every test run has.
+int runSeconds(int fallback)
+{
+    bool ok = false;
+    const int seconds = qEnvironmentVariableIntValue("JUMO_REMOTE_RUN_S", &ok);
+    return ok && seconds > 0 ? seconds : fallback;
+}
 
 // The device is heard and its alarms are known (the simulated IPC 300 reports a min.
 // alarm with no load: an alarm is what the station sees too).
@@ -63,6 +75,8 @@ private slots:
     void forgeryBannerStays();
     void pageListShowsLineNamesWhole();
     void terminatedViewerEndsPromptly();
+    void restartsWithFewerDevicesAndLines();
+    void forgedValuesAreUndoneInEveryViewer();
 
 private:
     // The devices as "LINE/FAMILY@ADDRESS" in the station's order; empty: the default two.
@@ -478,6 +492,155 @@ void TstRemoteView::terminatedViewerEndsPromptly()
     QTRY_VERIFY_WITH_TIMEOUT(retainedMessages(m_broker->port(), viewers, {}, 2).values().contains(
                                      TopicScheme::viewerGonePayload()),
                              10000);
+}
+
+void TstRemoteView::restartsWithFewerDevicesAndLines()
+{
+    // The station restarted again and again with one device fewer, one line fewer, and
+    // all again, under a window of every station and the jumo-hmi --remote program of
+    // this station: nothing crashes, devices and lines leave and come back.
+    TestLine second;
+    QVERIFY(second.start());
+    SimulatorPeer secondPeer(QStringLiteral("quantrol"));
+    QVERIFY(secondPeer.start(second.deviceEnd(), {1}));
+    const QStringList cabinetB{second.masterEnd() + QStringLiteral(",name=cabinet-b,baud=19200")};
+    const QStringList all{"cabinet-a/ipc300@1", "cabinet-a/dtron300@2", "cabinet-b/quantrol@1"};
+    restartPublisher(all, cabinetB);
+    auto window = openViewer();
+    QVERIFY(window);
+    QProcess program;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    environment.insert(QStringLiteral("JUMO_LOG_DIR"), m_logs->path());
+    program.setProcessEnvironment(environment);
+    program.start(QStringLiteral(JUMO_HMI_PATH), {QStringLiteral("--remote"), brokerUrl(), QStringLiteral("--remote-station"), station});
+    QVERIFY(program.waitForStarted(10000));
+    auto heardNow = [&](const QString &line, const QString &family, quint8 address) {
+        DeviceTile *tile = window->deviceTile(line, family, address);
+        return tile && heard(tile);
+    };
+    QElapsedTimer run;
+    run.start();
+    int rounds = 0;
+    do {
+        QTRY_VERIFY_WITH_TIMEOUT(heardNow("cabinet-a", "ipc300", 1) && heardNow("cabinet-a", "dtron300", 2)
+                                         && heardNow("cabinet-b", "quantrol", 1),
+                                 60000);
+        restartPublisher({"cabinet-a/ipc300@1", "cabinet-b/quantrol@1"}, cabinetB);
+        QTRY_VERIFY_WITH_TIMEOUT(!window->deviceTile("cabinet-a", "dtron300", 2), 60000);
+        QTRY_VERIFY_WITH_TIMEOUT(heardNow("cabinet-a", "ipc300", 1) && heardNow("cabinet-b", "quantrol", 1), 60000);
+        restartPublisher({"cabinet-a/ipc300@1", "cabinet-a/dtron300@2"});
+        QTRY_VERIFY_WITH_TIMEOUT(!window->lineHeader("cabinet-b") && !window->deviceTile("cabinet-b", "quantrol", 1), 60000);
+        QTRY_VERIFY_WITH_TIMEOUT(heardNow("cabinet-a", "ipc300", 1) && heardNow("cabinet-a", "dtron300", 2), 60000);
+        restartPublisher(all, cabinetB);
+        ++rounds;
+        QVERIFY(program.state() == QProcess::Running);
+    } while (run.elapsed() < runSeconds(0) * 1000LL);
+    QTRY_VERIFY_WITH_TIMEOUT(heardNow("cabinet-a", "ipc300", 1) && heardNow("cabinet-a", "dtron300", 2)
+                                     && heardNow("cabinet-b", "quantrol", 1),
+                             60000);
+    qInfo("%d rounds of restarts (one device fewer, one line fewer, all) in %lld s; the window and the program ran "
+          "through",
+          rounds, qint64(run.elapsed() / 1000));
+    if (const QString folder = qEnvironmentVariable("JUMO_SCREENSHOT_DIR"); !folder.isEmpty())
+        window->grab().save(folder + QStringLiteral("/remote-after-restarts.png"));
+    program.terminate();
+    QVERIFY(program.waitForFinished(30000));
+    QCOMPARE(program.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(program.exitCode(), 0);
+}
+
+void TstRemoteView::forgedValuesAreUndoneInEveryViewer()
+{
+    // A rogue client on this anonymous broker publishes fake current values (retained or
+    // not) of entries that never change, and fake heartbeats. Every viewer shows the
+    // forgery banner, and no fake value stays current longer than the station takes to
+    // publish its own again.
+    std::vector<std::unique_ptr<RemoteWindow>> viewers;
+    for (int i = 0; i < 2; ++i) {
+        viewers.push_back(openViewer());
+        QVERIFY(viewers.back());
+    }
+    for (const auto &viewer : viewers) {
+        QTRY_VERIFY_WITH_TIMEOUT(viewer->deviceTile("cabinet-a", "ipc300", 1)
+                                         && heard(viewer->deviceTile("cabinet-a", "ipc300", 1)),
+                                 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(viewer->deviceTile("cabinet-a", "dtron300", 2)
+                                         && heard(viewer->deviceTile("cabinet-a", "dtron300", 2)),
+                                 30000);
+    }
+    const QList<QPair<QString, QString>> targets{{"ipc300@1", "device_name"},
+                                                 {"ipc300@1", "software_version"},
+                                                 {"ipc300@1", "fabrication_number"},
+                                                 {"dtron300@2", "sampling_cycle_time"}};
+    // Per viewer and target: since when a fake is shown as current.
+    QHash<QString, QElapsedTimer> shownSince;
+    QList<qint64> shownMs;
+    int fakesShown = 0;
+    QObject watching;   // goes before what its connections use
+    for (int v = 0; v < int(viewers.size()); ++v) {
+        RemoteStation *mirror = viewers[v]->station();
+        connect(mirror, &RemoteStation::entriesUpdated, &watching, [&, mirror, v](DeviceId id, const QStringList &ids) {
+            for (const QString &entry : ids) {
+                const QString key = QStringLiteral("%1/%2/%3").arg(v).arg(mirror->deviceName(id), entry);
+                const ValueMessage *published = mirror->published(id, entry);
+                const EntryState *state = mirror->entryState(id, entry);
+                const bool fake = published && state && published->text.startsWith(QLatin1String("FAKE"))
+                        && state->validity == Validity::Current;
+                if (fake && !shownSince.contains(key)) {
+                    shownSince[key].start();
+                    ++fakesShown;
+                } else if (!fake && shownSince.contains(key)) {
+                    shownMs << shownSince.take(key).elapsed();
+                }
+            }
+        });
+    }
+    MqttClient rogue;
+    rogue.setSettings(*MqttSettings::fromUrl(brokerUrl(), nullptr));
+    QVERIFY(rogue.connectToBroker());
+    QTRY_VERIFY_WITH_TIMEOUT(rogue.isConnected(), 10000);
+    int sent = 0;
+    QTimer forging;
+    connect(&forging, &QTimer::timeout, this, [&] {
+        const auto &[device, entry] = targets.at(sent % targets.size());
+        const QByteArray fake = QJsonDocument(QJsonObject{{"value", QStringLiteral("FAKE-%1").arg(sent)},
+                                                          {"text", QStringLiteral("FAKE-%1").arg(sent)},
+                                                          {"unit", ""}, {"status", "ok"}, {"validity", "current"},
+                                                          {"words", QJsonArray{}},
+                                                          {"read", TopicScheme::timeText(QDateTime::currentDateTimeUtc())}})
+                                        .toJson(QJsonDocument::Compact);
+        rogue.publish(QStringLiteral("jumo/%1/devices/cabinet-a/%2/values/%3").arg(station, device, entry), fake,
+                      sent % 2 == 0);
+        if (sent % 5 == 0)
+            rogue.publish(QStringLiteral("jumo/%1/heartbeat").arg(station),
+                          TopicScheme::heartbeatPayload(QDateTime::currentDateTimeUtc()), false);
+        ++sent;
+    });
+    forging.start(200);
+    QElapsedTimer run;
+    run.start();
+    while (run.elapsed() < runSeconds(10) * 1000LL)
+        QTest::qWait(1000);
+    forging.stop();
+    // Every fake shown was undone.
+    QTRY_VERIFY_WITH_TIMEOUT(shownSince.isEmpty(), 20000);
+    std::sort(shownMs.begin(), shownMs.end());
+    const qint64 longest = shownMs.isEmpty() ? 0 : shownMs.last();
+    qInfo("%d fake values in %lld s, %d shown as current by %d viewers, each undone after: median %lld ms, 99th "
+          "percentile %lld ms, longest %lld ms",
+          sent, qint64(run.elapsed() / 1000), fakesShown, int(viewers.size()),
+          shownMs.isEmpty() ? 0 : shownMs.at(shownMs.size() / 2),
+          shownMs.isEmpty() ? 0 : shownMs.at(std::min<qsizetype>(shownMs.size() - 1, shownMs.size() * 99 / 100)),
+          longest);
+    QVERIFY(sent > 0);
+    QCOMPARE(shownMs.size(), fakesShown);
+    QVERIFY2(longest < 10000, qPrintable(QString::number(longest)));
+    for (const auto &viewer : viewers) {
+        QVERIFY(viewer->findChild<QLabel *>(QStringLiteral("forgeryBanner"))->isVisible());
+        QVERIFY(viewer->findChild<QLabel *>(QStringLiteral("forgeryStatus"))->isVisible());
+        QVERIFY(viewer->station()->station(station)->status.restored > 0);
+    }
 }
 
 QTEST_MAIN(TstRemoteView)

@@ -91,6 +91,9 @@ private:
     std::unique_ptr<MqttClient> connectClient() { return connectClient(*MqttSettings::fromUrl(brokerUrl(), nullptr)); }
     // The client ids that published something, from the broker's log.
     QSet<QString> publishingClients() const;
+    // A station file of this test's line and a second one (its name and devices each).
+    using LineDevices = QPair<QString, QStringList>;
+    QString writeTwoLineStation(const TestLine &second, const LineDevices &first, const LineDevices &other);
     std::unique_ptr<RemoteStation> startMirror() { return startMirror(*MqttSettings::fromUrl(brokerUrl(), nullptr)); }
     QString brokerUrl() const { return QStringLiteral("mqtt://127.0.0.1:%1").arg(m_broker->port()); }
     // Every device online and every published entry current in the mirror.
@@ -163,6 +166,21 @@ std::unique_ptr<MqttClient> TstMqtt::connectClient(const MqttSettings &settings)
     if (!client->isConnected() && !connected.wait(20000))
         return nullptr;
     return client;
+}
+
+QString TstMqtt::writeTwoLineStation(const TestLine &second, const LineDevices &first, const LineDevices &other)
+{
+    auto line = [](const LineDevices &devices, const QString &port) {
+        return QJsonObject{{"name", devices.first}, {"port", port}, {"baud", 19200},
+                           {"devices", QJsonArray::fromStringList(devices.second)}};
+    };
+    const QJsonObject station{{"format", "jumo-station"}, {"version", 1}, {"name", "ignored-by---name"},
+                              {"lines", QJsonArray{line(first, m_line->masterEnd()), line(other, second.masterEnd())}}};
+    QFile file(m_broker->file(QStringLiteral("station.json")));
+    if (!file.open(QIODevice::WriteOnly))
+        return {};
+    file.write(QJsonDocument(station).toJson());
+    return file.fileName();
 }
 
 QSet<QString> TstMqtt::publishingClients() const
@@ -508,16 +526,9 @@ void TstMqtt::twoLinesFromAStationFile()
     QVERIFY(second.start());
     SimulatorPeer secondPeer(QStringLiteral("quantrol"));
     QVERIFY(secondPeer.start(second.deviceEnd(), {1}));
-    QFile file(m_broker->file(QStringLiteral("station.json")));
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(QStringLiteral(R"({"format": "jumo-station", "version": 1, "name": "ignored-by---name",
-        "lines": [{"name": "cabinet-a", "port": "%1", "baud": 19200, "devices": ["ipc300@1", "tya200@2"]},
-                  {"name": "cabinet-b", "port": "%2", "baud": 19200, "devices": ["quantrol@1"]}]})")
-                       .arg(m_line->masterEnd(), second.masterEnd())
-                       .toUtf8());
-    file.close();
+    const QString file = writeTwoLineStation(second, {"cabinet-a", {"ipc300@1", "tya200@2"}}, {"cabinet-b", {"quantrol@1"}});
     QVERIFY(m_broker->start());
-    QVERIFY(startPublisher(brokerUrl(), {QStringLiteral("--station"), file.fileName()}));
+    QVERIFY(startPublisher(brokerUrl(), {QStringLiteral("--station"), file}));
     auto mirror = startMirror();
     QVERIFY(mirror);
     QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror, 3), 30000);
@@ -1069,16 +1080,9 @@ void TstMqtt::viewersShowTheStationsOrder()
     QVERIFY(second.start());
     SimulatorPeer secondPeer(QStringLiteral("quantrol"));
     QVERIFY(secondPeer.start(second.deviceEnd(), {1}));
-    QFile file(m_broker->file(QStringLiteral("station.json")));
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(QStringLiteral(R"({"format": "jumo-station", "version": 1, "name": "x",
-        "lines": [{"name": "zeta", "port": "%1", "baud": 19200, "devices": ["tya200@2", "ipc300@1"]},
-                  {"name": "alpha", "port": "%2", "baud": 19200, "devices": ["quantrol@1"]}]})")
-                       .arg(m_line->masterEnd(), second.masterEnd())
-                       .toUtf8());
-    file.close();
+    const QString file = writeTwoLineStation(second, {"zeta", {"tya200@2", "ipc300@1"}}, {"alpha", {"quantrol@1"}});
     QVERIFY(m_broker->start());
-    QVERIFY(startPublisher(brokerUrl(), {QStringLiteral("--station"), file.fileName()}));
+    QVERIFY(startPublisher(brokerUrl(), {QStringLiteral("--station"), file}));
     const QStringList expected{"zeta/tya200@2", "zeta/ipc300@1", "alpha/quantrol@1"};
     for (int viewer = 0; viewer < 2; ++viewer) {
         auto mirror = startMirror();
