@@ -38,7 +38,10 @@ void onTerminationSignals(const std::function<void(int)> &handler)
     action.sa_flags = SA_RESTART;   // nothing blocks outside the event loop (prompts included)
     ::sigaction(SIGINT, &action, nullptr);
     ::sigaction(SIGTERM, &action, nullptr);
+    // A closed terminal and a closed output (| head) end the run as the others do, with
+    // its records kept, instead of killing it halfway.
     ::sigaction(SIGHUP, &action, nullptr);
+    ::sigaction(SIGPIPE, &action, nullptr);
     // Past a file size limit (ulimit -f) a write fails with EFBIG, which the logs and
     // files report, instead of the signal ending the program without a word.
     ::signal(SIGXFSZ, SIG_IGN);

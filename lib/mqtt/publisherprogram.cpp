@@ -239,7 +239,7 @@ std::optional<int> PublisherProgram::run(const QStringList &arguments)
 
     m_publisher = std::make_unique<StationPublisher>(*broker, prefix, station);
     m_publisher->setHeartbeatInterval(heartbeat);
-    connect(m_publisher.get(), &StationPublisher::stopped, this, [this] { emit finished(0); });
+    connect(m_publisher.get(), &StationPublisher::stopped, this, [this] { emit finished(m_stopExitCode); });
     connect(m_publisher.get(), &StationPublisher::takenOver, this, [this, station] {
         m_err << tr("another publisher took over station %1 (--take-over): stopped").arg(station) << Qt::endl;
         emit finished(nameTakenExitCode);
@@ -321,20 +321,21 @@ void PublisherProgram::retryClosedLines()
         m_retry.stop();
 }
 
-void PublisherProgram::stop()
+void PublisherProgram::stop(int exitCode)
 {
     if (m_stopping)
         return;
     m_stopping = true;
+    m_stopExitCode = exitCode;
     m_retry.stop();
     if (m_nameCheck) {
         // Still checking the name: nothing was opened or published.
         m_nameCheck.reset();
-        emit finished(0);
+        emit finished(exitCode);
         return;
     }
     if (!m_publisher) {
-        emit finished(0);
+        emit finished(exitCode);
         return;
     }
     qCInfo(lcMqtt).noquote() << "stopping";

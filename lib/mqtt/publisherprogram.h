@@ -33,8 +33,8 @@ public:
     // Returns an exit code when the arguments end the program (errors, --help), or
     // nullopt when it runs on the event loop; finished() follows then.
     std::optional<int> run(const QStringList &arguments);
-    // A clean stop: "stopped" is published, then finished(0).
-    void stop();
+    // A clean stop: "stopped" is published, then finished(exitCode).
+    void stop(int exitCode = 0);
 
     // The exit code when a station of the name is online (or took over): a service
     // manager must not start it again and again (RestartPreventExitStatus=2).
@@ -62,6 +62,7 @@ private:
     bool m_takeOver = false;
     QTimer m_retry;   // lines whose port did not open at the start
     bool m_stopping = false;
+    int m_stopExitCode = 0;
 };
 
 } // namespace jumo

@@ -18,8 +18,11 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
+#include <QSocketNotifier>
 
 #include <csignal>
+#include <fcntl.h>
+#include <unistd.h>
 
 using namespace jumo;
 using namespace jumo::test;
@@ -105,6 +108,7 @@ private:
     std::unique_ptr<SimulatorPeer> m_peer;
     std::unique_ptr<QProcess> m_publisher;
     QByteArray m_publisherErr;
+    int m_publisherLogFd = -1;   // >= 0: the next publisher's stderr goes there, not to m_publisherErr
 };
 
 void TstMqtt::init()
@@ -150,6 +154,8 @@ bool TstMqtt::startPublisher(const QString &broker, const QStringList &extra, co
     m_publisher->setProcessEnvironment(environment);
     connect(m_publisher.get(), &QProcess::readyReadStandardError, this,
             [this] { m_publisherErr += m_publisher->readAllStandardError(); });
+    if (const int fd = std::exchange(m_publisherLogFd, -1); fd >= 0)
+        m_publisher->setChildProcessModifier([fd] { ::dup2(fd, STDERR_FILENO); });
     m_publisher->start(QStringLiteral(JUMO_PUBLISHER_PATH),
                        QStringList{QStringLiteral("--broker"), broker, QStringLiteral("--name"), station} + lines
                                + extra);
@@ -453,24 +459,55 @@ void TstMqtt::silentStationGoesStale()
 void TstMqtt::stopSignalsSayStopped_data()
 {
     QTest::addColumn<int>("signal");
-    QTest::newRow("SIGTERM, as systemd stops it") << int(SIGTERM);
-    QTest::newRow("SIGINT, Ctrl+C") << int(SIGINT);
-    QTest::newRow("SIGHUP, a closed terminal") << int(SIGHUP);
+    QTest::addColumn<bool>("logReaderGone");
+    QTest::addColumn<int>("exitCode");
+    QTest::newRow("SIGTERM, as systemd stops it") << int(SIGTERM) << false << 0;
+    QTest::newRow("SIGINT, Ctrl+C") << int(SIGINT) << false << 0;
+    QTest::newRow("SIGHUP, a closed terminal: 129 as jumoctl") << int(SIGHUP) << false << 129;
+    // No signal: libmosquitto ignores SIGPIPE. It sees for itself that nobody reads.
+    QTest::newRow("its log's reader gone: 141 as jumoctl's SIGPIPE") << 0 << true << 141;
+    // Its log still read: the signal came from a socket, and it goes on (SIGTERM ends it).
+    QTest::newRow("SIGPIPE, its log still read: goes on") << int(SIGPIPE) << false << 0;
 }
 
 void TstMqtt::stopSignalsSayStopped()
 {
     QFETCH(int, signal);
+    QFETCH(bool, logReaderGone);
+    QFETCH(int, exitCode);
     QVERIFY(m_broker->start());
-    QVERIFY(startPublisher(brokerUrl()));
+    // Its log into a pipe of this test, whose reader it can close.
+    int log[2] = {-1, -1};
+    QCOMPARE(::pipe2(log, O_CLOEXEC), 0);
+    m_publisherLogFd = log[1];
+    const bool started = startPublisher(brokerUrl());
+    ::close(log[1]);
+    QVERIFY(started);
     auto mirror = startMirror();
     QVERIFY(mirror);
     QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 30000);
 
-    QCOMPARE(::kill(pid_t(m_publisher->processId()), signal), 0);
+    QSocketNotifier reader(log[0], QSocketNotifier::Read);
+    connect(&reader, &QSocketNotifier::activated, this, [&] {
+        char buffer[4096];
+        if (::read(log[0], buffer, sizeof buffer) <= 0)
+            reader.setEnabled(false);
+    });
+    if (logReaderGone) {
+        reader.setEnabled(false);
+        ::close(log[0]);
+        log[0] = -1;
+    }
+    if (signal != 0)
+        QCOMPARE(::kill(pid_t(m_publisher->processId()), signal), 0);
+    // A signal it goes on after: the stop asked for next ends it.
+    if (exitCode == 0 && signal == SIGPIPE)
+        QCOMPARE(::kill(pid_t(m_publisher->processId()), SIGTERM), 0);
     QVERIFY(m_publisher->waitForFinished(10000));
     QCOMPARE(m_publisher->exitStatus(), QProcess::NormalExit);
-    QCOMPARE(m_publisher->exitCode(), 0);
+    QCOMPARE(m_publisher->exitCode(), exitCode);
+    if (log[0] >= 0)
+        ::close(log[0]);
     QTRY_VERIFY_WITH_TIMEOUT(!mirror->isLive(station), 5000);
     QCOMPARE(mirror->station(station)->status.reason, QStringLiteral("stopped"));
     const QHash<QString, QByteArray> retained = retainedMessages(m_broker->port(), QStringLiteral("jumo/#"), {}, 3);
