@@ -207,6 +207,13 @@ void RemoteLines::onConditionChanged(DeviceId remote)
         condition = {State::Disconnected, silence.since, silence.reason};
     } else if (silence.kind != Silence::Kind::Live) {
         condition = {State::LineLost, silence.since, silence.reason};
+    } else if (m.line->condition(m.id).state == State::LineLost) {
+        // Live again after a restart: a device the new run does not have (its order,
+        // published before its "online", leaves it out) still has its last run's retained
+        // condition until the station clears its topics. It leaves lost, never restored.
+        const RemoteStationState *s = m_station->station(d->station);
+        if (s && !s->order.isEmpty() && !s->order.contains(d->line + QLatin1Char('/') + d->name))
+            return;
     }
     m.line->setCondition(m.id, condition);
 }

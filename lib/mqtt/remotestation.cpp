@@ -287,8 +287,19 @@ void RemoteStation::onStatus(const QString &name, const QByteArray &payload, boo
     } else if (status) {
         // Status and heartbeat are taken from the LivenessLink alone: two connections do
         // not keep each other's order.
+        const bool newRun = status->online
+                && !(s->state.statusKnown && s->state.status.online && s->state.status.started == status->started);
         s->state.statusKnown = true;
         s->state.status = *status;
+        if (newRun) {
+            // A station that has just started has the silence limit to send its first
+            // heartbeat, as one heard of for the first time: the last run's heartbeat does
+            // not make it silent meanwhile (a false loss and return in every viewer at each
+            // restart). The same run's status again (retained, on a reconnect) is no sign
+            // of life: a frozen station stays silent.
+            s->state.silent = false;
+            s->silence->start(m_silenceLimitMs);
+        }
         if (!status->online)
             qCInfo(lcMqtt).noquote() << "station" << name << "offline:" << status->reason;
     } else {

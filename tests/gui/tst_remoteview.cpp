@@ -44,6 +44,20 @@ int runSeconds(int fallback)
     return ok && seconds > 0 ? seconds : fallback;
 }
 
+// The journal's rows of devices lost and restored, in the folder's journal.
+QStringList communicationRows(const QString &folder)
+{
+    QFile journal(folder + QStringLiteral("/remote-alarm-journal.jsonl"));
+    QStringList rows;
+    if (journal.open(QIODevice::ReadOnly)) {
+        for (const QByteArray &row : journal.readAll().split('\n')) {
+            if (row.contains("\"communication\""))
+                rows << QString::fromUtf8(row);
+        }
+    }
+    return rows;
+}
+
 // The device is heard and its alarms are known (the simulated IPC 300 reports a min.
 // alarm with no load: an alarm is what the station sees too).
 bool heard(const DeviceTile *tile)
@@ -539,9 +553,13 @@ void TstRemoteView::restartsWithFewerDevicesAndLines()
     QTRY_VERIFY_WITH_TIMEOUT(heardNow("cabinet-a", "ipc300", 1) && heardNow("cabinet-a", "dtron300", 2)
                                      && heardNow("cabinet-b", "quantrol", 1),
                              60000);
+    // Each restart is a real loss: the devices of the station that stopped are lost and
+    // restored, in the window and in the program, both keeping this folder's journal.
+    const QStringList rows = communicationRows(m_logs->path());
     qInfo("%d rounds of restarts (one device fewer, one line fewer, all) in %lld s; the window and the program ran "
-          "through",
-          rounds, qint64(run.elapsed() / 1000));
+          "through; %lld journal rows of lost and restored devices (%lld lost, %lld restored)",
+          rounds, qint64(run.elapsed() / 1000), qint64(rows.size()),
+          qint64(rows.filter(QStringLiteral("\"lost")).size()), qint64(rows.filter(QStringLiteral("\"restored\"")).size()));
     if (const QString folder = qEnvironmentVariable("JUMO_SCREENSHOT_DIR"); !folder.isEmpty())
         window->grab().save(folder + QStringLiteral("/remote-after-restarts.png"));
     program.terminate();
@@ -635,6 +653,10 @@ void TstRemoteView::forgedValuesAreUndoneInEveryViewer()
           longest);
     QVERIFY(sent > 0);
     QCOMPARE(shownMs.size(), fakesShown);
+    // The station was live all along, fake heartbeats or not: no viewer lost anything.
+    const QStringList rows = communicationRows(m_logs->path());
+    qInfo("%lld journal rows of lost or restored devices", qint64(rows.size()));
+    QVERIFY2(rows.isEmpty(), qPrintable(rows.join(QLatin1Char('\n'))));
     QVERIFY2(longest < 10000, qPrintable(QString::number(longest)));
     for (const auto &viewer : viewers) {
         QVERIFY(viewer->findChild<QLabel *>(QStringLiteral("forgeryBanner"))->isVisible());

@@ -81,6 +81,8 @@ private slots:
     void lineLossPublishesEachConditionOnce();
     void ageIsOfTheLastRead();
     void lostSinceIsWhenTheViewerLostContact();
+    void aNewRunIsNotSilentBeforeItsFirstHeartbeat();
+    void aDeviceTheNextRunDropsIsNeverRestored();
     void stalledBrokerIsNoRival();
     void passwordIsChecked();
     void tls();
@@ -1449,6 +1451,78 @@ void TstMqtt::lostSinceIsWhenTheViewerLostContact()
     QVERIFY2(since >= beforeKill.addMSecs(-2500) && since <= QDateTime::currentDateTime(),
              qPrintable(since.toString(Qt::ISODateWithMs) + " " + beforeKill.toString(Qt::ISODateWithMs)));
     QVERIFY(since > started.toLocalTime().addSecs(2));
+}
+
+void TstMqtt::aNewRunIsNotSilentBeforeItsFirstHeartbeat()
+{
+    // A restarted station says "online" and sends its first heartbeat up to a heartbeat
+    // interval later. Its last run's last heartbeat must not make it silent meanwhile: that
+    // was a false loss and return of every device in every viewer at each restart.
+    QVERIFY(m_broker->start());
+    auto mirror = startMirror();
+    QVERIFY(mirror);
+    auto fake = connectClient();
+    QVERIFY(fake);
+    const QString prefix = QStringLiteral("jumo/%1/").arg(station);
+    const QDateTime firstRun = QDateTime::currentDateTimeUtc();
+    QVERIFY(fake->publish(prefix + QStringLiteral("status"), TopicScheme::statusOnline("x", firstRun, {}), true));
+    QVERIFY(fake->publish(prefix + QStringLiteral("heartbeat"), TopicScheme::heartbeatPayload(firstRun), false));
+    QTRY_VERIFY_WITH_TIMEOUT(mirror->isLive(station), 20000);
+    QVERIFY(fake->publish(prefix + QStringLiteral("status"), TopicScheme::statusOffline("stopped"), true));
+    // Long after its last heartbeat, as a restart that takes a while.
+    QTRY_VERIFY_WITH_TIMEOUT(mirror->station(station)->silent, 20000);
+    QVERIFY(!mirror->isLive(station));
+    QVERIFY(fake->publish(prefix + QStringLiteral("status"), TopicScheme::statusOnline("x", firstRun.addSecs(5), {}),
+                          true));
+    QTRY_VERIFY_WITH_TIMEOUT(mirror->isLive(station), 20000);
+    // Without its heartbeat, silent again after the limit.
+    QTRY_VERIFY_WITH_TIMEOUT(mirror->station(station)->silent, 20000);
+    QVERIFY(!mirror->isLive(station));
+}
+
+void TstMqtt::aDeviceTheNextRunDropsIsNeverRestored()
+{
+    // The station restarts without a line. Until it clears that line's topics (after its
+    // "online"), its device's retained condition still says online: a viewer must not
+    // take that as the device restored (a false row in every viewer's journal).
+    TestLine second;
+    QVERIFY(second.start());
+    SimulatorPeer secondPeer(QStringLiteral("quantrol"));
+    QVERIFY(secondPeer.start(second.deviceEnd(), {1}));
+    const QString both = writeTwoLineStation(second, {"cabinet-a", {"ipc300@1"}}, {"cabinet-b", {"quantrol@1"}});
+    QVERIFY(m_broker->start());
+    QVERIFY(startPublisher(brokerUrl(), {QStringLiteral("--station"), both}));
+    auto mirror = startMirror();
+    QVERIFY(mirror);
+    RemoteLines lines(mirror.get());
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror, 2), 30000);
+    MirroredLine *cabinetB = lines.line(station, QStringLiteral("cabinet-b"));
+    QVERIFY(cabinetB);
+    const DeviceId quantrol = cabinetB->device(QStringLiteral("quantrol"), 1);
+    QList<DeviceCondition::State> states;
+    connect(cabinetB, &DeviceSource::conditionChanged, this,
+            [&](DeviceId id, const DeviceCondition &condition) {
+                if (id == quantrol)
+                    states << condition.state;
+            });
+    QSignalSpy removing(&lines, &RemoteLines::deviceRemoving);
+
+    m_publisher->terminate();
+    QVERIFY(m_publisher->waitForFinished(10000));
+    QFile file(m_broker->file(QStringLiteral("one.json")));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(QJsonDocument(QJsonObject{{"format", "jumo-station"}, {"version", 1}, {"name", station},
+                                         {"lines", QJsonArray{QJsonObject{{"name", "cabinet-a"},
+                                                                          {"port", m_line->masterEnd()},
+                                                                          {"baud", 19200},
+                                                                          {"devices", QJsonArray{"ipc300@1"}}}}}})
+                       .toJson());
+    file.close();
+    QVERIFY(startPublisher(brokerUrl(), {QStringLiteral("--station"), file.fileName()}));
+    QTRY_VERIFY_WITH_TIMEOUT(!removing.isEmpty(), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror, 1), 30000);
+    QVERIFY(!states.isEmpty());
+    QVERIFY2(!states.contains(DeviceCondition::State::Online), qPrintable(QString::number(states.size())));
 }
 
 QTEST_GUILESS_MAIN(TstMqtt)
