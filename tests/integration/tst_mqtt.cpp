@@ -663,26 +663,37 @@ void TstMqtt::pollSelectionAndAnEarlierRunsLeftovers()
     // new subscriber sees the IPC 300's selection, each value current, and nothing else.
     const QString base = QStringLiteral("jumo/%1/devices/").arg(station);
     QHash<QString, QByteArray> retained;
+    QString whyNot;   // what the last look found wrong
     const auto onlyTheSelection = [&] {
         retained = retainedMessages(m_broker->port(), QStringLiteral("jumo/%1/#").arg(station), {}, 3);
-        if (json(retained.value(QStringLiteral("jumo/%1/status").arg(station))).value("state") != "online")
+        const QJsonObject status = json(retained.value(QStringLiteral("jumo/%1/status").arg(station)));
+        if (status.value("state") != "online") {
+            whyNot = QStringLiteral("status %1").arg(QString::fromUtf8(QJsonDocument(status).toJson(QJsonDocument::Compact)));
             return false;
+        }
         QStringList values;
+        QStringList notCurrent;
         for (auto it = retained.cbegin(); it != retained.cend(); ++it) {
-            if (it.key().startsWith(base + "line1/tya200@2"))
+            if (it.key().startsWith(base + "line1/tya200@2")) {
+                whyNot = QStringLiteral("left over: %1").arg(it.key());
                 return false;
+            }
             if (it.key().startsWith(base + "line1/ipc300@1/values/")) {
-                if (json(it.value()).value("validity") != "current")
-                    return false;
+                const QJsonObject value = json(it.value());
+                if (value.value("validity") != "current")
+                    notCurrent << QStringLiteral("%1 %2/%3").arg(it.key().section('/', -1), value.value("validity").toString(),
+                                                             value.value("status").toString());
                 values << it.key().section('/', -1);
             }
         }
         values.sort();
         QStringList expected = wanted;
         expected.sort();
-        return values == expected;
+        whyNot = values != expected ? QStringLiteral("values %1, wanted %2").arg(values.join(','), expected.join(','))
+                                    : QStringLiteral("not current: %1").arg(notCurrent.join(", "));
+        return values == expected && notCurrent.isEmpty();
     };
-    QTRY_VERIFY2_WITH_TIMEOUT(onlyTheSelection(), qPrintable(QStringList(retained.keys()).join('\n')), 30000);
+    QTRY_VERIFY2_WITH_TIMEOUT(onlyTheSelection(), qPrintable(whyNot), 30000);
     QTRY_VERIFY_WITH_TIMEOUT(publisherErrors().contains("cleared"), 10000);
 
     // A viewer's mirror has the one device, its selection current, nothing more.
