@@ -689,8 +689,13 @@ void TstMqtt::pollSelectionAndAnEarlierRunsLeftovers()
         values.sort();
         QStringList expected = wanted;
         expected.sort();
-        whyNot = values != expected ? QStringLiteral("values %1, wanted %2").arg(values.join(','), expected.join(','))
-                                    : QStringLiteral("not current: %1").arg(notCurrent.join(", "));
+        const QString found = values != expected
+                ? QStringLiteral("values %1, wanted %2").arg(values.join(','), expected.join(','))
+                : QStringLiteral("not current: %1").arg(notCurrent.join(", "));
+        // Said as it changes: QTRY's check after its timeout does not show the message.
+        if (found != whyNot)
+            qInfo("onlyTheSelection: %s", qPrintable(found));
+        whyNot = found;
         return values == expected && notCurrent.isEmpty();
     };
     QTRY_VERIFY2_WITH_TIMEOUT(onlyTheSelection(), qPrintable(whyNot), 30000);
