@@ -1,6 +1,7 @@
 #include "overviewpage.h"
 
 #include <QEvent>
+#include <QSet>
 
 #include <algorithm>
 #include <cmath>
@@ -97,6 +98,38 @@ void OverviewPage::removeTile(DeviceTile *tile)
     for (Group &g : m_groups)
         g.tiles.removeAll(tile);
     delete tile;
+    relayout(true);
+}
+
+void OverviewPage::setGroupTiles(QWidget *group, const QList<DeviceTile *> &tiles)
+{
+    for (Group &g : m_groups) {
+        if (g.header == group && g.tiles != tiles && QSet<DeviceTile *>(g.tiles.cbegin(), g.tiles.cend())
+                    == QSet<DeviceTile *>(tiles.cbegin(), tiles.cend())) {
+            g.tiles = tiles;
+            relayout(true);
+        }
+    }
+}
+
+void OverviewPage::setGroupOrder(const QList<QWidget *> &headers)
+{
+    QList<Group> ordered;
+    for (QWidget *header : headers) {
+        const auto it = std::find_if(m_groups.cbegin(), m_groups.cend(), [header](const Group &g) { return g.header == header; });
+        if (it != m_groups.cend())
+            ordered << *it;
+    }
+    // Groups not named keep their place after the named ones.
+    for (const Group &g : std::as_const(m_groups)) {
+        if (!headers.contains(g.header))
+            ordered << g;
+    }
+    const bool same = std::equal(ordered.cbegin(), ordered.cend(), m_groups.cbegin(), m_groups.cend(),
+                                 [](const Group &a, const Group &b) { return a.header == b.header; });
+    if (same)
+        return;
+    m_groups = ordered;
     relayout(true);
 }
 

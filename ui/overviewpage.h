@@ -32,7 +32,13 @@ public:
     void showGroup(QWidget *header);
     // Adds the faceplate at the end of the header's group (nullptr: a group without header).
     void addTile(DeviceTile *tile, QWidget *group = nullptr);
+    // Deletes the faceplate.
     void removeTile(DeviceTile *tile);
+    // The group's faceplates in this order (the same ones), and the groups in this order.
+    void setGroupTiles(QWidget *group, const QList<DeviceTile *> &tiles);
+    void setGroupOrder(const QList<QWidget *> &headers);
+    // Every faceplate, in the order shown.
+    QList<DeviceTile *> tiles() const;
     void setAlwaysCompact(bool compact);
     bool alwaysCompact() const { return m_alwaysCompact; }
     DeviceTile::Density density() const { return m_density; }
@@ -59,7 +65,6 @@ private:
         QWidget *header = nullptr;
         QList<DeviceTile *> tiles;
     };
-    QList<DeviceTile *> tiles() const;
     int headerHeight(const Group &group) const;
 
     QList<Group> m_groups;

@@ -15,6 +15,8 @@
 #include "protocol/familyregistry.h"
 
 #include <QApplication>
+
+#include <climits>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenuBar>
@@ -22,6 +24,7 @@
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QStatusBar>
+#include <QTimer>
 #include <QVBoxLayout>
 
 namespace jumo {
@@ -45,7 +48,8 @@ RemoteWindow::RemoteWindow(const FamilyRegistry &registry, const Options &option
                                      {tr("Time"), tr("Device"), tr("Register"), tr("Bit"), tr("Id"), tr("Signal"),
                                       tr("Kind"), tr("State")},
                                      this)),
-      m_brokerStatus(new QLabel(this)), m_stationStatus(new QLabel(this))
+      m_brokerStatus(new QLabel(this)), m_stationStatus(new QLabel(this)), m_forgeryBanner(new QLabel(this)),
+      m_forgeryStatus(new QLabel(this)), m_reorder(new QTimer(this))
 {
     setObjectName(QStringLiteral("remoteWindow"));
     setWindowTitle(tr("JUMO HMI remote view: %1 [read-only]").arg(options.broker.url()));
@@ -55,6 +59,10 @@ RemoteWindow::RemoteWindow(const FamilyRegistry &registry, const Options &option
 
     m_navigation->setObjectName(QStringLiteral("navigation"));
     m_navigation->setIconSize(QSize(16, 16));
+    // Names whole, a short state after them; what does not fit ends in "…" and is in the
+    // tooltip: the list never scrolls sideways.
+    m_navigation->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_navigation->setTextElideMode(Qt::ElideRight);
     m_navigation->addItem(tr("Overview"));
     m_navigation->addItem(tr("Alarm journal (this viewer)"));
     m_pages->addWidget(m_overview);
@@ -66,9 +74,20 @@ RemoteWindow::RemoteWindow(const FamilyRegistry &registry, const Options &option
     banner->setObjectName(QStringLiteral("remoteBanner"));
     banner->setWordWrap(true);
     banner->setMargin(4);
+    // Shown for good once this viewer's own user could publish into a station's tree.
+    m_forgeryBanner->setObjectName(QStringLiteral("forgeryBanner"));
+    m_forgeryBanner->setWordWrap(true);
+    m_forgeryBanner->setMargin(6);
+    m_forgeryBanner->setAutoFillBackground(true);
+    QPalette warning = m_forgeryBanner->palette();
+    warning.setColor(QPalette::Window, QColor(0xff, 0xd5, 0x4f));
+    warning.setColor(QPalette::WindowText, Qt::black);
+    m_forgeryBanner->setPalette(warning);
+    m_forgeryBanner->hide();
     auto *right = new QWidget(this);
     auto *rightLayout = new QVBoxLayout(right);
     rightLayout->setContentsMargins(0, 0, 0, 0);
+    rightLayout->addWidget(m_forgeryBanner);
     rightLayout->addWidget(banner);
     rightLayout->addWidget(m_pages, 1);
     auto *splitter = new QSplitter(this);
@@ -101,18 +120,25 @@ RemoteWindow::RemoteWindow(const FamilyRegistry &registry, const Options &option
     connect(compact, &QAction::toggled, m_overview, &OverviewPage::setAlwaysCompact);
 
     statusBar()->addWidget(m_brokerStatus, 1);
+    statusBar()->addPermanentWidget(m_forgeryStatus);
     statusBar()->addPermanentWidget(m_stationStatus);
     m_brokerStatus->setObjectName(QStringLiteral("brokerStatus"));
     m_stationStatus->setObjectName(QStringLiteral("stationStatus"));
+    m_forgeryStatus->setObjectName(QStringLiteral("forgeryStatus"));
+    m_forgeryStatus->hide();
 
+    m_reorder->setSingleShot(true);
+    m_reorder->setInterval(50);
+    connect(m_reorder, &QTimer::timeout, this, &RemoteWindow::reorder);
     connect(m_lines.get(), &RemoteLines::lineAdded, this, &RemoteWindow::onLineAdded);
+    connect(m_lines.get(), &RemoteLines::lineRemoving, this, &RemoteWindow::onLineRemoving);
     connect(m_lines.get(), &RemoteLines::deviceAdded, this, &RemoteWindow::onDeviceAdded);
     connect(m_lines.get(), &RemoteLines::deviceRemoving, this, &RemoteWindow::onDeviceRemoving);
-    connect(m_lines.get(), &RemoteLines::unknownFamily, this,
-            [this](const QString &station, const QString &line, const QString &device) {
-                statusBar()->showMessage(tr("%1/%2/%3 is of a family this program has no map of: not shown")
-                                                 .arg(station, line, device));
-            });
+    connect(m_lines.get(), &RemoteLines::orderChanged, m_reorder, qOverload<>(&QTimer::start));
+    connect(m_station.get(), &RemoteStation::refused, this, [this](const QString &what, const QString &reason) {
+        statusBar()->showMessage(tr("Not shown: %1 (%2)").arg(what.left(120), reason), 10000);
+    });
+    connect(m_station.get(), &RemoteStation::forgeryPossible, this, &RemoteWindow::showForgeryWarning);
     connect(m_station.get(), &RemoteStation::connectionChanged, this, [this](bool, const QString &reason) {
         m_brokerError = reason;
         updateStatus();
@@ -198,8 +224,29 @@ void RemoteWindow::updateLine(MirroredLine *line)
     const QString state = lineStateText(line);
     it->header->display(published ? published->address : QString(), int(line->devices().size()), line->state(),
                         state);
-    it->item->setText(tr("%1 (%2)").arg(lineLabel(line), state));
-    it->item->setToolTip(state);
+    // The name whole and the state in a word; the reason in the tooltip and the header.
+    QString word = tr("connected");
+    if (line->state() == LineState::Lost)
+        word = tr("line lost");
+    else if (line->state() == LineState::Disconnected)
+        word = tr("disconnected");
+    it->item->setText(tr("%1 (%2)").arg(lineLabel(line), word));
+    it->item->setToolTip(tr("%1: %2").arg(lineLabel(line), state));
+    updateStatus();
+}
+
+void RemoteWindow::onLineRemoving(MirroredLine *line)
+{
+    const Line entry = m_lineEntries.take(line);
+    if (!entry.header)
+        return;
+    // Its devices left before it; what is left of the line goes with it.
+    m_overview->removeGroup(entry.header);
+    if (m_navigation->currentItem() == entry.item)
+        m_navigation->setCurrentRow(overviewRow);
+    delete entry.item;
+    entry.journal->deleteLater();
+    m_reorder->start();
     updateStatus();
 }
 
@@ -215,7 +262,7 @@ void RemoteWindow::onDeviceAdded(MirroredLine *line, DeviceId id)
     d.tile = new DeviceTile(id, *map, line->deviceAddress(id), d.values, d.alarms, m_overview);
     d.tile->setCondition(line->condition(id));
     m_overview->addTile(d.tile, m_lineEntries.value(line).header);
-    // Devices follow their line's row, in the order they arrive.
+    // After its line's row for now; reorder() puts it where its station lists it.
     int row = m_navigation->row(m_lineEntries.value(line).item) + 1;
     while (row < m_navigation->count() && m_navigation->item(row)->data(deviceRole).isValid())
         ++row;
@@ -223,6 +270,7 @@ void RemoteWindow::onDeviceAdded(MirroredLine *line, DeviceId id)
     d.item->setData(deviceRole, id);
     m_navigation->insertItem(row, d.item);
     m_devices.insert(id, d);
+    m_reorder->start();
     auto update = [this, id] { updateDevice(id); };
     connect(d.alarms, &AlarmBitsModel::activeAlarmsChanged, this, update);
     connect(d.alarms, &AlarmBitsModel::alarmsKnownChanged, this, update);
@@ -237,18 +285,93 @@ void RemoteWindow::onDeviceAdded(MirroredLine *line, DeviceId id)
 
 void RemoteWindow::onDeviceRemoving(MirroredLine *line, DeviceId id)
 {
-    Device d = m_devices.take(id);
+    // Taken out once, by its id: whatever asks for it later finds nothing.
+    const Device d = m_devices.take(id);
     if (!d.tile)
         return;
-    if (d.page && m_pages->currentWidget() == d.page)
+    if (m_navigation->currentItem() == d.item)
         m_navigation->setCurrentRow(overviewRow);
-    m_overview->removeTile(d.tile);
-    delete d.tile;
-    delete d.page;
     delete d.item;
-    delete d.values;
-    delete d.alarms;
+    // The overview deletes the faceplate. The page and the models may be in the middle of
+    // a signal of theirs: deleted later, the page before the models it shows.
+    m_overview->removeTile(d.tile);
+    if (d.page) {
+        m_pages->removeWidget(d.page);
+        d.page->hide();
+        d.page->deleteLater();
+    }
+    d.values->deleteLater();
+    d.alarms->deleteLater();
     updateLine(line);
+}
+
+void RemoteWindow::reorder()
+{
+    const QList<MirroredLine *> lines = m_lines->orderedLines();
+    QList<QWidget *> headers;
+    QList<QListWidgetItem *> rows;
+    for (MirroredLine *line : lines) {
+        const auto entry = m_lineEntries.constFind(line);
+        if (entry == m_lineEntries.cend())
+            continue;
+        headers << entry->header;
+        rows << entry->item;
+        QList<DeviceTile *> tiles;
+        for (DeviceId id : m_lines->orderedDevices(line)) {
+            const auto d = m_devices.constFind(id);
+            if (d == m_devices.cend())
+                continue;
+            tiles << d->tile;
+            rows << d->item;
+        }
+        m_overview->setGroupTiles(entry->header, tiles);
+    }
+    m_overview->setGroupOrder(headers);
+    // The page list: the fixed pages, then the lines with their devices, in that order.
+    bool same = m_navigation->count() == journalRow + 1 + rows.size();
+    for (qsizetype i = 0; same && i < rows.size(); ++i)
+        same = m_navigation->item(int(journalRow + 1 + i)) == rows[i];
+    if (!same) {
+        QListWidgetItem *current = m_navigation->currentItem();
+        const QSignalBlocker blocker(m_navigation);
+        while (m_navigation->count() > journalRow + 1)
+            m_navigation->takeItem(journalRow + 1);
+        for (QListWidgetItem *row : std::as_const(rows))
+            m_navigation->addItem(row);
+        m_navigation->setCurrentItem(current);
+    }
+    fitNavigationWidth();
+}
+
+void RemoteWindow::fitNavigationWidth()
+{
+    // As wide as the widest line name with its state word, within reason.
+    QFont bold = m_navigation->font();
+    bold.setBold(true);
+    const QFontMetrics metrics(bold);
+    int width = m_navigation->sizeHintForColumn(0);
+    for (auto it = m_lineEntries.cbegin(); it != m_lineEntries.cend(); ++it)
+        width = std::max(width, metrics.horizontalAdvance(it->item->text()) + 16 + 12);
+    width = std::min(width + 2 * m_navigation->frameWidth() + 8, 480);
+    if (m_navigation->minimumWidth() != width)
+        m_navigation->setMinimumWidth(width);
+}
+
+void RemoteWindow::showForgeryWarning()
+{
+    const QString text = tr("This broker lets anyone publish station data: values and liveness may be forged.");
+    m_forgeryBanner->setText(text + QLatin1Char(' ')
+                             + tr("This viewer's own user could publish into a station's topics; give the broker "
+                                  "users and an ACL (README, \"MQTT\")."));
+    m_forgeryBanner->show();
+    m_forgeryStatus->setText(text);
+    m_forgeryStatus->setToolTip(m_forgeryBanner->text());
+    m_forgeryStatus->show();
+}
+
+QList<DeviceTile *> RemoteWindow::tilesInOrder() const
+{
+    return m_overview->tiles();
 }
 
 void RemoteWindow::updateDevice(DeviceId id)
@@ -278,13 +401,31 @@ void RemoteWindow::updateStatus()
         m_brokerStatus->setText(tr("Broker %1: not reachable (%2); values are the last ones received")
                                         .arg(m_options.broker.url(), m_brokerError));
     QStringList live;
+    QStringList receiving;
     QStringList silent;
-    for (const QString &name : m_station->stations())
-        (m_station->isLive(name) ? live : silent) << name;
-    QString text = live.isEmpty() ? QString() : tr("Live: %1").arg(live.join(QStringLiteral(", ")));
+    for (const QString &name : m_station->stations()) {
+        const RemoteStationState *s = m_station->station(name);
+        if (m_station->isLive(name))
+            live << name;
+        else if (m_station->isConnected() && s->statusKnown && s->status.online && !s->silent)
+            receiving << name;   // online, its state still on the way behind other messages
+        else
+            silent << name;
+    }
+    QStringList parts;
+    // What a station undid of other clients' messages under it (the broker lets them in).
+    for (const QString &name : m_station->stations()) {
+        const RemoteStationState *s = m_station->station(name);
+        if (const qint64 undone = s->status.restored + s->status.cleared; s->statusKnown && undone > 0)
+            parts << tr("%1 undid %n message(s) of other clients", nullptr, int(std::min<qint64>(undone, INT_MAX))).arg(name);
+    }
+    if (!live.isEmpty())
+        parts << tr("Live: %1").arg(live.join(QStringLiteral(", ")));
+    if (!receiving.isEmpty())
+        parts << tr("Online, receiving its state: %1").arg(receiving.join(QStringLiteral(", ")));
     if (!silent.isEmpty())
-        text += (text.isEmpty() ? QString() : QStringLiteral("  ")) + tr("Not live: %1").arg(silent.join(QStringLiteral(", ")));
-    m_stationStatus->setText(text.isEmpty() ? tr("No station heard yet") : text);
+        parts << tr("Not live: %1").arg(silent.join(QStringLiteral(", ")));
+    m_stationStatus->setText(parts.isEmpty() ? tr("No station heard yet") : parts.join(QStringLiteral("  ")));
 }
 
 DevicePage *RemoteWindow::ensurePage(DeviceId id)

@@ -1,7 +1,9 @@
 // The control-room viewer of stations that publish to an MQTT broker (jumo-hmi --remote):
 // the same overview, faceplates, device pages, LEDs and trend as a station's own window,
-// fed by the broker. It holds no Bus and no port, so nothing in it can write; its only
-// publication is its own presence. Alarms it sees go to its own journal.
+// fed by the broker, in the stations' order. It holds no Bus and no port, so nothing in it
+// can write; its only publications are its presence and its write probe. Alarms it sees go
+// to its own journal. Faceplates, pages and rows are keyed by device id and go when their
+// device leaves its station.
 #pragma once
 
 #include "bus/mirroredline.h"
@@ -16,6 +18,7 @@ class QLabel;
 class QListWidget;
 class QListWidgetItem;
 class QStackedWidget;
+class QTimer;
 
 namespace jumo {
 
@@ -60,6 +63,8 @@ public:
     LineHeader *lineHeader(const QString &line) const;
     void showDevice(DevicePage *page);
     EventLogView *journalView() const { return m_journalView; }
+    // Every faceplate of the overview, in the order shown.
+    QList<DeviceTile *> tilesInOrder() const;
 
 private:
     struct Device
@@ -79,8 +84,14 @@ private:
     };
 
     void onLineAdded(MirroredLine *line);
+    void onLineRemoving(MirroredLine *line);
     void onDeviceAdded(MirroredLine *line, DeviceId id);
     void onDeviceRemoving(MirroredLine *line, DeviceId id);
+    // The overview and the page list in the stations' order (coalesced: many devices come
+    // at once).
+    void reorder();
+    void fitNavigationWidth();
+    void showForgeryWarning();
     void updateLine(MirroredLine *line);
     void updateDevice(DeviceId id);
     void updateStatus();
@@ -102,6 +113,9 @@ private:
     EventLogView *m_journalView;
     QLabel *m_brokerStatus;
     QLabel *m_stationStatus;
+    QLabel *m_forgeryBanner;
+    QLabel *m_forgeryStatus;
+    QTimer *m_reorder;
     QHash<MirroredLine *, Line> m_lineEntries;
     QHash<DeviceId, Device> m_devices;
     QString m_brokerError;

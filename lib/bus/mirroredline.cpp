@@ -77,6 +77,17 @@ void MirroredLine::setCondition(DeviceId id, const DeviceCondition &condition)
     emit conditionChanged(id, condition);
 }
 
+void MirroredLine::setReadTime(DeviceId id, qint64 goodMs)
+{
+    auto device = m_devices.find(id);
+    if (device == m_devices.end())
+        return;
+    for (EntryState &entry : device->entries) {
+        if (entry.validity == Validity::Current && entry.goodMs < goodMs)
+            entry.goodMs = goodMs;
+    }
+}
+
 void MirroredLine::setState(LineState state, const QString &reason)
 {
     // A new reason for the same state is news too ("not online yet" becomes the station's

@@ -29,6 +29,9 @@ public:
     // are ignored. One entriesUpdated for the whole set.
     void setEntries(DeviceId id, const QHash<QString, EntryState> &states);
     void setCondition(DeviceId id, const DeviceCondition &condition);
+    // The station read the device's current values again at goodMs (this line's clock),
+    // unchanged: their age starts again. No signal: nothing but an age changed.
+    void setReadTime(DeviceId id, qint64 goodMs);
     // The line's state as the station reports it (or Lost while the station is silent),
     // with the reason in words.
     void setState(LineState state, const QString &reason = {});

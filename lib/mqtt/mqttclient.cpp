@@ -1,10 +1,11 @@
 #include "mqtt/mqttclient.h"
 
 #include <QCoreApplication>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
-#include <QHostInfo>
 #include <QLoggingCategory>
+#include <QRandomGenerator>
 #include <QSocketNotifier>
 
 #include <mosquitto.h>
@@ -13,7 +14,6 @@
 
 #include <cerrno>
 #include <cstring>
-#include <atomic>
 #include <mutex>
 
 Q_DECLARE_LOGGING_CATEGORY(lcMqtt)
@@ -41,10 +41,11 @@ QString errorText(int rc)
 
 } // namespace
 
-MqttClient::MqttClient(QObject *parent) : QObject(parent)
+MqttClient::MqttClient(QObject *parent)
+    : QObject(parent),
+      m_randomId(randomId(QCoreApplication::applicationName().isEmpty() ? QStringLiteral("jumo")
+                                                                         : QCoreApplication::applicationName()))
 {
-    static std::atomic<int> instances{0};
-    m_instance = ++instances;
     initLibrary();
     // The library sends keepalive pings and notices a silent broker only when called.
     m_misc.setInterval(500);
@@ -63,20 +64,21 @@ MqttClient::~MqttClient()
         mosquitto_destroy(m_mosq);
 }
 
+QString MqttClient::randomId(const QString &prefix)
+{
+    QString name = prefix.left(40);
+    for (QChar &c : name) {
+        if (!c.isLetterOrNumber() && c != QLatin1Char('-') && c != QLatin1Char('_'))
+            c = QLatin1Char('_');
+    }
+    return QStringLiteral("%1-%2").arg(name).arg(QRandomGenerator::system()->generate64(), 16, 16, QLatin1Char('0'));
+}
+
 QString MqttClient::clientId() const
 {
     if (!m_settings.clientId.isEmpty())
         return m_settings.clientId;
-    QString id = QStringLiteral("%1-%2-%3-%4")
-                         .arg(QCoreApplication::applicationName(), QHostInfo::localHostName())
-                         .arg(QCoreApplication::applicationPid())
-                         .arg(m_instance);
-    // One topic level (viewers publish their presence under it).
-    for (QChar &c : id) {
-        if (c == QLatin1Char('/') || c == QLatin1Char('+') || c == QLatin1Char('#') || c.isSpace())
-            c = QLatin1Char('_');
-    }
-    return id.right(64);
+    return m_randomId;
 }
 
 void MqttClient::setWill(const QString &topic, const QByteArray &payload)
@@ -204,9 +206,14 @@ bool MqttClient::publish(const QString &topic, const QByteArray &payload, bool r
 
 void MqttClient::drainIncoming()
 {
+    // Bounded in time as well: a flood that keeps coming must not hold up a stop.
+    QElapsedTimer draining;
+    draining.start();
     m_inLibrary = true;
     int available = 0;
-    for (int i = 0; i < 100000 && m_socket >= 0 && ::ioctl(m_socket, FIONREAD, &available) == 0 && available > 0; ++i) {
+    for (int i = 0; i < 100000 && draining.elapsed() < 1000 && m_socket >= 0
+         && ::ioctl(m_socket, FIONREAD, &available) == 0 && available > 0;
+         ++i) {
         if (mosquitto_loop_read(m_mosq, 1) != MOSQ_ERR_SUCCESS)
             break;
     }
@@ -362,9 +369,16 @@ void MqttClient::onDisconnect(mosquitto *, void *self, int rc)
 
 void MqttClient::onMessage(mosquitto *, void *self, const mosquitto_message *message)
 {
-    emit static_cast<MqttClient *>(self)->messageReceived(
-            QString::fromUtf8(message->topic),
-            QByteArray(static_cast<const char *>(message->payload), message->payloadlen), message->retain);
+    auto *client = static_cast<MqttClient *>(self);
+    if (client->m_maximumPayload > 0 && message->payloadlen > client->m_maximumPayload) {
+        // Not even copied: the library frees it when this returns.
+        ++client->m_oversize;
+        emit client->oversizeMessage(QString::fromUtf8(message->topic), message->payloadlen);
+        return;
+    }
+    emit client->messageReceived(QString::fromUtf8(message->topic),
+                                 QByteArray(static_cast<const char *>(message->payload), message->payloadlen),
+                                 message->retain);
 }
 
 void MqttClient::onPublish(mosquitto *, void *self, int messageId)

@@ -53,9 +53,17 @@ public:
     // Ends a subscription (also for later reconnects).
     void unsubscribe(const QString &filter);
 
-    // The settings' client id, or one made from the program's name, the host, the process
-    // and a count (unique within the process: a broker drops a client whose id comes again).
+    // The settings' client id, or the program's name and 64 random bits, made once per
+    // client: a broker drops a client whose id another connection takes, so an id must
+    // not be guessable, and it is never published (README, "Client ids").
     QString clientId() const;
+    // "PREFIX-" and 16 random hex digits, from the system's random source.
+    static QString randomId(const QString &prefix);
+
+    // Messages with a larger payload are dropped unread by the callers (counted and said
+    // once): a flood of huge retained messages must not fill the program's memory. 0: no limit.
+    void setMaximumPayload(int bytes) { m_maximumPayload = bytes; }
+    quint64 oversizeDropped() const { return m_oversize; }
 
     State state() const { return m_state; }
     bool isConnected() const { return m_state == State::Connected; }
@@ -76,6 +84,8 @@ signals:
     void messageReceived(const QString &topic, const QByteArray &payload, bool retained);
     // The broker acknowledged a message of QoS 1 (or a QoS 0 message was sent).
     void delivered(int messageId);
+    // A message over setMaximumPayload() was dropped (its topic and size).
+    void oversizeMessage(const QString &topic, qint64 bytes);
 
 private:
     static void onConnect(mosquitto *, void *self, int rc);
@@ -113,7 +123,9 @@ private:
     int m_longestDelayMs = 10000;
     int m_delayMs = 250;
     quint64 m_published = 0;
-    int m_instance = 0;
+    QString m_randomId;
+    int m_maximumPayload = 0;
+    quint64 m_oversize = 0;
 };
 
 } // namespace jumo

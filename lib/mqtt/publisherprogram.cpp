@@ -81,6 +81,9 @@ std::optional<int> PublisherProgram::run(const QStringList &arguments)
                       tr("family:entries")});
     parser.addOption({QStringLiteral("heartbeat"), tr("Heartbeat interval in ms (default 1000)."), tr("ms"),
                       QStringLiteral("1000")});
+    parser.addOption({QStringLiteral("take-over"),
+                      tr("Start even when a station of this name is online at the broker: that publisher stops "
+                         "(without it, this one refuses to start, exit code 2).")});
 
     QStringList withProgram = arguments;
     withProgram.prepend(QStringLiteral("jumo-publisher"));
@@ -240,14 +243,45 @@ std::optional<int> PublisherProgram::run(const QStringList &arguments)
 
     m_publisher = std::make_unique<StationPublisher>(*broker, prefix, station);
     m_publisher->setHeartbeatInterval(heartbeat);
-    if (const std::optional<int> code = openLines(config->lines))
-        return code;
-    connect(m_publisher.get(), &StationPublisher::stopped, this, [this] { emit finished(0); });
+    connect(m_publisher.get(), &StationPublisher::stopped, this, [this] { emit finished(m_stopExitCode); });
+    connect(m_publisher.get(), &StationPublisher::takenOver, this, [this, station] {
+        m_err << tr("another publisher took over station %1 (--take-over): stopped").arg(station) << Qt::endl;
+        emit finished(nameTakenExitCode);
+    });
+    m_lineConfigs = config->lines;
+    m_takeOver = parser.isSet(QStringLiteral("take-over"));
+    // Nothing is opened or published before the name is known to be free: a second
+    // publisher of one name would poll the same line and clear the other's devices.
+    m_nameCheck = std::make_unique<NameCheck>(*broker, TopicScheme(prefix), station);
+    connect(m_nameCheck.get(), &NameCheck::finished, this, [this, station](bool online) {
+        m_nameCheck.release()->deleteLater();
+        if (online && !m_takeOver) {
+            m_err << tr("a station named %1 is online at %2: give this one another --name, or --take-over to "
+                        "replace it")
+                             .arg(station, m_publisher->client().settings().url())
+                  << Qt::endl;
+            emit finished(nameTakenExitCode);
+            return;
+        }
+        if (online)
+            qCWarning(lcMqtt).noquote() << "taking over station" << station << "from the publisher online under its name";
+        begin();
+    });
+    m_nameCheck->start();
+    return std::nullopt;
+}
+
+void PublisherProgram::begin()
+{
+    if (const std::optional<int> code = openLines(m_lineConfigs)) {
+        emit finished(*code);
+        return;
+    }
+    QString error;
     if (!m_publisher->start(&error)) {
         m_err << error << Qt::endl;
-        return 1;
+        emit finished(1);
     }
-    return std::nullopt;
 }
 
 std::optional<int> PublisherProgram::openLines(const QList<LineConfig> &lines)
@@ -291,14 +325,21 @@ void PublisherProgram::retryClosedLines()
         m_retry.stop();
 }
 
-void PublisherProgram::stop()
+void PublisherProgram::stop(int exitCode)
 {
     if (m_stopping)
         return;
     m_stopping = true;
+    m_stopExitCode = exitCode;
     m_retry.stop();
+    if (m_nameCheck) {
+        // Still checking the name: nothing was opened or published.
+        m_nameCheck.reset();
+        emit finished(exitCode);
+        return;
+    }
     if (!m_publisher) {
-        emit finished(0);
+        emit finished(exitCode);
         return;
     }
     qCInfo(lcMqtt).noquote() << "stopping";

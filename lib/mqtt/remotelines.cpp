@@ -3,6 +3,9 @@
 #include "mqtt/remotestation.h"
 
 #include <QLocale>
+#include <QRegularExpression>
+
+#include <limits>
 
 namespace jumo {
 
@@ -22,13 +25,19 @@ RemoteLines::RemoteLines(RemoteStation *station, QObject *parent) : QObject(pare
     connect(station, &RemoteStation::entriesUpdated, this, &RemoteLines::onEntriesUpdated);
     connect(station, &RemoteStation::conditionChanged, this,
             [this](DeviceId id, const DeviceCondition &) { onConditionChanged(id); });
+    connect(station, &RemoteStation::deviceRead, this, [this](DeviceId remote, qint64 goodMs) {
+        const Mirrored m = m_mirrored.value(remote);
+        if (m.line)
+            m.line->setReadTime(m.id, goodMs);
+    });
     connect(station, &RemoteStation::lineStateChanged, this,
             [this](const QString &stationName, const QString &line, LineState) {
-                // A line the station cleared is not made again just to say it is gone.
                 if (m_station->line(stationName, line))
                     ensureLine(stationName, line);
                 updateLine(stationName, line);
             });
+    connect(station, &RemoteStation::lineRemoved, this, &RemoteLines::removeLineIfGone);
+    connect(station, &RemoteStation::orderChanged, this, &RemoteLines::orderChanged);
     connect(station, &RemoteStation::stationChanged, this, &RemoteLines::onStationChanged);
     connect(station, &RemoteStation::connectionChanged, this, [this] {
         for (const QString &name : m_station->stations())
@@ -58,6 +67,54 @@ QString RemoteLines::stationOf(const MirroredLine *line) const
     return m_stationOf.value(line);
 }
 
+QList<MirroredLine *> RemoteLines::orderedLines() const
+{
+    QList<MirroredLine *> ordered = lines();
+    // The rank of a line within its station: as its status lists the lines, then as its
+    // device order first names them, then by name.
+    auto rank = [this](const MirroredLine *line) {
+        const RemoteStationState *s = m_station->station(stationOf(line));
+        qsizetype at = s ? s->status.lines.indexOf(line->name()) : -1;
+        if (at < 0 && s) {
+            const qsizetype inOrder = s->order.indexOf(QRegularExpression(
+                    QStringLiteral("^%1/").arg(QRegularExpression::escape(line->name()))));
+            at = inOrder < 0 ? -1 : 10000 + inOrder;
+        }
+        return at < 0 ? std::numeric_limits<qsizetype>::max() : at;
+    };
+    std::stable_sort(ordered.begin(), ordered.end(), [&](const MirroredLine *a, const MirroredLine *b) {
+        const QString sa = stationOf(a);
+        const QString sb = stationOf(b);
+        if (sa != sb)
+            return sa < sb;
+        const qsizetype ra = rank(a);
+        const qsizetype rb = rank(b);
+        return ra != rb ? ra < rb : a->name() < b->name();
+    });
+    return ordered;
+}
+
+QList<DeviceId> RemoteLines::orderedDevices(const MirroredLine *line) const
+{
+    QList<DeviceId> ordered = line->devices();
+    const RemoteStationState *s = m_station->station(stationOf(line));
+    const QStringList order = s ? s->order : QStringList();
+    auto rank = [&](DeviceId id) {
+        const qsizetype at = order.indexOf(line->name() + QLatin1Char('/') + line->deviceName(id));
+        return at < 0 ? std::numeric_limits<qsizetype>::max() : at;
+    };
+    std::stable_sort(ordered.begin(), ordered.end(), [&](DeviceId a, DeviceId b) {
+        const qsizetype ra = rank(a);
+        const qsizetype rb = rank(b);
+        if (ra != rb)
+            return ra < rb;
+        if (line->deviceAddress(a) != line->deviceAddress(b))
+            return line->deviceAddress(a) < line->deviceAddress(b);
+        return line->deviceName(a) < line->deviceName(b);
+    });
+    return ordered;
+}
+
 MirroredLine *RemoteLines::ensureLine(const QString &station, const QString &line)
 {
     if (MirroredLine *known = m_lineByKey.value(keyOf(station, line)))
@@ -68,26 +125,44 @@ MirroredLine *RemoteLines::ensureLine(const QString &station, const QString &lin
     m_stationOf.insert(mirrored, station);
     updateLine(station, line);
     emit lineAdded(mirrored);
+    emit orderChanged();
     return mirrored;
+}
+
+void RemoteLines::removeLineIfGone(const QString &station, const QString &line)
+{
+    MirroredLine *mirrored = m_lineByKey.value(keyOf(station, line));
+    // A line goes once the station has cleared it and every device on it: devices first.
+    if (!mirrored || m_station->line(station, line) || !mirrored->devices().isEmpty())
+        return;
+    emit lineRemoving(mirrored);
+    m_lineByKey.remove(keyOf(station, line));
+    m_stationOf.remove(mirrored);
+    for (auto it = m_lines.begin(); it != m_lines.end(); ++it) {
+        if (it->get() == mirrored) {
+            it->release()->deleteLater();
+            m_lines.erase(it);
+            break;
+        }
+    }
+    emit orderChanged();
 }
 
 void RemoteLines::onDeviceAdded(DeviceId remote)
 {
     const RemoteDevice *d = m_station->device(remote);
-    if (!d || m_mirrored.contains(remote))
+    if (!d || !d->map || m_mirrored.contains(remote))
         return;
-    if (!d->map) {
-        emit unknownFamily(d->station, d->line, d->name);
-        return;
-    }
     MirroredLine *line = ensureLine(d->station, d->line);
     const DeviceId id = line->addDevice(d->map, quint8(d->address));
     m_mirrored.insert(remote, {line, id});
+    m_remoteOf.insert(id, remote);
     emit deviceAdded(line, id);
     onConditionChanged(remote);
     const QStringList ids = m_station->entryIds(remote);
     if (!ids.isEmpty())
         onEntriesUpdated(remote, ids);
+    emit orderChanged();
 }
 
 void RemoteLines::onDeviceRemoved(DeviceId remote)
@@ -95,8 +170,13 @@ void RemoteLines::onDeviceRemoved(DeviceId remote)
     const Mirrored m = m_mirrored.take(remote);
     if (!m.line)
         return;
+    m_remoteOf.remove(m.id);
     emit deviceRemoving(m.line, m.id);
     m.line->removeDevice(m.id);
+    const QString station = stationOf(m.line);
+    const QString name = m.line->name();
+    emit orderChanged();
+    removeLineIfGone(station, name);
 }
 
 void RemoteLines::onEntriesUpdated(DeviceId remote, const QStringList &ids)
@@ -120,10 +200,20 @@ void RemoteLines::onConditionChanged(DeviceId remote)
     if (!m.line || !d)
         return;
     DeviceCondition condition = d->condition;
-    const QString silence = silenceReason(d->station);
-    if (!silence.isEmpty()) {
-        condition.state = DeviceCondition::State::LineLost;
-        condition.detail = silence;
+    const Silence silence = silenceOf(d->station);
+    using State = DeviceCondition::State;
+    if (silence.kind == Silence::Kind::Waiting && m.line->condition(m.id).state == State::Disconnected) {
+        // Not seen live yet (the viewer has just started): nothing was lost.
+        condition = {State::Disconnected, silence.since, silence.reason};
+    } else if (silence.kind != Silence::Kind::Live) {
+        condition = {State::LineLost, silence.since, silence.reason};
+    } else if (m.line->condition(m.id).state == State::LineLost) {
+        // Live again after a restart: a device the new run does not have (its order,
+        // published before its "online", leaves it out) still has its last run's retained
+        // condition until the station clears its topics. It leaves lost, never restored.
+        const RemoteStationState *s = m_station->station(d->station);
+        if (s && !s->order.isEmpty() && !s->order.contains(d->line + QLatin1Char('/') + d->name))
+            return;
     }
     m.line->setCondition(m.id, condition);
 }
@@ -139,6 +229,7 @@ void RemoteLines::onStationChanged(const QString &station)
         if (d && d->station == station)
             onConditionChanged(it.key());
     }
+    emit orderChanged();
 }
 
 void RemoteLines::updateLine(const QString &station, const QString &line)
@@ -146,9 +237,13 @@ void RemoteLines::updateLine(const QString &station, const QString &line)
     MirroredLine *mirrored = m_lineByKey.value(keyOf(station, line));
     if (!mirrored)
         return;
-    const QString silence = silenceReason(station);
-    if (!silence.isEmpty()) {
-        mirrored->setState(LineState::Lost, silence);
+    const Silence silence = silenceOf(station);
+    if (silence.kind == Silence::Kind::Waiting && mirrored->state() != LineState::Lost) {
+        mirrored->setState(LineState::Disconnected, silence.reason);
+        return;
+    }
+    if (silence.kind != Silence::Kind::Live) {
+        mirrored->setState(LineState::Lost, silence.reason);
         return;
     }
     const LineMessage *published = m_station->line(station, line);
@@ -159,21 +254,27 @@ void RemoteLines::updateLine(const QString &station, const QString &line)
     mirrored->setState(published->state, published->error);
 }
 
-QString RemoteLines::silenceReason(const QString &station) const
+RemoteLines::Silence RemoteLines::silenceOf(const QString &station) const
 {
-    if (!m_station->isConnected())
-        return tr("the broker cannot be reached: values are the last ones received");
     if (m_station->isLive(station))
         return {};
     const RemoteStationState *s = m_station->station(station);
+    const QDateTime since = s && s->lostSince.isValid() ? s->lostSince : QDateTime::currentDateTime();
+    if (!m_station->isConnected())
+        return {Silence::Kind::Lost, tr("the broker cannot be reached: values are the last ones received"), since};
     if (!s || !s->statusKnown)
-        return tr("station %1 has not said that it is online").arg(station);
+        return {Silence::Kind::Waiting, tr("station %1 has not said that it is online").arg(station), since};
     if (!s->status.online)
-        return s->status.reason == QLatin1String("stopped")
-                ? tr("station %1 was stopped").arg(station)
-                : tr("station %1 is offline (%2)").arg(station, s->status.reason);
-    return tr("station %1 has not been heard for %2 s")
-            .arg(station, QLocale().toString(m_station->silenceLimitMs() / 1000.0, 'g', 3));
+        return {Silence::Kind::Lost,
+                s->status.reason == QLatin1String("stopped") ? tr("station %1 was stopped").arg(station)
+                                                             : tr("station %1 is offline (%2)").arg(station, s->status.reason),
+                since};
+    if (s->silent)
+        return {Silence::Kind::Lost,
+                tr("station %1 has not been heard for %2 s")
+                        .arg(station, QLocale().toString(m_station->silenceLimitMs() / 1000.0, 'g', 3)),
+                since};
+    return {Silence::Kind::Waiting, tr("receiving the state of station %1").arg(station), since};
 }
 
 } // namespace jumo

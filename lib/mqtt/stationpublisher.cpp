@@ -15,9 +15,11 @@ namespace jumo {
 StationPublisher::StationPublisher(const MqttSettings &broker, const QString &prefix, const QString &station,
                                    QObject *parent)
     : QObject(parent), m_scheme(prefix), m_station(station),
-      m_sweep(broker, m_scheme, station, [this](const TopicScheme::Topic &topic) { return owns(topic); })
+      m_sweep(broker, m_scheme, station, [this](const TopicScheme::Topic &topic) { return owns(topic); }),
+      m_guard(broker, m_scheme, station, [this](const TopicScheme::Topic &topic) { return owns(topic); })
 {
     m_client.setSettings(broker);
+    m_uptime.start();
     m_heartbeat.setInterval(1000);
     connect(&m_heartbeat, &QTimer::timeout, this, [this] {
         const QByteArray payload = TopicScheme::heartbeatPayload(QDateTime::currentDateTimeUtc());
@@ -52,6 +54,15 @@ StationPublisher::StationPublisher(const MqttSettings &broker, const QString &pr
         if (left > 0)
             qCWarning(lcMqtt).noquote() << left << "retained topics an earlier run left are still there after" << passes
                                         << "passes (someone keeps publishing them?); the next connect tries again";
+    });
+    connect(&m_guard, &StationGuard::restoreRequested, this, &StationPublisher::restore);
+    connect(&m_guard, &StationGuard::otherPublisherOnline, this, &StationPublisher::stopTakenOver);
+    m_statusDue.setSingleShot(true);
+    m_statusDue.setInterval(2000);
+    connect(&m_statusDue, &QTimer::timeout, this, &StationPublisher::publishStatus);
+    connect(&m_guard, &StationGuard::countsChanged, this, [this] {
+        if (!m_statusDue.isActive())
+            m_statusDue.start();
     });
     connect(&m_client, &MqttClient::connected, this, &StationPublisher::onConnected);
     connect(&m_client, &MqttClient::disconnected, this, [this](const QString &reason) {
@@ -123,14 +134,25 @@ void StationPublisher::addLine(const QString &name, Bus *bus)
         }
         publishEntries(id, ids, false);
     });
-    line.connections << connect(bus, &Bus::conditionChanged, this, [this, bus](DeviceId id, const DeviceCondition &c) {
+    line.connections << connect(bus, &Bus::conditionChanged, this, [this, bus](DeviceId id, const DeviceCondition &) {
         if (!m_devices.contains(id)) {
             if (Line *l = lineOf(bus))
                 syncDevices(l->name);
             return;
         }
-        const Device &d = m_devices[id];
-        publish(m_scheme.deviceCondition(m_station, d.line, d.name), TopicScheme::conditionPayload(c));
+        publishCondition(id, false);
+    });
+    // A viewer shows the age of the last read, and the station publishes only changes:
+    // each device's last completed cycle goes into its condition, at most once per
+    // heartbeat interval.
+    line.connections << connect(bus, &Bus::pollCycleFinished, this, [this](DeviceId id) {
+        auto d = m_devices.find(id);
+        if (d == m_devices.end())
+            return;
+        d->cycle = QDateTime::currentDateTimeUtc();
+        const qint64 now = m_uptime.elapsed();
+        if (d->cycleSentMs < 0 || now - d->cycleSentMs >= m_heartbeat.interval())
+            publishCondition(id, true);
     });
     m_lines << line;
     publishLine(m_lines.last(), true);
@@ -152,6 +174,7 @@ void StationPublisher::removeLine(const QString &name)
         }
         clear(m_scheme.line(m_station, name));
         m_lines.removeAt(i);
+        publishOrder();
         publishStatus();
         return;
     }
@@ -159,11 +182,7 @@ void StationPublisher::removeLine(const QString &name)
 
 void StationPublisher::syncDevices(const QString &lineName)
 {
-    Line *line = nullptr;
-    for (Line &l : m_lines) {
-        if (l.name == lineName)
-            line = &l;
-    }
+    Line *line = lineNamed(lineName);
     if (!line || !line->bus)
         return;
     const QList<DeviceId> present = line->bus->devices();
@@ -191,6 +210,7 @@ void StationPublisher::syncDevices(const QString &lineName)
         m_devices.insert(id, d);
         publishDevice(id);
     }
+    publishOrder();
 }
 
 bool StationPublisher::start(QString *error)
@@ -205,6 +225,7 @@ bool StationPublisher::start(QString *error)
             *error = m_client.lastError();
         return false;
     }
+    m_guard.start(m_started);
     qCInfo(lcMqtt).noquote() << "station" << m_station << "publishing to" << m_client.settings().url() << "under"
                              << m_scheme.status(m_station).section(QLatin1Char('/'), 0, -2) + QStringLiteral("/");
     return true;
@@ -214,6 +235,8 @@ void StationPublisher::stop()
 {
     m_heartbeat.stop();
     m_sweep.stop();
+    m_guard.stop();
+    m_statusDue.stop();
     m_stopping = true;
     if (!m_client.isConnected()) {
         m_stopSignalled = true;
@@ -262,6 +285,7 @@ void StationPublisher::publishAll()
         publishLine(line, true);
     for (auto it = m_devices.begin(); it != m_devices.end(); ++it)
         publishDevice(it.key());
+    publishOrder();
     publishStatus();
     emit statePublished(m_messages);
 }
@@ -271,7 +295,9 @@ void StationPublisher::publishStatus()
     if (m_stopping)
         return;
     const QString software = QStringLiteral("%1 %2").arg(QCoreApplication::applicationName(), QStringLiteral(JUMO_VERSION));
-    publish(m_scheme.status(m_station), TopicScheme::statusOnline(software, m_started, lines()));
+    publish(m_scheme.status(m_station), TopicScheme::statusOnline(software, m_started, lines(),
+                                                                  qint64(m_guard.restoredCount()),
+                                                                  qint64(m_guard.clearedCount())));
 }
 
 void StationPublisher::publishLine(Line &line, bool force)
@@ -293,17 +319,111 @@ void StationPublisher::publishLine(Line &line, bool force)
 void StationPublisher::publishDevice(DeviceId id)
 {
     Device &d = m_devices[id];
-    Line *line = nullptr;
-    for (Line &l : m_lines) {
-        if (l.name == d.line)
-            line = &l;
-    }
+    Line *line = lineNamed(d.line);
     if (!line || !line->bus)
         return;
     publish(m_scheme.deviceInfo(m_station, d.line, d.name),
             TopicScheme::deviceInfoPayload(d.line, *d.map, line->bus->deviceAddress(id)));
-    publish(m_scheme.deviceCondition(m_station, d.line, d.name), TopicScheme::conditionPayload(line->bus->condition(id)));
+    publishCondition(id, true);
     publishEntries(id, d.entries, true);
+}
+
+void StationPublisher::publishCondition(DeviceId id, bool force)
+{
+    auto it = m_devices.find(id);
+    if (it == m_devices.end())
+        return;
+    Device &d = *it;
+    Line *line = lineNamed(d.line);
+    if (!line || !line->bus || !m_client.isConnected())
+        return;
+    const DeviceCondition condition = line->bus->condition(id);
+    // A bus may say the same condition twice (a line loss reaches each device by two
+    // ways): once is news, twice is noise.
+    const QByteArray key = TopicScheme::conditionPayload(condition);
+    if (!force && key == d.condition)
+        return;
+    d.condition = key;
+    if (d.cycle.isValid())
+        d.cycleSentMs = m_uptime.elapsed();
+    publish(m_scheme.deviceCondition(m_station, d.line, d.name), TopicScheme::conditionPayload(condition, d.cycle));
+}
+
+void StationPublisher::publishOrder()
+{
+    if (m_stopping)
+        return;
+    QStringList order;
+    for (const Line &line : std::as_const(m_lines)) {
+        if (!line.bus)
+            continue;
+        for (DeviceId id : line.bus->devices()) {
+            if (const auto d = m_devices.constFind(id); d != m_devices.cend())
+                order << line.name + QLatin1Char('/') + d->name;
+        }
+    }
+    publish(m_scheme.order(m_station), TopicScheme::orderPayload(order));
+}
+
+void StationPublisher::restore(const QString &topic)
+{
+    if (m_stopping)
+        return;
+    const std::optional<TopicScheme::Topic> parsed = m_scheme.parse(topic);
+    if (!parsed)
+        return;
+    using Kind = TopicScheme::Kind;
+    switch (parsed->kind) {
+    case Kind::Status:
+        publishStatus();
+        return;
+    case Kind::Order:
+        publishOrder();
+        return;
+    case Kind::Line:
+        for (Line &line : m_lines) {
+            if (line.name == parsed->line)
+                publishLine(line, true);
+        }
+        return;
+    case Kind::DeviceInfo:
+    case Kind::DeviceCondition:
+    case Kind::Value:
+        for (auto it = m_devices.cbegin(); it != m_devices.cend(); ++it) {
+            if (it->line != parsed->line || it->name != parsed->device)
+                continue;
+            if (parsed->kind == Kind::Value) {
+                publishEntries(it.key(), {parsed->entry}, true);
+            } else if (parsed->kind == Kind::DeviceCondition) {
+                publishCondition(it.key(), true);
+            } else {
+                const Line *line = lineNamed(it->line);
+                if (line && line->bus)
+                    publish(topic, TopicScheme::deviceInfoPayload(it->line, *it->map, line->bus->deviceAddress(it.key())));
+            }
+            return;
+        }
+        return;
+    default:
+        return;
+    }
+}
+
+void StationPublisher::stopTakenOver()
+{
+    if (m_stopping)
+        return;
+    qCWarning(lcMqtt).noquote() << "another publisher said it is station" << m_station << "at"
+                                << m_client.settings().url() << "(started with --take-over): stopping";
+    // Its status stands: no "stopped" over it, and a clean disconnect leaves no will.
+    m_stopping = true;
+    m_stopSignalled = true;
+    m_heartbeat.stop();
+    m_sweep.stop();
+    m_guard.stop();
+    m_statusDue.stop();
+    m_client.disconnectFromBroker();
+    emit takenOver();
 }
 
 void StationPublisher::publishEntries(DeviceId id, const QStringList &entryIds, bool force)
@@ -314,11 +434,7 @@ void StationPublisher::publishEntries(DeviceId id, const QStringList &entryIds, 
     if (it == m_devices.end())
         return;
     Device &d = *it;
-    Line *line = nullptr;
-    for (Line &l : m_lines) {
-        if (l.name == d.line)
-            line = &l;
-    }
+    Line *line = lineNamed(d.line);
     if (!line || !line->bus)
         return;
     const Bus &bus = *line->bus;
@@ -355,7 +471,9 @@ bool StationPublisher::owns(const TopicScheme::Topic &topic) const
     switch (topic.kind) {
     case TopicScheme::Kind::Status:
     case TopicScheme::Kind::Heartbeat:
+    case TopicScheme::Kind::Order:
     case TopicScheme::Kind::Viewer:
+    case TopicScheme::Kind::Probe:
         return true;   // the station's own, or a viewer's
     case TopicScheme::Kind::Line:
         return std::any_of(m_lines.cbegin(), m_lines.cend(), [&](const Line &l) { return l.name == topic.line; });
@@ -375,8 +493,18 @@ void StationPublisher::clear(const QString &topic)
 {
     // An empty retained message removes the retained one; a broker that cannot be
     // reached now gets it on the next connect.
+    m_guard.expect(topic, QByteArray());
     if (!m_client.publish(topic, QByteArray(), true) && !m_pendingClears.contains(topic))
         m_pendingClears << topic;
+}
+
+StationPublisher::Line *StationPublisher::lineNamed(const QString &name)
+{
+    for (Line &l : m_lines) {
+        if (l.name == name)
+            return &l;
+    }
+    return nullptr;
 }
 
 StationPublisher::Line *StationPublisher::lineOf(const Bus *bus)
@@ -393,6 +521,8 @@ void StationPublisher::publish(const QString &topic, const QByteArray &payload, 
     // After "stopped", nothing: a value published behind it would be the last word.
     if (m_stopping)
         return;
+    if (retain)
+        m_guard.expect(topic, payload);
     if (m_client.publish(topic, payload, retain))
         ++m_messages;
 }

@@ -8,9 +8,11 @@
 
 #include "mqtt/mqttclient.h"
 #include "mqtt/retainedsweep.h"
+#include "mqtt/stationguard.h"
 #include "mqtt/topicscheme.h"
 
 #include <QDateTime>
+#include <QElapsedTimer>
 #include <QHash>
 #include <QList>
 #include <QObject>
@@ -64,6 +66,9 @@ signals:
     // publisher runs under the same name, and the two overwrite each other's topics (and a
     // clean stop of either says the whole station is offline). Said once.
     void rivalHeard();
+    // Another publisher said "online" under this station's name (one started with
+    // --take-over): this one has stopped publishing, without a word on the status.
+    void takenOver();
 
 private:
     struct Device
@@ -74,6 +79,9 @@ private:
         QStringList entries;                 // what it publishes: what its bus polls, in map order
         QSet<QString> entrySet;
         QHash<QString, QString> published;   // entry id -> text and status last published
+        QByteArray condition;                // the condition last published, without its cycle
+        QDateTime cycle;                     // the end of its last poll cycle
+        qint64 cycleSentMs = -1;             // when a cycle was last published (monotonic)
     };
     struct Line
     {
@@ -90,6 +98,12 @@ private:
     void publishStatus();
     void publishLine(Line &line, bool force);
     void publishDevice(DeviceId id);
+    // force: also when only the cycle is new.
+    void publishCondition(DeviceId id, bool force);
+    void publishOrder();
+    // Another client wrote on one of the station's topics: its own message again.
+    void restore(const QString &topic);
+    void stopTakenOver();
     void publishEntries(DeviceId id, const QStringList &entryIds, bool force);
     void forgetDevice(DeviceId id);
     // What this run publishes (or, status, heartbeat and viewers, leaves alone): after each
@@ -97,6 +111,7 @@ private:
     bool owns(const TopicScheme::Topic &topic) const;
     void clear(const QString &topic);
     Line *lineOf(const Bus *bus);
+    Line *lineNamed(const QString &name);
     void publish(const QString &topic, const QByteArray &payload, bool retain = true);
 
     MqttClient m_client;
@@ -118,6 +133,9 @@ private:
     QString m_saidLoss;            // the broker's last reason logged: a retry every 10 s does not repeat it
     int m_messages = 0;            // counting the messages of one full publication
     RetainedSweep m_sweep;
+    StationGuard m_guard;
+    QTimer m_statusDue;
+    QElapsedTimer m_uptime;            // the guard's counts go into the status, not more than every 2 s
 };
 
 } // namespace jumo

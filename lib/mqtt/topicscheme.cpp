@@ -67,6 +67,11 @@ QString TopicScheme::heartbeat(const QString &station) const
     return QStringLiteral("%1/%2/heartbeat").arg(m_prefix, station);
 }
 
+QString TopicScheme::order(const QString &station) const
+{
+    return QStringLiteral("%1/%2/order").arg(m_prefix, station);
+}
+
 QString TopicScheme::line(const QString &station, const QString &line) const
 {
     return QStringLiteral("%1/%2/lines/%3").arg(m_prefix, station, line);
@@ -88,9 +93,14 @@ QString TopicScheme::value(const QString &station, const QString &line, const QS
     return QStringLiteral("%1/%2/devices/%3/%4/values/%5").arg(m_prefix, station, line, device, entry);
 }
 
-QString TopicScheme::viewer(const QString &station, const QString &clientId) const
+QString TopicScheme::viewer(const QString &station, const QString &viewerId) const
 {
-    return QStringLiteral("%1/%2/viewers/%3").arg(m_prefix, station, clientId);
+    return QStringLiteral("%1/%2/viewers/%3").arg(m_prefix, station, viewerId);
+}
+
+QString TopicScheme::probe(const QString &station, const QString &probeId) const
+{
+    return QStringLiteral("%1/%2/probe/%3").arg(m_prefix, station, probeId);
 }
 
 QString TopicScheme::stationFilter(const QString &station) const
@@ -116,6 +126,10 @@ std::optional<TopicScheme::Topic> TopicScheme::parse(const QString &topic) const
         t.kind = Kind::Heartbeat;
         return t;
     }
+    if (levels.size() == 2 && what == QLatin1String("order")) {
+        t.kind = Kind::Order;
+        return t;
+    }
     if (levels.size() == 3 && what == QLatin1String("lines") && !levels[2].isEmpty()) {
         t.kind = Kind::Line;
         t.line = levels[2];
@@ -123,6 +137,11 @@ std::optional<TopicScheme::Topic> TopicScheme::parse(const QString &topic) const
     }
     if (levels.size() == 3 && what == QLatin1String("viewers") && !levels[2].isEmpty()) {
         t.kind = Kind::Viewer;
+        t.viewer = levels[2];
+        return t;
+    }
+    if (levels.size() == 3 && what == QLatin1String("probe") && !levels[2].isEmpty()) {
+        t.kind = Kind::Probe;
         t.viewer = levels[2];
         return t;
     }
@@ -228,12 +247,16 @@ ReadError TopicScheme::readErrorFromStatus(const QString &status, int *exception
     return errors.value(status, ReadError::None);
 }
 
-QByteArray TopicScheme::statusOnline(const QString &software, const QDateTime &started, const QStringList &lines)
+QByteArray TopicScheme::statusOnline(const QString &software, const QDateTime &started, const QStringList &lines,
+                                     qint64 restored, qint64 cleared)
 {
-    return compact({{"state", "online"},
-                    {"software", software},
-                    {"started", timeOrNull(started)},
-                    {"lines", QJsonArray::fromStringList(lines)}});
+    QJsonObject o{{"state", "online"},
+                  {"software", software},
+                  {"started", timeOrNull(started)},
+                  {"lines", QJsonArray::fromStringList(lines)}};
+    if (restored > 0 || cleared > 0)
+        o.insert(QStringLiteral("foreign"), QJsonObject{{"restored", restored}, {"cleared", cleared}});
+    return compact(o);
 }
 
 QByteArray TopicScheme::statusOffline(const QString &reason)
@@ -261,11 +284,19 @@ QByteArray TopicScheme::deviceInfoPayload(const QString &line, const RegisterMap
     return compact({{"line", line}, {"family", map.family}, {"address", address}, {"model", map.name}});
 }
 
-QByteArray TopicScheme::conditionPayload(const DeviceCondition &condition)
+QByteArray TopicScheme::conditionPayload(const DeviceCondition &condition, const QDateTime &cycle)
 {
-    return compact({{"state", conditionName(condition.state)},
-                    {"since", timeOrNull(condition.since)},
-                    {"detail", condition.detail}});
+    QJsonObject o{{"state", conditionName(condition.state)},
+                  {"since", timeOrNull(condition.since)},
+                  {"detail", condition.detail}};
+    if (cycle.isValid())
+        o.insert(QStringLiteral("cycle"), timeText(cycle));
+    return compact(o);
+}
+
+QByteArray TopicScheme::orderPayload(const QStringList &devices)
+{
+    return compact({{"devices", QJsonArray::fromStringList(devices)}});
 }
 
 QByteArray TopicScheme::valuePayload(const EntryState &state, const RegisterEntry &entry, const QDateTime &readTime)
@@ -321,6 +352,9 @@ std::optional<StationStatusMessage> TopicScheme::parseStatus(const QByteArray &p
     m.started = parseTime(o->value(QLatin1String("started")).toString());
     for (const QJsonValue &line : o->value(QLatin1String("lines")).toArray())
         m.lines << line.toString();
+    const QJsonObject foreign = o->value(QLatin1String("foreign")).toObject();
+    m.restored = std::max<qint64>(0, foreign.value(QLatin1String("restored")).toInteger());
+    m.cleared = std::max<qint64>(0, foreign.value(QLatin1String("cleared")).toInteger());
     return m;
 }
 
@@ -367,7 +401,7 @@ std::optional<DeviceInfoMessage> TopicScheme::parseDeviceInfo(const QByteArray &
     return m;
 }
 
-std::optional<DeviceCondition> TopicScheme::parseCondition(const QByteArray &payload)
+std::optional<ConditionMessage> TopicScheme::parseCondition(const QByteArray &payload)
 {
     const auto o = objectOf(payload);
     if (!o)
@@ -375,11 +409,31 @@ std::optional<DeviceCondition> TopicScheme::parseCondition(const QByteArray &pay
     const auto state = conditionFromName(o->value(QLatin1String("state")).toString());
     if (!state)
         return std::nullopt;
-    DeviceCondition c;
-    c.state = *state;
-    c.since = parseTime(o->value(QLatin1String("since")).toString());
-    c.detail = o->value(QLatin1String("detail")).toString();
-    return c;
+    ConditionMessage m;
+    m.condition.state = *state;
+    m.condition.since = parseTime(o->value(QLatin1String("since")).toString());
+    m.condition.detail = o->value(QLatin1String("detail")).toString();
+    m.cycle = parseTime(o->value(QLatin1String("cycle")).toString());
+    return m;
+}
+
+std::optional<QStringList> TopicScheme::parseOrder(const QByteArray &payload, int maxDevices)
+{
+    const auto o = objectOf(payload);
+    if (!o)
+        return std::nullopt;
+    const QJsonArray devices = o->value(QLatin1String("devices")).toArray();
+    if (devices.size() > maxDevices)
+        return std::nullopt;
+    QStringList names;
+    for (const QJsonValue &device : devices) {
+        const QString name = device.toString();
+        const qsizetype slash = name.indexOf(QLatin1Char('/'));
+        if (slash < 0 || !isTopicLevel(name.left(slash)) || !isTopicLevel(name.mid(slash + 1)))
+            return std::nullopt;
+        names << name;
+    }
+    return names;
 }
 
 std::optional<ValueMessage> TopicScheme::parseValue(const QByteArray &payload)
@@ -401,6 +455,25 @@ std::optional<ValueMessage> TopicScheme::parseValue(const QByteArray &payload)
     m.text = o->value(QLatin1String("text")).toString();
     m.unit = o->value(QLatin1String("unit")).toString();
     m.status = o->value(QLatin1String("status")).toString();
+    // Validity and status say the same thing twice: a message where they disagree was not
+    // made by a station (a current value "timeout" is no good value).
+    static const QStringList currentStatus = {QStringLiteral("ok"), QStringLiteral("underrange"),
+                                              QStringLiteral("overrange"), QStringLiteral("invalid")};
+    switch (m.validity) {
+    case Validity::Current:
+        if (!currentStatus.contains(m.status))
+            return std::nullopt;
+        break;
+    case Validity::Stale:
+        if (m.status != QLatin1String("stale"))
+            return std::nullopt;
+        break;
+    case Validity::Unknown:
+        // "ok", "stale" and words of no status map to no read error.
+        if (readErrorFromStatus(m.status, nullptr) == ReadError::None)
+            return std::nullopt;
+        break;
+    }
     m.error = m.validity == Validity::Unknown ? readErrorFromStatus(m.status, &m.exception) : ReadError::None;
     if (o->contains(QLatin1String("exception")))
         m.exception = o->value(QLatin1String("exception")).toInt();

@@ -25,6 +25,10 @@ struct StationStatusMessage
     QString software;
     QDateTime started;
     QStringList lines;
+    // Messages of other clients under the station that it undid: its own published again,
+    // or junk cleared (README, "Rogue clients").
+    qint64 restored = 0;
+    qint64 cleared = 0;
 };
 
 struct LineMessage
@@ -44,6 +48,12 @@ struct DeviceInfoMessage
     QString model;
 };
 
+struct ConditionMessage
+{
+    DeviceCondition condition;
+    QDateTime cycle;     // when the device's last poll cycle ended (invalid: not said)
+};
+
 struct ValueMessage
 {
     QJsonValue value;    // null when there is none to show
@@ -61,7 +71,7 @@ struct ValueMessage
 class TopicScheme
 {
 public:
-    enum class Kind { Status, Heartbeat, Line, DeviceInfo, DeviceCondition, Value, Viewer };
+    enum class Kind { Status, Heartbeat, Order, Line, DeviceInfo, DeviceCondition, Value, Viewer, Probe };
 
     // What a topic names, for a viewer's dispatch.
     struct Topic
@@ -71,7 +81,7 @@ public:
         QString line;
         QString device;   // "family@address"
         QString entry;
-        QString viewer;
+        QString viewer;   // a viewer's or a probe's id
     };
 
     explicit TopicScheme(const QString &prefix = QStringLiteral("jumo")) : m_prefix(prefix) { }
@@ -85,11 +95,16 @@ public:
 
     QString status(const QString &station) const;
     QString heartbeat(const QString &station) const;
+    // The station's devices in its order, "LINE/FAMILY@ADDRESS" (retained).
+    QString order(const QString &station) const;
     QString line(const QString &station, const QString &line) const;
     QString deviceInfo(const QString &station, const QString &line, const QString &device) const;
     QString deviceCondition(const QString &station, const QString &line, const QString &device) const;
     QString value(const QString &station, const QString &line, const QString &device, const QString &entry) const;
-    QString viewer(const QString &station, const QString &clientId) const;
+    QString viewer(const QString &station, const QString &viewerId) const;
+    // Where a viewer checks whether its user may publish into a station's tree: never
+    // retained, ignored by stations and viewers.
+    QString probe(const QString &station, const QString &probeId) const;
     // Everything of one station, or of every station when station is empty.
     QString stationFilter(const QString &station) const;
     std::optional<Topic> parse(const QString &topic) const;
@@ -106,12 +121,15 @@ public:
     // The inverse of EntryState::statusName() for what is not current.
     static ReadError readErrorFromStatus(const QString &status, int *exceptionCode);
 
-    static QByteArray statusOnline(const QString &software, const QDateTime &started, const QStringList &lines);
+    static QByteArray statusOnline(const QString &software, const QDateTime &started, const QStringList &lines,
+                                   qint64 restored = 0, qint64 cleared = 0);
     static QByteArray statusOffline(const QString &reason);
     static QByteArray heartbeatPayload(const QDateTime &time);
     static QByteArray linePayload(const QString &address, LineState state, const QDateTime &since, const QString &error);
     static QByteArray deviceInfoPayload(const QString &line, const RegisterMap &map, int address);
-    static QByteArray conditionPayload(const DeviceCondition &condition);
+    // cycle: when the device's last poll cycle ended (invalid: left out).
+    static QByteArray conditionPayload(const DeviceCondition &condition, const QDateTime &cycle = {});
+    static QByteArray orderPayload(const QStringList &devices);
     // readTime: the wall-clock time of the value's last good read (invalid: never).
     static QByteArray valuePayload(const EntryState &state, const RegisterEntry &entry, const QDateTime &readTime);
     static QByteArray viewerPayload(const QString &host);
@@ -121,8 +139,12 @@ public:
     static std::optional<QDateTime> parseHeartbeat(const QByteArray &payload);
     static std::optional<LineMessage> parseLine(const QByteArray &payload);
     static std::optional<DeviceInfoMessage> parseDeviceInfo(const QByteArray &payload);
-    static std::optional<DeviceCondition> parseCondition(const QByteArray &payload);
+    static std::optional<ConditionMessage> parseCondition(const QByteArray &payload);
+    // A value whose validity and status disagree ("current" with "timeout", "unknown" with
+    // "ok") is refused: it is no value a station publishes.
     static std::optional<ValueMessage> parseValue(const QByteArray &payload);
+    // At most maxDevices names, each "LINE/FAMILY@ADDRESS" with topic levels for both.
+    static std::optional<QStringList> parseOrder(const QByteArray &payload, int maxDevices);
 
 private:
     QString m_prefix;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QHash>
 #include <QProcess>
@@ -40,10 +41,26 @@ public:
     // free one, kept for restart().
     bool start(const QString &extraConfig = {}, const QString &listenerOptions = {})
     {
-        if (!m_dir.isValid())
-            return false;
         m_extra = extraConfig;
         m_listenerOptions = listenerOptions;
+        m_shipped.clear();
+        return launch();
+    }
+    // A whole configuration, as shipped (resources/mosquitto): its "listener 1883 ..."
+    // line gets the test's port, "log_type all" is added; relative file names are taken
+    // from this fixture's folder.
+    bool startConfig(const QString &configuration)
+    {
+        m_shipped = configuration;
+        return launch();
+    }
+    bool restart() { return launch(); }
+
+private:
+    bool launch()
+    {
+        if (!m_dir.isValid())
+            return false;
         if (m_port == 0) {
             QTcpServer probe;
             if (!probe.listen(QHostAddress::LocalHost))
@@ -53,12 +70,19 @@ public:
         QFile config(file(QStringLiteral("mosquitto.conf")));
         if (!config.open(QIODevice::WriteOnly))
             return false;
-        QByteArray text = "per_listener_settings true\npersistence false\nlog_dest stderr\nlog_type all\n";
+        QByteArray text;
         // As root, Mosquitto would become the user "mosquitto", who cannot read this folder.
         if (::geteuid() == 0)
             text += "user root\n";
-        text += QStringLiteral("listener %1 127.0.0.1\n").arg(m_port).toUtf8();
-        text += m_extra.isEmpty() ? QByteArray("allow_anonymous true\n") : m_extra.toUtf8();
+        if (!m_shipped.isEmpty()) {
+            QString shipped = m_shipped;
+            shipped.replace(QStringLiteral("listener 1883 127.0.0.1"), QStringLiteral("listener %1 127.0.0.1").arg(m_port));
+            text += shipped.toUtf8() + "\nlog_type all\n";
+        } else {
+            text += "per_listener_settings true\npersistence false\nlog_dest stderr\nlog_type all\n";
+            text += QStringLiteral("listener %1 127.0.0.1\n").arg(m_port).toUtf8();
+            text += m_extra.isEmpty() ? QByteArray("allow_anonymous true\n") : m_extra.toUtf8();
+        }
         config.write(text);
         config.close();
         const QString broker = findTool(QStringLiteral("mosquitto"));
@@ -68,6 +92,7 @@ public:
         }
         m_process.setProcessChannelMode(QProcess::MergedChannels);
         m_process.setStandardOutputFile(file(QStringLiteral("mosquitto.log")), QIODevice::Append);
+        m_process.setWorkingDirectory(m_dir.path());
         m_process.start(broker, {QStringLiteral("-c"), config.fileName()});
         if (!m_process.waitForStarted(10000))
             return false;
@@ -82,7 +107,8 @@ public:
         qWarning().noquote() << "mosquitto did not start:" << log();
         return false;
     }
-    bool restart() { return start(m_extra, m_listenerOptions); }
+
+public:
     // SIGKILL to our broker's PID: no goodbye to anyone, nothing saved.
     void kill()
     {
@@ -103,6 +129,7 @@ private:
     quint16 m_port = 0;
     QString m_extra;
     QString m_listenerOptions;
+    QString m_shipped;
 };
 
 // mosquitto_sub as a fresh, independent subscriber: the retained messages under a filter
@@ -116,7 +143,13 @@ inline QHash<QString, QByteArray> retainedMessages(quint16 port, const QString &
                      QStringLiteral("-v"), QStringLiteral("-t"), filter, QStringLiteral("--retained-only"),
                      QStringLiteral("-W"), QString::number(waitS)};
     sub.start(findTool(QStringLiteral("mosquitto_sub")), args + extra);
-    sub.waitForFinished((waitS + 10) * 1000);
+    // Waited for with the event loop running: a simulator in the test's own process
+    // answers the station's requests meanwhile. A blocking wait of seconds starved it,
+    // the station's reads timed out and its values were published as unknown.
+    QElapsedTimer waited;
+    waited.start();
+    while (sub.state() != QProcess::NotRunning && waited.elapsed() < (waitS + 10) * 1000)
+        QTest::qWait(20);
     QHash<QString, QByteArray> messages;
     for (const QByteArray &line : sub.readAllStandardOutput().split('\n')) {
         const qsizetype space = line.indexOf(' ');

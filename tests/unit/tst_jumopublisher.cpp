@@ -1,6 +1,7 @@
 // jumo-publisher's command line, in-process: what it refuses, and that it says why.
 #include "mqtt/publisherprogram.h"
 
+#include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -14,6 +15,7 @@ private slots:
     void refused_data();
     void refused();
     void passwordFileMissing();
+    void serviceIsNotRestartedWhenTheNameIsTaken();
 };
 
 void TstJumoPublisher::refused_data()
@@ -109,6 +111,17 @@ void TstJumoPublisher::passwordFileMissing()
                           "/dev/null", "--device", "ipc300@1"}),
              std::optional<int>(2));
     QVERIFY2(err.contains(QLatin1String("cannot read the password file")), qPrintable(err));
+}
+
+void TstJumoPublisher::serviceIsNotRestartedWhenTheNameIsTaken()
+{
+    // A station of the name online: starting again and again changes nothing.
+    QFile unit(QStringLiteral(JUMO_SYSTEMD_UNIT));
+    QVERIFY(unit.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(unit.readAll());
+    QVERIFY(text.contains(QStringLiteral("\nRestartPreventExitStatus=%1\n").arg(PublisherProgram::nameTakenExitCode)));
+    QVERIFY(text.contains(QLatin1String("\nRestart=on-failure\n")));
+    QVERIFY(text.contains(QLatin1String("--broker mqtt://publisher@")));   // the user of resources/mosquitto/jumo.acl
 }
 
 QTEST_GUILESS_MAIN(TstJumoPublisher)

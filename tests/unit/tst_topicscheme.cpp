@@ -252,9 +252,10 @@ void TstTopicScheme::stationMessages()
         DeviceCondition c{s, t, QStringLiteral("why")};
         const auto parsed = TopicScheme::parseCondition(TopicScheme::conditionPayload(c));
         QVERIFY(parsed);
-        QCOMPARE(parsed->state, s);
-        QCOMPARE(parsed->since, t);
-        QCOMPARE(parsed->detail, QStringLiteral("why"));
+        QCOMPARE(parsed->condition.state, s);
+        QCOMPARE(parsed->condition.since, t);
+        QCOMPARE(parsed->condition.detail, QStringLiteral("why"));
+        QVERIFY(!parsed->cycle.isValid());
     }
     QCOMPARE(json(TopicScheme::conditionPayload({S::LineLost, t, {}})).value("state").toString(),
              QStringLiteral("line_lost"));
