@@ -134,6 +134,7 @@ private:
             if (const RegisterEntry *e = map.entry(v.entry); e && v.label.isEmpty())
                 v.label = e->label;
         }
+        map.assignPollClasses();
         return map;
     }
 
@@ -517,7 +518,7 @@ private:
 
         checkKeys(o, {"address", "id", "label", "type", "bytes", "words", "access", "storage", "unit", "configuredUnit",
                       "decimals", "significantDigits", "group", "min", "max", "values", "bits", "activation", "action", "control", "restoreValue", "precondition",
-                      "reserved", "alias", "notes", "erratum", "default"},
+                      "reserved", "alias", "notes", "erratum", "default", "poll"},
                   where);
         e.address = parseHex16(o.value("address"), "address", where).value_or(0);
         e.id = requireString(o, "id", where);
@@ -597,6 +598,14 @@ private:
         e.action = optionalBool(o, "action", false, where);
         if (e.action && !e.isWritable())
             fail(where, tr("an action needs a writable entry"));
+        if (o.contains("poll")) {
+            const QString poll = optionalString(o, "poll", where);
+            e.pollOverride = pollClassFromName(poll);
+            if (!e.pollOverride)
+                fail(where, tr("unknown poll class '%1' (expected alarm, live or setting)").arg(poll.left(40)));
+            else if (!e.isReadable() || !e.alias.isEmpty())
+                fail(where, tr("'poll' is only for entries that are read (not write-only, not an alias)"));
+        }
 
         parseEnumValues(o, e, where);
         parseBits(o, e, where);
