@@ -790,8 +790,15 @@ void DeviceTile::keyPressEvent(QKeyEvent *event)
 void DeviceTile::showEvent(QShowEvent *event)
 {
     QWidget::showEvent(event);
+    m_values->setShown(this, true, m_map.faceplateEntries());
     if (m_dirty)
         refresh();
+}
+
+void DeviceTile::hideEvent(QHideEvent *event)
+{
+    QWidget::hideEvent(event);
+    m_values->setShown(this, false);
 }
 
 } // namespace jumo

@@ -78,7 +78,10 @@ signals:
     void activated(jumo::DeviceId device);
 
 protected:
+    // On screen, the faceplate's entries and the scales of its bars are read sooner (a
+    // class higher).
     void showEvent(QShowEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
     void mouseReleaseEvent(QMouseEvent *event) override;
     // The keyboard reaches each tile with Tab; Enter or Space opens the device.
     void keyPressEvent(QKeyEvent *event) override;

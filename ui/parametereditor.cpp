@@ -5,6 +5,7 @@
 #include "devicetile.h"
 #include "models/devicetitle.h"
 #include "models/parametereditmodel.h"
+#include "models/viewinterest.h"
 #include "parametervaluedelegate.h"
 #include "parameterwritepreview.h"
 #include "protocol/regularfile.h"
@@ -72,6 +73,7 @@ private:
 
 ParameterEditor::ParameterEditor(Bus *bus, DeviceId device, QWidget *parent)
     : QWidget(parent), m_bus(bus), m_device(device), m_model(new ParameterEditModel(bus, device, this)),
+      m_interest(new ViewInterest(bus, device, this)),
       m_filter(new QSortFilterProxyModel(this)), m_delegate(new ParameterValueDelegate(m_model, this)),
       m_transfer(new ParameterTransfer(bus, device, this)), m_tree(new QTreeView(this)), m_search(new QLineEdit(this)),
       m_noMatch(new QLabel(this)), m_eepromNote(new QLabel(this)), m_pendingLabel(new QLabel(this)),
@@ -618,6 +620,18 @@ void ParameterEditor::onWriteFinished(int, int, bool)
     m_stopReason.clear();
     updateActions();
     emit writeEnded();
+}
+
+void ParameterEditor::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    m_interest->setShown(this, true, m_model->entryIds());
+}
+
+void ParameterEditor::hideEvent(QHideEvent *event)
+{
+    QWidget::hideEvent(event);
+    m_interest->setShown(this, false, {});
 }
 
 } // namespace jumo

@@ -19,6 +19,7 @@ class QTreeView;
 namespace jumo {
 
 class ParameterEditModel;
+class ViewInterest;
 class ParameterTransfer;
 class ParameterValueDelegate;
 
@@ -58,6 +59,11 @@ signals:
     // A backup has been compared and its differences filled in, or refused.
     void backupLoaded();
 
+protected:
+    // While visible, the parameters are read as live values, not once a minute.
+    void showEvent(QShowEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
+
 private:
     void writeChanges(ParameterWritePreview *preview);
     void onEntryWritten(const QString &id, const WriteOutcome &outcome);
@@ -72,6 +78,7 @@ private:
     Bus *m_bus;
     DeviceId m_device;
     ParameterEditModel *m_model;
+    ViewInterest *m_interest;
     QSortFilterProxyModel *m_filter;
     ParameterValueDelegate *m_delegate;
     ParameterTransfer *m_transfer;

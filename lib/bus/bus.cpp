@@ -35,6 +35,12 @@ Bus::Bus(Clock *clock, LineConnection::TransportFactory transport, QObject *pare
     connect(&m_line, &LineConnection::resultReady, this, &Bus::onResult);
     connect(&m_identities, &DeviceIdentities::changed, this, &Bus::onIdentityChanged);
     m_lineSince = QDateTime::currentDateTime();
+    m_shown = std::make_unique<ShownViews>([this](DeviceId id, const QSet<QString> &shown) {
+        m_scheduler.setShown(id, shown);
+        m_store.setClasses(id, m_scheduler.entryClasses(id));
+        updateAllowance(id);
+        schedule(now());
+    });
 }
 
 void Bus::setIdentityCheck(const QList<std::shared_ptr<const RegisterMap>> &families)
@@ -73,6 +79,9 @@ void Bus::setSettings(const BusSettings &settings)
     m_settings = settings;
     const std::optional<LineAddress> address = LineAddress::parse(settings.portName, nullptr);
     m_lineKind = address ? address->kind : LineAddress::Kind::Serial;
+    m_scheduler.setLineFormat(settings.format);
+    for (DeviceId id : m_scheduler.devices())
+        m_store.setClasses(id, m_scheduler.entryClasses(id));
 }
 
 bool Bus::open()
@@ -150,6 +159,7 @@ DeviceId Bus::addDevice(std::shared_ptr<const RegisterMap> map, quint8 address)
     m_scheduler.addDevice(id, map, address, now());
     m_store.addDevice(id, map);
     m_store.setAllowance(id, initialAllowanceMs);
+    m_store.setClasses(id, m_scheduler.entryClasses(id));
     m_offlineSince.remove(id);
     for (const QString &e : m_scheduler.device(id)->plan.errors)
         qCWarning(lcBus).noquote() << e;
@@ -165,6 +175,7 @@ void Bus::removeDevice(DeviceId id)
         m_forgetAfterFlight << id;
     m_scheduler.removeDevice(id);
     m_store.removeDevice(id);
+    m_shown->forgetDevice(id);
     m_offlineSince.remove(id);
     m_identities.removeDevice(id);
 }
@@ -190,6 +201,7 @@ QString Bus::deviceName(DeviceId id) const
 void Bus::setPollEntries(DeviceId id, const QStringList &ids)
 {
     m_scheduler.setPollEntries(id, ids);
+    m_store.setClasses(id, m_scheduler.entryClasses(id));
     if (const Scheduler::DeviceInfo *d = m_scheduler.device(id)) {
         for (const QString &e : d->plan.errors)
             qCWarning(lcBus).noquote() << e;
@@ -230,6 +242,11 @@ void Bus::requestCycle(DeviceId id)
 const EntryState *Bus::entryState(DeviceId id, const QString &entryId) const
 {
     return m_store.state(id, entryId);
+}
+
+PollClass Bus::pollClass(DeviceId id, const QString &entryId) const
+{
+    return m_scheduler.entryClasses(id).value(entryId, PollClass::Live);
 }
 
 const DeviceStatistics *Bus::statistics(DeviceId id) const
@@ -315,13 +332,12 @@ void Bus::setOnline(DeviceId id, bool online)
 
 void Bus::updateAllowance(DeviceId id)
 {
-    const Scheduler::DeviceInfo *d = m_scheduler.device(id);
-    if (!d)
+    if (!m_scheduler.contains(id))
         return;
-    // Current for two cycles and a second: a value older than that was missed by a cycle
-    // that should have read it.
-    const qint64 expected = std::max<qint64>(d->intervalMs, qint64(d->lastCycleMs));
-    m_store.setAllowance(id, std::max<qint64>(2 * expected, 2000) + 1000);
+    // Current for about twice the age its class is read at, and a second: a value older
+    // than that was missed by a read that should have come.
+    for (PollClass c : {PollClass::Alarm, PollClass::Live, PollClass::Setting})
+        m_store.setAllowance(id, c, m_scheduler.allowanceMs(id, c));
 }
 
 double Bus::interFrameDelayMs() const
@@ -456,6 +472,7 @@ void Bus::onResult(const ModbusResult &result)
     m_store.count(flight.turn.device, result, roundTrip);
     recordTraffic(flight, result, roundTrip);
     setQuietAfter(flight, result, t);
+    m_scheduler.charge(flight.turn, std::max(t, m_scheduler.quietUntil()) - flight.sentMs);
 
     switch (flight.turn.kind) {
     case Scheduler::Turn::Kind::Poll:
@@ -464,6 +481,8 @@ void Bus::onResult(const ModbusResult &result)
         break;
     case Scheduler::Turn::Kind::Transaction: {
         Transaction *transaction = flight.turn.transaction;
+        if (flight.turn.request.isWrite() && result.status != ModbusResult::Status::LineDown)
+            refreshSettingsAfterWrite(flight.turn);
         if (transaction->onResult(result, m_settings.retries) == Transaction::Next::RetryAfterQuiet
             && result.status == ModbusResult::Status::Exception)
             m_scheduler.setQuietUntil(t + busyRetryDelayMs);
@@ -493,6 +512,19 @@ void Bus::loseInFlight(const QString &reason)
     result.status = ModbusResult::Status::LineDown;
     result.errorText = reason;
     onResult(result);
+}
+
+void Bus::refreshSettingsAfterWrite(const Scheduler::Turn &turn)
+{
+    // A write may change more than its own word (a configuration, a parameter set): the
+    // device's settings are read at once, not in a minute.
+    const qint64 t = now();
+    if (!turn.request.isBroadcast()) {
+        m_scheduler.refreshSettings(turn.device, t);
+        return;
+    }
+    for (DeviceId id : m_scheduler.devices())
+        m_scheduler.refreshSettings(id, t);
 }
 
 void Bus::recordTraffic(const InFlight &flight, const ModbusResult &result, double roundTripMs)

@@ -15,6 +15,7 @@
 #include "bus/lineconnection.h"
 #include "bus/requestdesk.h"
 #include "bus/scheduler.h"
+#include "bus/shownviews.h"
 #include "bus/transaction.h"
 #include "bus/valuestore.h"
 #include "bus/writeoutcome.h"
@@ -92,6 +93,10 @@ public:
     void requestCycle(DeviceId id);
 
     const EntryState *entryState(DeviceId id, const QString &entryId) const override;
+    // Views say here what they show: those entries are read one class higher meanwhile.
+    ShownEntries *shownEntries() const override { return m_shown.get(); }
+    // The class an entry of the device is read in now (its map's, or higher while shown).
+    PollClass pollClass(DeviceId id, const QString &entryId) const;
     const DeviceStatistics *statistics(DeviceId id) const;
     bool isOnline(DeviceId id) const;
     DeviceCondition condition(DeviceId id) const override;
@@ -168,6 +173,7 @@ private:
     void dispatch();
     void sweep();
     void applyPoll(const Scheduler::Turn &turn, const ModbusResult &result, qint64 now);
+    void refreshSettingsAfterWrite(const Scheduler::Turn &turn);
     void recordTraffic(const InFlight &flight, const ModbusResult &result, double roundTripMs);
     void setQuietAfter(const InFlight &flight, const ModbusResult &result, qint64 now);
     void invalidateAll(ReadError reason);
@@ -189,6 +195,7 @@ private:
     Scheduler m_scheduler;
     ValueStore m_store;
     RequestDesk m_requests{*this};
+    std::unique_ptr<ShownViews> m_shown;
     QHash<DeviceId, QDateTime> m_offlineSince;
     QDateTime m_lineSince;
     std::optional<InFlight> m_inFlight;

@@ -1,5 +1,9 @@
 #include "bus/devicepoll.h"
 
+#include "bus/linetiming.h"
+
+#include <QMap>
+
 #include <algorithm>
 
 namespace jumo {
@@ -9,7 +13,7 @@ namespace {
 constexpr int illegalDataAddress = 2;
 constexpr int deviceBusy = 6;
 
-ReadBlock blockOf(QList<const RegisterEntry *> entries)
+ReadBlock blockOf(QList<const RegisterEntry *> entries, const ReadBlock &like)
 {
     ReadBlock b;
     b.start = entries.first()->address;
@@ -18,7 +22,14 @@ ReadBlock blockOf(QList<const RegisterEntry *> entries)
         last = std::max<int>(last, e->lastAddress());
     b.count = quint16(last - b.start + 1);
     b.entries = std::move(entries);
+    b.pollClass = like.pollClass;
+    b.shown = like.shown;
     return b;
+}
+
+bool better(const PollChoice &candidate, const PollChoice &best)
+{
+    return candidate.tier < best.tier || (candidate.tier == best.tier && candidate.overdueMs > best.overdueMs);
 }
 
 } // namespace
@@ -27,7 +38,8 @@ DevicePoll::DevicePoll(std::shared_ptr<const RegisterMap> map, quint8 address, q
 {
     m_info.map = std::move(map);
     m_info.address = address;
-    m_nextDueMs = now;
+    m_cycleStartMs = now;
+    m_nextProbeMs = now;
     replan();
 }
 
@@ -48,11 +60,36 @@ void DevicePoll::replan()
                 missing << id;
         }
     }
-    m_info.plan = ReadPlanner::plan(*m_info.map, wanted);
+    // A selection is what the user asked to see every cycle: one class. Whole maps are
+    // read by what each entry is. Each class is planned apart (an alarm word never waits
+    // in a block of settings), and so are the live values a view shows.
+    m_classOf.clear();
+    QMap<QPair<int, bool>, QList<const RegisterEntry *>> groups;
+    for (const RegisterEntry *e : std::as_const(wanted)) {
+        PollClass c = m_pollIds.isEmpty() ? e->pollClass : PollClass::Live;
+        const bool shown = m_shown.contains(e->id);
+        if (shown)
+            c = shownClass(c);
+        if (e->isReadable())
+            m_classOf.insert(e->id, c);
+        groups[qMakePair(classIndex(c), shown && c == PollClass::Live)] << e;
+    }
+    const int maxGap = m_format ? LineTiming::bridgeableGapWords(*m_format, m_info.map->protocol) : -1;
+    ReadPlan plan;
+    for (auto it = groups.cbegin(); it != groups.cend(); ++it) {
+        ReadPlan part = ReadPlanner::plan(*m_info.map, it.value(), maxGap);
+        for (ReadBlock &b : part.blocks) {
+            b.pollClass = PollClass(it.key().first);
+            b.shown = it.key().second;
+        }
+        plan.blocks += part.blocks;
+        plan.errors += part.errors;
+    }
     for (const QString &id : std::as_const(missing))
-        m_info.plan.errors.prepend(ReadPlanner::tr("'%1' is not an entry of %2").arg(id, m_info.map->family));
-    m_blockIndex = -1;
-    m_blockAttempts = 0;
+        plan.errors.prepend(ReadPlanner::tr("'%1' is not an entry of %2").arg(id, m_info.map->family));
+    m_info.plan = std::move(plan);
+    m_attempts = QList<int>(m_info.plan.blocks.size(), 0);
+    m_inFlight = -1;
 }
 
 void DevicePoll::forgetUnavailable()
@@ -69,115 +106,277 @@ void DevicePoll::setPollEntries(const QStringList &ids)
     replan();
 }
 
+void DevicePoll::setShown(const QSet<QString> &entryIds)
+{
+    if (entryIds == m_shown)
+        return;
+    m_shown = entryIds;
+    replan();
+}
+
+void DevicePoll::setLineFormat(const std::optional<LineFormat> &format)
+{
+    m_format = format;
+    replan();
+}
+
+int DevicePoll::targetMs(PollClass pollClass) const
+{
+    switch (pollClass) {
+    case PollClass::Alarm:
+        return std::max(alarmTargetMs, m_info.intervalMs);
+    case PollClass::Live:
+        return m_info.intervalMs;
+    case PollClass::Setting:
+        break;
+    }
+    return std::max(settingTargetMs, m_info.intervalMs);
+}
+
+qint64 DevicePoll::allowanceMs(PollClass pollClass) const
+{
+    qint64 expected = std::max<qint64>(targetMs(pollClass), m_info.classAgeMs[classIndex(pollClass)]);
+    if (pollClass == PollClass::Live)
+        expected = std::max(expected, qint64(m_info.lastCycleMs));
+    return std::max<qint64>(2 * expected, 2000) + 1000;
+}
+
+qint64 DevicePoll::doneMs(const ReadBlock &block) const
+{
+    qint64 done = std::numeric_limits<qint64>::max();
+    for (const RegisterEntry *e : block.entries)
+        done = std::min(done, m_doneMs.value(e->id, neverMs));
+    return block.entries.isEmpty() ? neverMs : done;
+}
+
+bool DevicePoll::forced(const ReadBlock &block) const
+{
+    const qint64 done = doneMs(block);
+    return done < m_forcedMs[classIndex(block.pollClass)] || (m_requestedMs >= 0 && done < m_requestedMs);
+}
+
 bool DevicePoll::requestCycle(qint64 now)
 {
     if (m_info.plan.blocks.isEmpty())
         return false;
-    m_cycleRequested = true;
-    if (m_info.online)
-        m_nextDueMs = std::min(m_nextDueMs, now);
+    if (m_requestedMs < 0)
+        m_requestedMs = now;
+    if (m_readsThisCycle == 0)
+        m_cycleStartMs = now;
     return true;
 }
 
-bool DevicePoll::ready(qint64 now, bool polling) const
+void DevicePoll::refreshSettings(qint64 now)
 {
+    m_forcedMs[classIndex(PollClass::Setting)] = now;
+}
+
+int DevicePoll::probeBlock() const
+{
+    // The shortest read: a probe of a device that does not answer costs its timeout.
+    int chosen = 0;
+    for (int i = 1; i < m_info.plan.blocks.size(); ++i) {
+        if (m_info.plan.blocks.at(i).count < m_info.plan.blocks.at(chosen).count)
+            chosen = i;
+    }
+    return chosen;
+}
+
+PollChoice DevicePoll::choose(qint64 now, bool polling, PollChoice::Tier from) const
+{
+    PollChoice best;
     if (m_info.plan.blocks.isEmpty())
-        return false;
-    if (m_blockIndex >= 0)
-        return true;   // a cycle is running: its next block
-    if (!m_info.online)
-        return now >= m_nextDueMs;   // a probe at the end of the back-off
-    return (polling || m_cycleRequested) && now >= m_nextDueMs;
+        return best;
+    if (!m_info.online) {
+        if (now >= m_nextProbeMs && from <= PollChoice::Due)
+            best = PollChoice{probeBlock(), PollChoice::Due, now - m_nextProbeMs};
+        return best;
+    }
+    // After a lost answer the device waits as long as that request took: one that
+    // stopped answering gets at most half of the line, whatever its blocks' deadlines.
+    if (now < m_pausedUntilMs)
+        return best;
+    const int ceiling = targetMs(PollClass::Setting);
+    for (int i = 0; i < m_info.plan.blocks.size(); ++i) {
+        const ReadBlock &b = m_info.plan.blocks.at(i);
+        const qint64 done = doneMs(b);
+        const qint64 age = now - done;
+        const int target = targetMs(b.pollClass);
+        // Live values are read whenever nothing else is due, unless the device has an
+        // interval: then they are due at it, like any deadline.
+        const bool filler = b.pollClass == PollClass::Live && m_info.intervalMs <= 0;
+        const PollChoice::Tier ownTier = b.pollClass == PollClass::Alarm ? PollChoice::AlarmDue
+                : !filler                                             ? PollChoice::Due
+                                                                      : PollChoice::Filler;
+        PollChoice here{i, PollChoice::None, 0};
+        if (m_attempts.at(i) > 0) {
+            here.tier = ownTier;
+            here.overdueMs = now - m_pausedUntilMs;
+        } else if (forced(b)) {
+            const qint64 askedMs = std::max(m_forcedMs[classIndex(b.pollClass)], m_requestedMs);
+            here.tier = b.pollClass == PollClass::Alarm ? PollChoice::AlarmDue : PollChoice::Due;
+            here.overdueMs = std::max<qint64>(0, now - askedMs);
+        } else if (!polling) {
+            continue;
+        } else if (age >= target && !filler) {
+            here.tier = ownTier;
+            here.overdueMs = age - target;
+        } else if (age >= ceiling) {
+            here.tier = PollChoice::Due;
+            here.overdueMs = age - ceiling;
+        } else if (age >= target) {
+            // Live values a view shows count as twice as old: read more often than the
+            // others, without starving them (a tier of their own would).
+            here.tier = ownTier;
+            here.overdueMs = (b.shown && filler ? 2 : 1) * (age - target);
+        } else {
+            continue;
+        }
+        if (here.tier >= from && better(here, best))
+            best = here;
+    }
+    return best;
 }
 
 qint64 DevicePoll::dueMs(bool polling) const
 {
     if (m_info.plan.blocks.isEmpty())
         return -1;
-    if (m_blockIndex >= 0)
-        return 0;
-    if (!m_info.online || polling || m_cycleRequested)
-        return m_nextDueMs;
-    return -1;
+    if (!m_info.online)
+        return m_nextProbeMs;
+    const auto later = [this](qint64 due) { return std::max(due, m_pausedUntilMs); };
+    qint64 earliest = -1;
+    const int ceiling = targetMs(PollClass::Setting);
+    for (int i = 0; i < m_info.plan.blocks.size(); ++i) {
+        const ReadBlock &b = m_info.plan.blocks.at(i);
+        if (m_attempts.at(i) > 0 || forced(b))
+            return later(0);
+        if (!polling)
+            continue;
+        const qint64 done = doneMs(b);
+        const qint64 due = done + (b.pollClass == PollClass::Setting ? ceiling : std::min(targetMs(b.pollClass), ceiling));
+        earliest = earliest < 0 ? std::max<qint64>(0, due) : std::min(earliest, std::max<qint64>(0, due));
+    }
+    return earliest < 0 ? earliest : later(earliest);
 }
 
-std::pair<int, ModbusRequest> DevicePoll::nextBlock(qint64 now)
+ModbusRequest DevicePoll::start(int block, qint64 now)
 {
-    if (m_blockIndex < 0) {
-        m_blockIndex = 0;
-        m_cycleStartMs = now;
-    }
-    const ReadBlock &block = m_info.plan.blocks.at(m_blockIndex);
-    return {m_blockIndex, ModbusRequest::read(m_info.address, block.start, block.count)};
+    m_inFlight = block;
+    m_inFlightSinceMs = now;
+    const ReadBlock &b = m_info.plan.blocks.at(block);
+    return ModbusRequest::read(m_info.address, b.start, b.count);
 }
 
 void DevicePoll::restart(qint64 now)
 {
-    m_blockIndex = -1;
-    m_blockAttempts = 0;
-    m_nextDueMs = now;
+    m_doneMs.clear();
+    m_attempts.fill(0);
+    m_inFlight = -1;
+    m_pausedUntilMs = 0;
+    m_nextProbeMs = now;
     m_consecutiveFailures = 0;
+    m_cycleStartMs = now;
+    m_readsThisCycle = 0;
 }
 
-PollOutcome DevicePoll::finished(int block, const ModbusResult &result, int maxRetries, qint64 now)
+PollOutcome DevicePoll::finished(int block, const ModbusResult &result, int maxRetries, qint64 now, bool polling)
 {
     PollOutcome out;
-    if (block < 0 || block >= m_info.plan.blocks.size() || m_blockIndex != block)
+    if (block < 0 || block >= m_info.plan.blocks.size() || m_inFlight != block)
         return out;   // the plan changed while the block was under way
-    out.entries = m_info.plan.blocks.at(block).entries;
+    m_inFlight = -1;
+    const ReadBlock b = m_info.plan.blocks.at(block);
+    out.entries = b.entries;
 
     // A gateway's 0x0A/0x0B is no answer of the device's: counted as a timeout, shown
     // with its code.
     switch (result.isGatewayException() ? ModbusResult::Status::Timeout : result.status) {
     case ModbusResult::Status::Ok:
-        m_blockAttempts = 0;
+        m_attempts[block] = 0;
         out.store = true;
         markSuccess(out);
+        markRead(b, now, true);
         break;
     case ModbusResult::Status::Exception:
         if (result.exceptionCode == illegalDataAddress) {
             markSuccess(out);
             isolate(block, out, now);
+            if (!out.retry)
+                checkCycle(now, out, polling);
             return out;
         }
         // It answered: it is there; the block is refused (a busy device is asked again).
         if (result.exceptionCode == deviceBusy && m_info.map->exceptions.contains(deviceBusy)
-            && ++m_blockAttempts <= maxRetries) {
-            out.retry = true;
+            && ++m_attempts[block] <= maxRetries) {
+                        out.retry = true;
             return out;
         }
-        m_blockAttempts = 0;
+        m_attempts[block] = 0;
         markSuccess(out);
         out.failure = ReadError::Exception;
         out.exceptionCode = result.exceptionCode;
+        markRead(b, now, false);
         break;
     case ModbusResult::Status::LineDown:
-        // The bus invalidates everything; the cycle starts again when the line is back.
-        m_blockIndex = -1;
-        m_blockAttempts = 0;
+        // The bus invalidates everything; the block is read when the line is back.
+        m_attempts[block] = 0;
         return out;
     default:
-        if (m_info.online && ++m_blockAttempts <= maxRetries) {
-            out.retry = true;   // the device's next turn repeats the block
+        // The request took its timeout and takes as long again in quiet: the others get
+        // as long again after that.
+        m_pausedUntilMs = now + 3 * (now - m_inFlightSinceMs);
+        if (m_info.online && ++m_attempts[block] <= maxRetries) {
+                        out.retry = true;   // still due: read again
             return out;
         }
-        m_blockAttempts = 0;
+        m_attempts[block] = 0;
         out.failure = result.isGatewayException()                     ? ReadError::Exception
                 : result.status == ModbusResult::Status::BadReply ? ReadError::Mismatch
                                                                   : ReadError::Timeout;
         out.exceptionCode = result.isGatewayException() ? result.exceptionCode : 0;
         markFailure(out);
         if (!m_info.online) {
-            if (m_blockIndex >= 0)
-                finishCycle(now, out);
-            m_nextDueMs = now + m_info.backoffMs;
+            // Each probe that finds nobody ends a cycle: whoever prints cycles says so.
+            finishCycle(now, out);
+            m_nextProbeMs = now + m_info.backoffMs;
             return out;
         }
+        markRead(b, now, false);
         break;
     }
-    if (++m_blockIndex >= m_info.plan.blocks.size())
-        finishCycle(now, out);
+    checkCycle(now, out, polling);
     return out;
+}
+
+void DevicePoll::markRead(const ReadBlock &block, qint64 now, bool good)
+{
+    const int c = classIndex(block.pollClass);
+    for (const RegisterEntry *e : block.entries) {
+        const qint64 previous = m_doneMs.value(e->id, neverMs);
+        if (good && previous != neverMs)
+            m_cycleClassAgeMs[c] = std::max(m_cycleClassAgeMs[c], now - previous);
+        m_doneMs.insert(e->id, now);
+    }
+    ++m_readsThisCycle;
+}
+
+void DevicePoll::checkCycle(qint64 now, PollOutcome &outcome, bool polling)
+{
+    // A cycle is over when everything of the device is fresh: every block read since it
+    // began (live values), or still within its class's target age (alarms, settings).
+    if (m_readsThisCycle == 0)
+        return;
+    for (const ReadBlock &b : std::as_const(m_info.plan.blocks)) {
+        const qint64 done = doneMs(b);
+        if (forced(b))
+            return;
+        if (done >= m_cycleStartMs)
+            continue;
+        if (!polling || b.pollClass == PollClass::Live || now - done >= targetMs(b.pollClass))
+            return;
+    }
+    finishCycle(now, outcome);
 }
 
 void DevicePoll::isolate(int block, PollOutcome &out, qint64 now)
@@ -187,35 +386,41 @@ void DevicePoll::isolate(int block, PollOutcome &out, qint64 now)
     const ReadBlock whole = m_info.plan.blocks.at(block);
     out.entries.clear();
     if (whole.entries.size() > 1) {
-        m_blockAttempts = 0;
+        m_attempts[block] = 0;
         const qsizetype half = whole.entries.size() / 2;
-        m_info.plan.blocks[block] = blockOf(whole.entries.mid(0, half));
-        m_info.plan.blocks.insert(block + 1, blockOf(whole.entries.mid(half)));
+        m_info.plan.blocks[block] = blockOf(whole.entries.mid(0, half), whole);
+        m_info.plan.blocks.insert(block + 1, blockOf(whole.entries.mid(half), whole));
+        m_attempts.insert(block + 1, 0);
         out.retry = true;
         return;
     }
     // One entry left: asked once more, so a single garbled answer never hides it.
-    if (++m_blockAttempts <= 1) {
-        out.retry = true;
+    if (++m_attempts[block] <= 1) {
+                out.retry = true;
         return;
     }
-    m_blockAttempts = 0;
     m_unavailable.insert(whole.entries.first()->id);
+    m_classOf.remove(whole.entries.first()->id);
+    ++m_readsThisCycle;   // settled: it counts as read for the cycle
     out.unavailable = whole.entries;
     m_info.plan.blocks.removeAt(block);
-    if (m_blockIndex >= m_info.plan.blocks.size())
-        finishCycle(now, out);
+    m_attempts.removeAt(block);
+
 }
 
 void DevicePoll::finishCycle(qint64 now, PollOutcome &outcome)
 {
     const double cycleMs = double(now - m_cycleStartMs);
-    m_blockIndex = -1;
-    m_cycleRequested = false;
     m_info.lastCycleMs = cycleMs;
     outcome.cycleMs = cycleMs;
-    if (m_info.online)
-        m_nextDueMs = std::max(m_cycleStartMs + m_info.intervalMs, now);
+    for (int c = 0; c < pollClassCount; ++c) {
+        if (m_cycleClassAgeMs[c] > 0)
+            m_info.classAgeMs[c] = m_cycleClassAgeMs[c];
+    }
+    m_cycleClassAgeMs = {};
+    m_cycleStartMs = now;
+    m_readsThisCycle = 0;
+    m_requestedMs = -1;
 }
 
 void DevicePoll::markFailure(PollOutcome &outcome)
@@ -237,6 +442,8 @@ void DevicePoll::markSuccess(PollOutcome &outcome)
         m_info.online = true;
         m_info.backoffMs = 0;
         outcome.online = true;
+        // Back: everything is read at once, as after a reconnect.
+        m_doneMs.clear();
     }
 }
 

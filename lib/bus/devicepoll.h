@@ -1,29 +1,40 @@
-// One device's poll cycles: what they read (its read plan), which block is next, when the
-// next cycle is due, the repeat of a failed block, the split of a block answered with
-// exception 02 until the one address the device lacks is isolated, and online or offline
-// with back-off. The scheduler decides whose turn it is; this says what that turn reads.
+// One device's polls: what they read (a read plan per poll class), which block is most
+// overdue and how urgent that is, the repeat of a failed block, the split of a block
+// answered with exception 02 until the one address the device lacks is isolated, online
+// or offline with back-off, and when a cycle is over. The scheduler decides whose turn it
+// is; this says what that turn reads and how badly it is needed.
 #pragma once
 
 #include "bus/entrystate.h"
 #include "bus/modbusrequest.h"
+#include "protocol/lineformat.h"
 #include "protocol/readplanner.h"
 
+#include <QHash>
 #include <QSet>
 
+#include <array>
+#include <limits>
 #include <memory>
 #include <optional>
 
 namespace jumo {
 
+constexpr int pollClassCount = 3;
+constexpr int classIndex(PollClass pollClass) { return int(pollClass); }
+
 struct DeviceInfo
 {
     std::shared_ptr<const RegisterMap> map;
     quint8 address = 0;
-    ReadPlan plan;
+    ReadPlan plan;   // every block tagged with its class
     int intervalMs = 0;
     bool online = true;
     int backoffMs = 0;
     double lastCycleMs = 0;
+    // Per class: the longest time between two reads of one of its blocks in the last
+    // cycle (0: none read twice yet). What the values' allowance is made of.
+    std::array<qint64, pollClassCount> classAgeMs{};
 };
 
 // What became of a poll turn, for the bus to carry out.
@@ -39,12 +50,34 @@ struct PollOutcome
     std::optional<double> cycleMs;            // a cycle of the device finished
 };
 
+// How badly a device needs its next read: the scheduler takes the lowest tier first, and
+// within a tier the block most overdue.
+struct PollChoice
+{
+    enum Tier {
+        AlarmDue,   // an alarm block at its target age
+        Due,        // a setting at its target age, any block at the ceiling, a probe, a
+                    // cycle asked for, settings after a write
+        ShownFiller, // live values a view shows: as often as the rest allows, first
+        Filler,     // other live values: as often as the rest allows
+        None
+    };
+    int block = -1;
+    Tier tier = None;
+    qint64 overdueMs = 0;
+};
+
 class DevicePoll
 {
 public:
     static constexpr int failuresBeforeOffline = 2;   // blocks failed after all their retries
     static constexpr int firstBackoffMs = 1000;
     static constexpr int maximumBackoffMs = 30000;
+    // Target ages: an alarm block is read again after a second, a setting after 55 s
+    // (so within the minute whatever else is due), live values whenever nothing else is.
+    // No block waits longer than a setting does.
+    static constexpr int alarmTargetMs = 1000;
+    static constexpr int settingTargetMs = 55000;
 
     DevicePoll() = default;
     DevicePoll(std::shared_ptr<const RegisterMap> map, quint8 address, qint64 now);
@@ -55,41 +88,76 @@ public:
     bool isOnline() const { return m_info.online; }
     bool isAvailable(const QString &entryId) const { return !m_unavailable.contains(entryId); }
 
-    // Which entries a cycle reads (empty: every readable entry).
+    // Which entries are read (empty: every readable entry, each in its map class). A
+    // selection is read whole every cycle, as one live class.
     void setPollEntries(const QStringList &ids);
+    QStringList pollEntries() const { return m_pollIds; }
+    // Entries a view shows: each reads one class higher while shown.
+    void setShown(const QSet<QString> &entryIds);
+    // The line's baud rate and format: plans weigh the wire time of gaps against requests.
+    void setLineFormat(const std::optional<LineFormat> &format);
     // Entries isolated by exception 02 are polled again (another device may be there now).
     void forgetUnavailable();
-    QStringList pollEntries() const { return m_pollIds; }
+    // No block read more often than this (0: each class's own target).
     void setInterval(int ms) { m_info.intervalMs = std::max(0, ms); }
-    // One cycle soon, polling on or off; false when there is nothing to read.
-    bool requestCycle(qint64 now);
+    // The class an entry is read in now.
+    PollClass classOf(const QString &entryId) const { return m_classOf.value(entryId, PollClass::Live); }
+    const QHash<QString, PollClass> &classes() const { return m_classOf; }
+    int targetMs(PollClass pollClass) const;
+    // How long a value of the class stays current: about twice the age its blocks are
+    // read at (their target, or what the line gave them lately), plus a second.
+    qint64 allowanceMs(PollClass pollClass) const;
 
-    // Whether a block is to be read now (polling: cycles start by themselves).
-    bool ready(qint64 now, bool polling) const;
-    // When one will be (0: now, -1: not until told).
+    // One cycle soon, every block, polling on or off; false when there is nothing to read.
+    bool requestCycle(qint64 now);
+    // The settings are read at once (a write may have changed more than its own word).
+    void refreshSettings(qint64 now);
+
+    // The block to read now and how urgent it is (block -1: none); only blocks of this
+    // tier or a lower one (less urgent) when given.
+    PollChoice choose(qint64 now, bool polling, PollChoice::Tier from = PollChoice::AlarmDue) const;
+    bool ready(qint64 now, bool polling) const { return choose(now, polling).block >= 0; }
+    // When a block will be due (-1: not until told).
     qint64 dueMs(bool polling) const;
-    // The block to read now, starting a cycle when none runs: its index and request.
-    std::pair<int, ModbusRequest> nextBlock(qint64 now);
+    // The request that reads a block, which is from now on under way.
+    ModbusRequest start(int block, qint64 now);
     // What the answer to that block means.
-    PollOutcome finished(int block, const ModbusResult &result, int maxRetries, qint64 now);
-    // Whatever a cycle was doing is void: the line was (re)opened.
+    PollOutcome finished(int block, const ModbusResult &result, int maxRetries, qint64 now, bool polling);
+    // Whatever was under way is void and everything is read at once: the line was (re)opened.
     void restart(qint64 now);
 
 private:
+    static constexpr qint64 neverMs = std::numeric_limits<qint64>::min() / 4;
+
     void replan();
+    qint64 doneMs(const ReadBlock &block) const;
+    bool forced(const ReadBlock &block) const;
     void isolate(int block, PollOutcome &outcome, qint64 now);
+    void markRead(const ReadBlock &block, qint64 now, bool good);
+    void checkCycle(qint64 now, PollOutcome &outcome, bool polling);
     void finishCycle(qint64 now, PollOutcome &outcome);
     void markFailure(PollOutcome &outcome);
     void markSuccess(PollOutcome &outcome);
+    int probeBlock() const;
 
     DeviceInfo m_info;
     QStringList m_pollIds;
-    QSet<QString> m_unavailable;   // entries this model does not have
-    int m_blockIndex = -1;         // -1: no cycle running
-    int m_blockAttempts = 0;
-    qint64 m_cycleStartMs = -1;
-    qint64 m_nextDueMs = 0;
-    bool m_cycleRequested = false;
+    QSet<QString> m_shown;
+    std::optional<LineFormat> m_format;
+    QSet<QString> m_unavailable;          // entries this model does not have
+    QHash<QString, PollClass> m_classOf;  // the class each planned entry is read in
+    QHash<QString, qint64> m_doneMs;      // entry -> last read (answered or failed for good)
+    QList<int> m_attempts;                // per block: failed attempts of the read under way
+    qint64 m_pausedUntilMs = 0;           // after a lost answer: nothing of the device before
+    int m_inFlight = -1;
+    qint64 m_inFlightSinceMs = 0;
+    // Blocks of a class last read before this time are read at once.
+    std::array<qint64, pollClassCount> m_forcedMs{neverMs, neverMs, neverMs};
+    qint64 m_requestedMs = -1;            // a whole cycle asked for at this time
+    qint64 m_cycleStartMs = 0;
+    int m_readsThisCycle = 0;
+    std::array<qint64, pollClassCount> m_cycleClassAgeMs{};
+    qint64 m_nextProbeMs = 0;             // offline: the next probe
     int m_consecutiveFailures = 0;
 };
 

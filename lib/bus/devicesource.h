@@ -31,6 +31,17 @@ struct DeviceCondition
     bool isOnline() const { return state == State::Online; }
 };
 
+// What the views of a line show, so the line reads it sooner: a Bus reads the entries a
+// view shows one poll class higher while it shows them (a setting as a live value, a live
+// value as an alarm word). A mirror of a station has no line to hurry.
+class ShownEntries
+{
+public:
+    virtual ~ShownEntries() = default;
+    // What this view shows of the device from now on (empty: nothing any more).
+    virtual void setShown(const void *view, DeviceId device, const QStringList &entryIds) = 0;
+};
+
 class DeviceSource : public QObject
 {
     Q_OBJECT
@@ -49,6 +60,8 @@ public:
     virtual LineState state() const = 0;
     // The monotonic clock of EntryState times.
     virtual qint64 clockMs() const = 0;
+    // Where views say what they show (null: nothing to hurry).
+    virtual ShownEntries *shownEntries() const { return nullptr; }
 
 signals:
     // Values or validity of these entries changed (one signal per poll block).

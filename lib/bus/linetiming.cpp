@@ -28,6 +28,17 @@ double interFrameDelayMs(const LineFormat &format)
     return std::max(2.0, format.frameGapMs());
 }
 
+int bridgeableGapWords(const LineFormat &format, const ProtocolInfo &protocol)
+{
+    // The manuals give only the worst case (250 ms for a dTRON); weighed by that, every
+    // gap would be worth reading. Devices and our peers answer within a few ms.
+    constexpr double typicalProcessingMs = 5.0;
+    const double device = std::min(protocol.processingTimeMaxMs, typicalProcessingMs);
+    const double request = transactionMs(format, readRequestBytes, readReplyBytes(0), device, protocol.turnaroundMs)
+            + interFrameDelayMs(format);
+    return int(request / format.wireTimeMs(2));
+}
+
 qint64 quietAfterMs(const LineFormat &format, const ModbusRequest &request, const ModbusResult &result,
                     const ProtocolInfo &protocol, int minimumResponseTimeMs)
 {

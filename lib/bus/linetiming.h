@@ -32,6 +32,10 @@ int timeoutMs(const LineFormat &format, int requestBytes, int replyBytes, const 
 
 // The wait QModbusRtuSerialClient keeps before each request: 3.5 characters, at least 2 ms.
 double interFrameDelayMs(const LineFormat &format);
+// The most words a read plan bridges between two wanted entries: reading them costs less
+// wire time than one more request (its framing, two frame gaps, the device's typical
+// processing time, the client's gap before a request).
+int bridgeableGapWords(const LineFormat &format, const ProtocolInfo &protocol);
 // How long nobody may talk after a request ended so: after a lost or garbled reply as
 // long again as the timeout, so a late answer cannot be taken for the next request's (Qt
 // clears its buffer right before each send); after a reply the family's turnaround; after

@@ -11,35 +11,11 @@ namespace jumo {
 
 namespace {
 
-// "entry" or "entry.bit": the entry's id.
-QString entryOf(const QString &reference)
-{
-    return reference.section(QLatin1Char('.'), 0, 0);
-}
-
-QStringList faceplateEntries(const RegisterMap &map)
-{
-    const FaceplateSpec &f = map.faceplate;
-    QStringList ids = map.overview;
-    ids << f.primary << f.programSegment << f.programSegments << f.programTimeLeft;
-    for (const FaceplateValue &v : f.values)
-        ids << v.entry << v.scaleFrom;
-    for (const FaceplateState &s : f.modes)
-        ids << entryOf(s.when);
-    for (const FaceplateState &s : f.programStates)
-        ids << entryOf(s.when);
-    ids.removeAll(QString());
-    return ids;
-}
-
 QStringList alarmEntries(const RegisterMap &map)
 {
     QStringList ids;
     for (const RegisterEntry &e : map.entries()) {
-        const bool alarm = std::any_of(e.bits.cbegin(), e.bits.cend(), [](const BitDefinition &b) {
-            return !b.reserved && (b.kind == BitKind::Alarm || b.kind == BitKind::Warning);
-        });
-        if (alarm && e.isReadable() && e.alias.isEmpty())
+        if (e.hasAlarmBits() && e.isReadable() && e.alias.isEmpty())
             ids << e.id;
     }
     return ids;
@@ -54,7 +30,7 @@ std::optional<QStringList> PollSelection::expand(const RegisterMap &map, const Q
         const QString word = raw.trimmed();
         QStringList ids;
         if (word == QLatin1String("faceplate")) {
-            ids = faceplateEntries(map);
+            ids = map.faceplateEntries();
         } else if (word == QLatin1String("alarms")) {
             ids = alarmEntries(map);
         } else {

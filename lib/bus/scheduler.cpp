@@ -12,6 +12,8 @@ int Scheduler::keepaliveMs(const RegisterMap &map)
 void Scheduler::addDevice(DeviceId id, std::shared_ptr<const RegisterMap> map, quint8 address, qint64 now)
 {
     m_devices[id].poll = DevicePoll(std::move(map), address, now);
+    if (m_format)
+        m_devices[id].poll.setLineFormat(m_format);
 }
 
 void Scheduler::removeDevice(DeviceId id)
@@ -29,6 +31,37 @@ void Scheduler::setPollEntries(DeviceId id, const QStringList &ids)
 {
     if (const auto it = m_devices.find(id); it != m_devices.end())
         it->poll.setPollEntries(ids);
+}
+
+void Scheduler::setShown(DeviceId id, const QSet<QString> &entryIds)
+{
+    if (const auto it = m_devices.find(id); it != m_devices.end())
+        it->poll.setShown(entryIds);
+}
+
+void Scheduler::setLineFormat(const std::optional<LineFormat> &format)
+{
+    m_format = format;
+    for (Device &d : m_devices)
+        d.poll.setLineFormat(format);
+}
+
+QHash<QString, PollClass> Scheduler::entryClasses(DeviceId id) const
+{
+    const auto it = m_devices.constFind(id);
+    return it == m_devices.cend() ? QHash<QString, PollClass>() : it->poll.classes();
+}
+
+qint64 Scheduler::allowanceMs(DeviceId id, PollClass pollClass) const
+{
+    const auto it = m_devices.constFind(id);
+    return it == m_devices.cend() ? 0 : it->poll.allowanceMs(pollClass);
+}
+
+void Scheduler::refreshSettings(DeviceId id, qint64 now)
+{
+    if (const auto it = m_devices.find(id); it != m_devices.end())
+        it->poll.refreshSettings(now);
 }
 
 void Scheduler::forgetUnavailable(DeviceId id)
@@ -157,6 +190,14 @@ void Scheduler::sent(const ModbusRequest &request, qint64 now)
     m_lastAddressedMs.insert(request.slave, now);
 }
 
+void Scheduler::charge(const Turn &turn, qint64 lineMs)
+{
+    if (turn.kind == Turn::Kind::Poll || turn.kind == Turn::Kind::Keepalive)
+        m_pollLineMs += lineMs;
+    else if (turn.kind == Turn::Kind::Transaction && turn.transaction->lane() == Transaction::Lane::Job)
+        m_jobLineMs += lineMs;
+}
+
 void Scheduler::restart(qint64 now)
 {
     for (Device &d : m_devices)
@@ -165,35 +206,54 @@ void Scheduler::restart(qint64 now)
     m_quietUntilMs = 0;
 }
 
-Scheduler::Turn Scheduler::devicePollTurn(DeviceId id, Device &d, qint64 now)
+Scheduler::Turn Scheduler::devicePollTurn(DeviceId id, Device &d, int block, qint64 now)
 {
-    const auto [block, request] = d.poll.nextBlock(now);
     Turn turn;
     turn.kind = Turn::Kind::Poll;
     turn.device = id;
     turn.block = block;
-    turn.request = request;
+    turn.request = d.poll.start(block, now);
     turn.timing = d.poll.map().protocol;
     return turn;
+}
+
+std::optional<std::pair<DeviceId, PollChoice>> Scheduler::bestPoll(qint64 now, PollChoice::Tier from)
+{
+    // The most urgent tier first, within it the most overdue block. Devices equally
+    // overdue take turns: the search starts after the device served last.
+    QList<DeviceId> order = m_devices.keys();
+    const auto split = std::upper_bound(order.begin(), order.end(), m_roundRobin);
+    std::rotate(order.begin(), split, order.end());
+    std::optional<std::pair<DeviceId, PollChoice>> best;
+    for (DeviceId id : std::as_const(order)) {
+        const PollChoice c = m_devices[id].poll.choose(now, m_polling, from);
+        if (c.block < 0)
+            continue;
+        if (!best || c.tier < best->second.tier
+            || (c.tier == best->second.tier && c.overdueMs > best->second.overdueMs))
+            best = std::make_pair(id, c);
+    }
+    return best;
 }
 
 std::optional<Scheduler::Turn> Scheduler::pollTurn(qint64 now)
 {
     if (m_devices.isEmpty())
         return std::nullopt;
-    // Round-robin by request: each device in turn gets one block, so a long cycle of one
-    // device never holds up the others.
-    QList<DeviceId> order = m_devices.keys();
-    const auto split = std::upper_bound(order.begin(), order.end(), m_roundRobin);
-    std::rotate(order.begin(), split, order.end());
-    for (DeviceId id : std::as_const(order)) {
-        Device &d = m_devices[id];
-        if (!d.poll.ready(now, m_polling))
-            continue;
-        m_roundRobin = id;
-        return devicePollTurn(id, d, now);
+    std::optional<std::pair<DeviceId, PollChoice>> chosen = bestPoll(now, PollChoice::AlarmDue);
+    if (!chosen)
+        return std::nullopt;
+    if (chosen->second.tier == PollChoice::AlarmDue && m_alarmStreak >= alarmTurnsInARow) {
+        // Whatever is most urgent after the alarm words: a setting or probe due, else
+        // live values (those on screen first), so a full line of alarm words still
+        // refreshes the screen.
+        if (std::optional<std::pair<DeviceId, PollChoice>> due = bestPoll(now, PollChoice::Due);
+            due && due->second.tier <= PollChoice::Filler)
+            chosen = due;
     }
-    return std::nullopt;
+    m_alarmStreak = chosen->second.tier == PollChoice::AlarmDue ? m_alarmStreak + 1 : 0;
+    m_roundRobin = chosen->first;
+    return devicePollTurn(chosen->first, m_devices[chosen->first], chosen->second.block, now);
 }
 
 std::optional<Scheduler::Turn> Scheduler::keepaliveTurn(qint64 now)
@@ -219,8 +279,8 @@ std::optional<Scheduler::Turn> Scheduler::keepaliveTurn(qint64 now)
     Device &d = m_devices[chosen];
     // Its next poll block when one is due: no extra request. Otherwise (a long poll
     // interval, polling off) the smallest read of anything readable keeps it talking.
-    if (d.poll.ready(now, m_polling))
-        return devicePollTurn(chosen, d, now);
+    if (const PollChoice c = d.poll.choose(now, m_polling); c.block >= 0)
+        return devicePollTurn(chosen, d, c.block, now);
     for (const RegisterEntry &e : d.poll.map().entries()) {
         if (e.isReadable() && e.alias.isEmpty() && d.poll.isAvailable(e.id)) {
             Turn turn;
@@ -299,16 +359,20 @@ Scheduler::Turn Scheduler::next(qint64 now)
     if (std::optional<Turn> t = holdTurn(now))
         return *t;
 
-    // Jobs and polls take turns while both have work.
+    // Jobs and polls take turns while both have work, and the line time is shared: after
+    // a long job turn (a timeout), polls go on until they have had as much.
     std::optional<Turn> job = transactionTurn(m_jobs);
-    if (job && (m_lastWasJob == false)) {
+    if (job && !m_lastWasJob && m_jobLineMs <= m_pollLineMs) {
         m_lastWasJob = true;
         return *job;
     }
     if (std::optional<Turn> poll = pollTurn(now)) {
         m_lastWasJob = false;
+        if (!job)
+            m_jobLineMs = m_pollLineMs = 0;
         return *poll;
     }
+    m_jobLineMs = m_pollLineMs = 0;
     if (job) {
         m_lastWasJob = true;
         return *job;
@@ -338,7 +402,7 @@ Scheduler::PollOutcome Scheduler::pollFinished(const Turn &turn, const ModbusRes
     // A keepalive only keeps the device talking; a poll or a probe tells whether it is there.
     if (it == m_devices.end() || turn.kind == Turn::Kind::Keepalive)
         return {};
-    return it->poll.finished(turn.block, result, maxRetries, now);
+    return it->poll.finished(turn.block, result, maxRetries, now, m_polling);
 }
 
 } // namespace jumo

@@ -6,11 +6,15 @@
 //     anything else, so it never falls silent for longer than that whatever else runs;
 //  3. operator work goes next;
 //  4. RAM setpoint holds, when due;
-//  5. job work (scan, backup, restore, report) and polls alternate while both wait;
-//     either runs alone when the other has nothing to do;
+//  5. job work (scan, backup, restore, report) and polls alternate while both wait,
+//     and polls go on until they have had as much line time as the jobs (a silent
+//     address costs a scan its timeout); either runs alone when the other has nothing;
 // and nothing goes before the quiet time the bus sets after a lost answer, a turnaround
-// or a broadcast. Polls go round-robin over the devices, one block per turn; what each
-// device's turn reads is its DevicePoll's business (plan, repeats, exception 02, back-off).
+// or a broadcast. Polls go by deadlines, not turns: every block has its class's target
+// age, and the most overdue block of the most urgent tier goes first (alarm words at
+// their age, then settings, probes and anything at the ceiling, then live values as
+// often as the rest allows); devices that are equally overdue take turns. What each
+// device reads is its DevicePoll's business (plans, repeats, exception 02, back-off).
 // Pure logic: no timers, no transport, the time is given.
 #pragma once
 
@@ -49,6 +53,9 @@ public:
 
     // How long before its keepalive interval ends a device's request becomes urgent.
     static constexpr int keepaliveMarginMs = 1000;
+    // Alarm words read in a row while a setting or a probe waits: the rest keep a fifth of
+    // the line even where the alarm words alone would fill it.
+    static constexpr int alarmTurnsInARow = 4;
 
     void addDevice(DeviceId id, std::shared_ptr<const RegisterMap> map, quint8 address, qint64 now);
     void removeDevice(DeviceId id);
@@ -58,6 +65,16 @@ public:
 
     // Which entries a poll cycle reads (empty: every readable entry).
     void setPollEntries(DeviceId id, const QStringList &ids);
+    // The entries views show of the device: each is read one class higher meanwhile.
+    void setShown(DeviceId id, const QSet<QString> &entryIds);
+    // The line's format, for plans that weigh wire time (none: fewest requests).
+    void setLineFormat(const std::optional<LineFormat> &format);
+    // The class each polled entry of the device is read in now.
+    QHash<QString, PollClass> entryClasses(DeviceId id) const;
+    // How long a value of the class stays current (see DevicePoll::allowanceMs).
+    qint64 allowanceMs(DeviceId id, PollClass pollClass) const;
+    // The device's settings are read at once (after a write to it).
+    void refreshSettings(DeviceId id, qint64 now);
     void forgetUnavailable(DeviceId id);
     QStringList pollEntries(DeviceId id) const;
     // How often a cycle starts (0: as fast as the line allows).
@@ -87,6 +104,8 @@ public:
     qint64 quietUntil() const { return m_quietUntilMs; }
     // A request went out (every request to an address counts as its keepalive).
     void sent(const ModbusRequest &request, qint64 now);
+    // A turn is over: the line time it took, its quiet time after included.
+    void charge(const Turn &turn, qint64 lineMs);
     // Whatever a cycle was doing is void: the line was (re)opened.
     void restart(qint64 now);
 
@@ -112,10 +131,11 @@ private:
     };
 
     std::optional<Turn> pollTurn(qint64 now);
+    std::optional<std::pair<DeviceId, PollChoice>> bestPoll(qint64 now, PollChoice::Tier from);
     std::optional<Turn> keepaliveTurn(qint64 now);
     std::optional<Turn> holdTurn(qint64 now);
     std::optional<Turn> transactionTurn(std::deque<std::unique_ptr<Transaction>> &lane);
-    Turn devicePollTurn(DeviceId id, Device &device, qint64 now);
+    Turn devicePollTurn(DeviceId id, Device &device, int block, qint64 now);
     void prune(std::deque<std::unique_ptr<Transaction>> &lane);
 
     QMap<DeviceId, Device> m_devices;
@@ -124,9 +144,13 @@ private:
     Transaction *m_holding = nullptr;          // must go next
     bool m_polling = true;
     bool m_lastWasJob = false;
+    qint64 m_jobLineMs = 0;                    // line time of jobs and polls while both wait
+    qint64 m_pollLineMs = 0;
     DeviceId m_roundRobin = 0;                 // the device after which the next poll search starts
+    int m_alarmStreak = 0;                     // alarm turns since anything else
     qint64 m_quietUntilMs = 0;
     QHash<quint8, qint64> m_lastAddressedMs;   // slave -> last request
+    std::optional<LineFormat> m_format;
 };
 
 } // namespace jumo

@@ -39,13 +39,31 @@ DeviceStatistics *ValueStore::statistics(DeviceId id)
 void ValueStore::setAllowance(DeviceId id, qint64 ms)
 {
     if (const auto d = m_devices.find(id); d != m_devices.end())
-        d->allowanceMs = std::max<qint64>(1, ms);
+        d->allowanceMs.fill(std::max<qint64>(1, ms));
 }
 
-qint64 ValueStore::allowance(DeviceId id) const
+void ValueStore::setAllowance(DeviceId id, PollClass pollClass, qint64 ms)
+{
+    if (const auto d = m_devices.find(id); d != m_devices.end())
+        d->allowanceMs[size_t(pollClass)] = std::max<qint64>(1, ms);
+}
+
+void ValueStore::setClasses(DeviceId id, const QHash<QString, PollClass> &classes)
+{
+    if (const auto d = m_devices.find(id); d != m_devices.end())
+        d->classes = classes;
+}
+
+qint64 ValueStore::allowance(DeviceId id, PollClass pollClass) const
 {
     const auto d = m_devices.constFind(id);
-    return d == m_devices.cend() ? 0 : d->allowanceMs;
+    return d == m_devices.cend() ? 0 : d->allowanceMs[size_t(pollClass)];
+}
+
+qint64 ValueStore::allowance(DeviceId id, const QString &entryId) const
+{
+    const auto d = m_devices.constFind(id);
+    return d == m_devices.cend() ? 0 : d->allowanceOf(entryId);
 }
 
 QStringList ValueStore::store(DeviceId id, const QList<const RegisterEntry *> &entries, quint16 start,
@@ -67,6 +85,7 @@ QStringList ValueStore::store(DeviceId id, const QList<const RegisterEntry *> &e
         s.exceptionCode = 0;
         s.updatedMs = now;
         s.goodMs = now;
+        d->readAllowanceMs.insert(e->id, d->allowanceMs[size_t(d->classes.value(e->id, PollClass::Live))]);
         updated << e->id;
     }
     return updated;
@@ -96,6 +115,11 @@ QStringList ValueStore::invalidate(DeviceId id, ReadError reason, qint64 now)
     const auto d = m_devices.find(id);
     if (d == m_devices.end())
         return updated;
+    // Entries not read yet (a setting waits its minute) are unknown for this reason too.
+    for (auto it = d->classes.cbegin(); it != d->classes.cend(); ++it) {
+        if (!d->values.contains(it.key()))
+            d->values.insert(it.key(), EntryState{});
+    }
     for (auto it = d->values.begin(); it != d->values.end(); ++it) {
         // An entry the device does not have stays so; everything else is unknown now.
         if (it->error == ReadError::NotAvailable || (it->validity == Validity::Unknown && it->error == reason))
@@ -116,7 +140,7 @@ QStringList ValueStore::sweep(DeviceId id, qint64 now)
     if (d == m_devices.end())
         return updated;
     for (auto it = d->values.begin(); it != d->values.end(); ++it) {
-        if (it->validity == Validity::Current && now - it->goodMs > d->allowanceMs) {
+        if (it->validity == Validity::Current && now - it->goodMs > d->allowanceOf(it.key())) {
             it->validity = Validity::Stale;
             it->updatedMs = now;
             updated << it.key();
@@ -131,10 +155,11 @@ qint64 ValueStore::nextStaleMs(DeviceId id) const
     if (d == m_devices.cend())
         return -1;
     qint64 next = -1;
-    for (const EntryState &s : d->values) {
+    for (auto it = d->values.cbegin(); it != d->values.cend(); ++it) {
+        const EntryState &s = *it;
         if (s.validity != Validity::Current)
             continue;
-        const qint64 due = s.goodMs + d->allowanceMs + 1;
+        const qint64 due = s.goodMs + d->allowanceOf(it.key()) + 1;
         next = next < 0 ? due : std::min(next, due);
     }
     return next;

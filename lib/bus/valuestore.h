@@ -1,7 +1,9 @@
 // The values of every device on a line with their validity, and the device's request
-// statistics. Values turn current when a block is read, stale when the device's cycle
-// allowance passes without a new reading, and unknown when the read, the device or the
-// line fails; the last value is kept as "last known", never shown as current.
+// statistics. Values turn current when a block is read, stale when their poll class's
+// allowance passes without a new reading (a setting read every minute is current for
+// two; an alarm word read every second for three seconds), and unknown when the read,
+// the device or the line fails; the last value is kept as "last known", never shown as
+// current.
 #pragma once
 
 #include "bus/devicestatistics.h"
@@ -12,6 +14,7 @@
 #include <QHash>
 #include <QStringList>
 
+#include <array>
 #include <memory>
 
 namespace jumo {
@@ -31,9 +34,13 @@ public:
     // A request to the device ended so: its statistics count it.
     void count(DeviceId device, const ModbusResult &result, double roundTripMs);
 
-    // How long a value stays current after it was read (the device's cycle, generously).
+    // How long a value stays current after it was read: per class, each entry in the
+    // class it is read in (entries not named: live).
     void setAllowance(DeviceId id, qint64 ms);
-    qint64 allowance(DeviceId id) const;
+    void setAllowance(DeviceId id, PollClass pollClass, qint64 ms);
+    void setClasses(DeviceId id, const QHash<QString, PollClass> &classes);
+    qint64 allowance(DeviceId id, PollClass pollClass = PollClass::Live) const;
+    qint64 allowance(DeviceId id, const QString &entryId) const;
 
     // A block arrived: the entries inside it are decoded and current. Returns their ids.
     QStringList store(DeviceId id, const QList<const RegisterEntry *> &entries, quint16 start,
@@ -55,7 +62,17 @@ private:
         std::shared_ptr<const RegisterMap> map;
         QHash<QString, EntryState> values;
         DeviceStatistics stats;
-        qint64 allowanceMs = 10000;
+        std::array<qint64, 3> allowanceMs{10000, 10000, 10000};
+        QHash<QString, PollClass> classes;
+        // The allowance of the class a value was read in: a setting a view has just
+        // moved up is as current as it was a moment ago, until it is read again.
+        QHash<QString, qint64> readAllowanceMs;
+
+        qint64 allowanceOf(const QString &entryId) const
+        {
+            return std::max(allowanceMs[size_t(classes.value(entryId, PollClass::Live))],
+                            readAllowanceMs.value(entryId, 0));
+        }
     };
 
     QHash<DeviceId, Device> m_devices;

@@ -372,10 +372,7 @@ QString CommissioningReport::alarms() const
     int active = 0;
     QStringList unknownWords;
     for (const RegisterEntry &e : m_map.entries()) {
-        if (e.type != ValueType::Bitfield || !e.isReadable() || e.isCommand()
-            || std::none_of(e.bits.cbegin(), e.bits.cend(), [](const BitDefinition &b) {
-                   return !b.reserved && (b.kind == BitKind::Alarm || b.kind == BitKind::Warning);
-               }))
+        if (e.type != ValueType::Bitfield || !e.isReadable() || e.isCommand() || !e.hasAlarmBits())
             continue;
         const EntryState *s = m_states(e.id);
         if (!s || !s->hasValue() || s->validity == Validity::Unknown) {

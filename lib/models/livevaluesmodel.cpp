@@ -11,7 +11,8 @@
 namespace jumo {
 
 LiveValuesModel::LiveValuesModel(const DeviceSource *devices, DeviceId device, QObject *parent)
-    : QAbstractTableModel(parent), m_devices(devices), m_device(device), m_map(devices->deviceMap(device))
+    : QAbstractTableModel(parent), m_devices(devices), m_device(device), m_map(devices->deviceMap(device)),
+      m_interest(devices, device)
 {
     if (m_map) {
         for (const RegisterEntry &e : m_map->entries()) {
@@ -66,6 +67,16 @@ void LiveValuesModel::onEntriesUpdated(DeviceId device, const QStringList &ids)
     }
     if (last >= 0)
         emit dataChanged(index(first, 0), index(last, ColumnCount - 1));
+}
+
+void LiveValuesModel::setShown(const QObject *view, bool shown, const QStringList &entryIds)
+{
+    QStringList ids = entryIds;
+    if (ids.isEmpty()) {
+        for (const RegisterEntry *e : std::as_const(m_rows))
+            ids << e->id;
+    }
+    m_interest.setShown(view, shown, ids);
 }
 
 int LiveValuesModel::rowCount(const QModelIndex &parent) const

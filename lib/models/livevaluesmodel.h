@@ -3,6 +3,7 @@
 #pragma once
 
 #include "bus/devicesource.h"
+#include "models/viewinterest.h"
 
 #include <QAbstractTableModel>
 #include <QTimer>
@@ -31,6 +32,9 @@ public:
 
     int rowOf(const QString &entryId) const { return m_rowOf.value(entryId, -1); }
     QString entryId(int row) const;
+    // A view of these entries (empty: every row) is on screen, or not any more: the line
+    // reads them sooner meanwhile.
+    void setShown(const QObject *view, bool shown, const QStringList &entryIds = {});
 
 private:
     void onEntriesUpdated(DeviceId device, const QStringList &ids);
@@ -41,6 +45,7 @@ private:
     QList<const RegisterEntry *> m_rows;
     QHash<QString, int> m_rowOf;
     QTimer m_ageTimer;
+    ViewInterest m_interest;
 };
 
 } // namespace jumo

@@ -298,8 +298,12 @@ std::optional<int> PublisherProgram::openLines(const QList<LineConfig> &lines)
             if (!map)
                 return 2;   // StationConfig checked the family
             const DeviceId id = bus->addDevice(map, device.address);
+            // The station cannot know what its viewers show: the faceplate counts as
+            // shown, as on the HMI's overview.
             if (m_poll.contains(device.family))
                 bus->setPollEntries(id, m_poll.value(device.family));
+            else
+                bus->shownEntries()->setShown(this, id, map->faceplateEntries(false));
         }
         if (!bus->open()) {
             // A service keeps trying: the adapter may be plugged in later.

@@ -154,6 +154,7 @@ private:
             if (const RegisterEntry *e = map.entry(v.entry); e && v.label.isEmpty())
                 v.label = e->label;
         }
+        map.assignPollClasses();
         return map;
     }
 
@@ -553,7 +554,7 @@ private:
 
         checkKeys(o, {"address", "id", "label", "type", "bytes", "words", "access", "storage", "unit", "configuredUnit",
                       "decimals", "significantDigits", "group", "min", "max", "values", "bits", "activation", "action", "control", "restoreValue", "precondition",
-                      "reserved", "alias", "notes", "erratum", "default"},
+                      "reserved", "alias", "notes", "erratum", "default", "poll"},
                   where);
         e.address = parseHex16(o.value("address"), "address", where).value_or(0);
         e.id = requireString(o, "id", where);
@@ -653,6 +654,14 @@ private:
         if (e.action && (e.type == ValueType::Float || e.type == ValueType::Text))
             fail(where, tr("'action' is for command words (bit fields, enums, integers), not for a %1")
                                 .arg(valueTypeName(e.type)));
+        if (o.contains("poll")) {
+            const QString poll = optionalString(o, "poll", where);
+            e.pollOverride = pollClassFromName(poll);
+            if (!e.pollOverride)
+                fail(where, tr("unknown poll class '%1' (expected alarm, live or setting)").arg(poll.left(40)));
+            else if (!e.isReadable() || !e.alias.isEmpty())
+                fail(where, tr("'poll' is only for entries that are read (not write-only, not an alias)"));
+        }
 
         parseEnumValues(o, e, where);
         parseBits(o, e, where);

@@ -37,7 +37,7 @@ ReadPlan ReadPlanner::plan(const RegisterMap &map, const QStringList &ids)
     return result;
 }
 
-ReadPlan ReadPlanner::plan(const RegisterMap &map, QList<const RegisterEntry *> wanted)
+ReadPlan ReadPlanner::plan(const RegisterMap &map, QList<const RegisterEntry *> wanted, int maxGapWords)
 {
     ReadPlan result;
 
@@ -93,7 +93,8 @@ ReadPlan ReadPlanner::plan(const RegisterMap &map, QList<const RegisterEntry *> 
                                      .arg(limit);
             continue;
         }
-        if (current.count > 0 && firstRun == currentRun) {
+        const int gap = int(e->address) - int(current.end()) - 1;
+        if (current.count > 0 && firstRun == currentRun && (maxGapWords < 0 || gap <= maxGapWords)) {
             const int newEnd = std::max<int>(current.end(), e->lastAddress());
             if (newEnd - current.start + 1 <= limit) {
                 current.count = quint16(newEnd - current.start + 1);

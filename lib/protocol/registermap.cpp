@@ -51,6 +51,16 @@ constexpr std::array<std::pair<BitKind, const char *>, 4> bitKindNames{{
     {BitKind::Status, "status"}, {BitKind::Command, "command"},
 }};
 
+constexpr std::array<std::pair<PollClass, const char *>, 3> pollClassNames{{
+    {PollClass::Alarm, "alarm"}, {PollClass::Live, "live"}, {PollClass::Setting, "setting"},
+}};
+
+// "entry" or "entry.bit": the entry's id.
+QString entryOf(const QString &reference)
+{
+    return reference.section(QLatin1Char('.'), 0, 0);
+}
+
 constexpr std::array<std::pair<WordOrder, const char *>, 4> wordOrderNames{{
     {WordOrder::ABCD, "ABCD"}, {WordOrder::CDAB, "CDAB"},
     {WordOrder::BADC, "BADC"}, {WordOrder::DCBA, "DCBA"},
@@ -113,6 +123,13 @@ std::optional<Access> accessFromName(const QString &name) { return lookup(access
 QString storageName(Storage storage) { return nameOf(storageNames, storage); }
 QString bitKindName(BitKind kind) { return nameOf(bitKindNames, kind); }
 std::optional<BitKind> bitKindFromName(const QString &name) { return lookup(bitKindNames, name); }
+QString pollClassName(PollClass pollClass) { return nameOf(pollClassNames, pollClass); }
+std::optional<PollClass> pollClassFromName(const QString &name) { return lookup(pollClassNames, name); }
+
+PollClass shownClass(PollClass pollClass)
+{
+    return pollClass == PollClass::Setting ? PollClass::Live : PollClass::Alarm;
+}
 QString wordOrderName(WordOrder order) { return nameOf(wordOrderNames, order); }
 std::optional<WordOrder> wordOrderFromName(const QString &name) { return lookup(wordOrderNames, name); }
 
@@ -168,6 +185,13 @@ bool RegisterEntry::isCommand() const
                        [](const BitDefinition &b) { return b.kind == BitKind::Command; });
 }
 
+bool RegisterEntry::hasAlarmBits() const
+{
+    return std::any_of(bits.cbegin(), bits.cend(), [](const BitDefinition &b) {
+        return !b.reserved && (b.kind == BitKind::Alarm || b.kind == BitKind::Warning);
+    });
+}
+
 const BitDefinition *RegisterEntry::bitById(const QString &bitId) const
 {
     for (const BitDefinition &b : bits) {
@@ -191,6 +215,56 @@ const RegisterEntry *RegisterMap::entry(const QString &id) const
 {
     const auto it = m_indexById.constFind(id);
     return it == m_indexById.cend() ? nullptr : &m_entries.at(*it);
+}
+
+QStringList RegisterMap::faceplateEntries(bool scales) const
+{
+    const FaceplateSpec &f = faceplate;
+    QStringList ids = overview;
+    ids << f.primary << f.programSegment << f.programSegments << f.programTimeLeft;
+    for (const FaceplateValue &v : f.values) {
+        ids << v.entry;
+        if (scales)
+            ids << v.scaleFrom;
+    }
+    for (const FaceplateState &s : f.modes)
+        ids << entryOf(s.when);
+    for (const FaceplateState &s : f.programStates)
+        ids << entryOf(s.when);
+    ids.removeAll(QString());
+    ids.removeDuplicates();
+    ids.removeIf([this](const QString &id) {
+        const RegisterEntry *e = entry(id);
+        return !e || !e->isReadable();
+    });
+    return ids;
+}
+
+PollClass RegisterMap::derivePollClass(const RegisterEntry &e) const
+{
+    if (e.pollOverride)
+        return *e.pollOverride;
+    if (e.hasAlarmBits())
+        return PollClass::Alarm;
+    // What the faceplate names as the device's mode or its program's state is read as
+    // often as its alarms: an operator acts on it.
+    for (const QList<FaceplateState> *states : {&faceplate.modes, &faceplate.programStates}) {
+        for (const FaceplateState &s : *states) {
+            if (entryOf(s.when) == e.id)
+                return PollClass::Alarm;
+        }
+    }
+    // A writable value changes only when somebody writes it, sets it on the front panel
+    // or a program moves it; identity words and texts never change on their own.
+    if (e.isWritable() || e.type == ValueType::Text || e.reserved || identity.contains(e.id))
+        return PollClass::Setting;
+    return PollClass::Live;
+}
+
+void RegisterMap::assignPollClasses()
+{
+    for (RegisterEntry &e : m_entries)
+        e.pollClass = derivePollClass(e);
 }
 
 const RegisterEntry *RegisterMap::entryAt(quint16 address) const

@@ -17,6 +17,12 @@ enum class ValueType { Float, Int16, UInt16, Int32, UInt32, Bool, Enum, Bitfield
 enum class Access { Read, Write, ReadWrite };
 enum class Storage { None, Ram, Eeprom };
 enum class BitKind { Alarm, Warning, Status, Command };
+// How urgently an entry is read, from what the map says about it: alarm words (bit fields
+// with alarm or warning bits, the faceplate's mode and program words) every round, live
+// values (measured values, outputs, states) as often as the line allows, settings
+// (parameters, setpoints, identity, texts: values that change only by a write, a front
+// panel or a program) at least every minute. Overridable per entry ("poll").
+enum class PollClass { Alarm, Live, Setting };
 
 // Byte order of a 32-bit value on the wire; the letters are the bytes of the
 // big-endian value in the order they are sent (CDAB: low word at the lower address).
@@ -35,6 +41,10 @@ QString storageName(Storage storage);
 QString bitKindName(BitKind kind);
 std::optional<BitKind> bitKindFromName(const QString &name);
 QString wordOrderName(WordOrder order);
+QString pollClassName(PollClass pollClass);
+std::optional<PollClass> pollClassFromName(const QString &name);
+// One class up (setting to live, live to alarm): what an entry is while a view shows it.
+PollClass shownClass(PollClass pollClass);
 // The number an enum text starts with ("100 A" -> 100), for nominal values kept as enums.
 std::optional<double> leadingNumber(const QString &text);
 std::optional<WordOrder> wordOrderFromName(const QString &name);
@@ -114,6 +124,10 @@ struct RegisterEntry
     QString alias;
     QString notes;
     QString erratum;
+    // The map's own "poll", when it overrides what the entry's kind says.
+    std::optional<PollClass> pollOverride;
+    // What the scheduler reads it as: the override, or derived (RegisterMap::derivePollClass).
+    PollClass pollClass = PollClass::Live;
 
     int wordCount() const;
     quint16 lastAddress() const { return quint16(address + wordCount() - 1); }
@@ -121,6 +135,8 @@ struct RegisterEntry
     bool isWritable() const { return access != Access::Read; }
     bool isCommand() const;
     bool isAction() const { return action; }
+    // A bit field with at least one alarm or warning bit that is not a reserve.
+    bool hasAlarmBits() const;
     const BitDefinition *bitById(const QString &bitId) const;
 };
 
@@ -270,6 +286,13 @@ public:
     void setEntries(QList<RegisterEntry> entries);
 
     const RegisterEntry *entry(const QString &id) const;
+    // The readable entries the faceplate shows, takes its mode and program state from and
+    // (with scales) scales its bars by, with the overview's entries, each once.
+    QStringList faceplateEntries(bool scales = true) const;
+    // The class an entry's kind gives it, unless the map overrides it: see PollClass.
+    PollClass derivePollClass(const RegisterEntry &entry) const;
+    // Sets every entry's pollClass (after the faceplate and identity are known).
+    void assignPollClasses();
     // The entry whose word range contains the address (aliases excluded), or null.
     const RegisterEntry *entryAt(quint16 address) const;
     QString exceptionMeaning(int code) const;

@@ -52,22 +52,35 @@ namespace {
 
 const QString stationName = QStringLiteral("bench");
 
-// The bit each family's devices toggle: one the simulation leaves alone.
+// The alarm or warning bit each family's devices toggle. The Quantrol's alarm bits
+// follow its limit monitors, so its threshold is moved with the bit (the simulation
+// would otherwise put the bit back at its next tick).
 struct Marker
 {
     QString entry;
     QString bit;
+    QString threshold;
 };
 
 const QHash<QString, Marker> &markers()
 {
     static const QHash<QString, Marker> m{
-        {QStringLiteral("ipc300"), {QStringLiteral("malfunction_signal_2"), QStringLiteral("inhibit_peak_current")}},
-        {QStringLiteral("tya200"), {QStringLiteral("malfunction_signals_3"), QStringLiteral("wiring_error")}},
-        {QStringLiteral("dtron300"), {QStringLiteral("binary_inputs"), QStringLiteral("binary_input_4")}},
-        {QStringLiteral("quantrol"), {QStringLiteral("binary_input"), QStringLiteral("input_1")}},
+        {QStringLiteral("ipc300"), {QStringLiteral("malfunction_signal_2"), QStringLiteral("inhibit_peak_current"), {}}},
+        {QStringLiteral("tya200"), {QStringLiteral("malfunction_signals_3"), QStringLiteral("wiring_error"), {}}},
+        {QStringLiteral("dtron300"), {QStringLiteral("program_status"), QStringLiteral("tolerance_limit"), {}}},
+        {QStringLiteral("quantrol"),
+         {QStringLiteral("limit_value_monitoring"), QStringLiteral("limit_value_monitoring_2"),
+          QStringLiteral("limit_2_alarm_value")}},
     };
     return m;
+}
+
+void setMarker(SimulatedDevice *device, bool on)
+{
+    const Marker &marker = markers().value(device->map().family);
+    if (!marker.threshold.isEmpty())
+        device->setNumber(marker.threshold, on ? -1.0e6 : 1.0e6);
+    device->setFlag(marker.entry + QLatin1Char('.') + marker.bit, on);
 }
 
 qint64 wallMs() { return QDateTime::currentMSecsSinceEpoch(); }
@@ -251,6 +264,10 @@ int main(int argc, char **argv)
     option("warmup", "Seconds after every device is online before measuring (default 20).", "20");
     option("seconds", "Seconds measured (default 120).", "120");
     option("change-ms", "A marker bit is toggled this often (default 200).", "200");
+    option("hold-ms",
+           "A marker bit set is cleared again after this long, seen or not; a state no viewer saw "
+           "before it ended counts as missed (default 0: toggled back only once every viewer saw it).",
+           "0");
     parser.addOption({QStringLiteral("publisher"), QStringLiteral("The jumo-publisher program."), QStringLiteral("path"),
                       QStringLiteral(JUMO_BIN_DIR "/jumo-publisher")});
     parser.addOption({QStringLiteral("poll"),
@@ -271,6 +288,7 @@ int main(int argc, char **argv)
     const int warmupS = std::max(0, parser.value(QStringLiteral("warmup")).toInt());
     const int seconds = std::max(5, parser.value(QStringLiteral("seconds")).toInt());
     const int changeMs = std::max(10, parser.value(QStringLiteral("change-ms")).toInt());
+    const int holdMs = std::max(0, parser.value(QStringLiteral("hold-ms")).toInt());
     const std::optional<LineFormat> format = LineFormat::parse(baud, QStringLiteral("8N1"));
     if (!format) {
         std::fprintf(stderr, "baud %d is not a line speed\n", baud);
@@ -318,8 +336,7 @@ int main(int argc, char **argv)
         for (int a = 1; a <= devicesPerLine; ++a) {
             const QString family = families.at((a + l - 1) % families.size());
             SimulatedDevice *device = sim->addDevice(registry.family(family), quint8(a));
-            const Marker &marker = markers().value(family);
-            device->setFlag(marker.entry + QLatin1Char('.') + marker.bit, false);
+            setMarker(device, false);
             simulated.insert(lineName + QLatin1Char(' ') + family + QLatin1Char('@') + QString::number(a), device);
             devices.append(family + QLatin1Char('@') + QString::number(a));
         }
@@ -462,6 +479,8 @@ int main(int argc, char **argv)
     const QStringList keys = simulated.keys();
     int changesMade = 0;
     int changesLost = 0;
+    int statesMissed = 0;             // ended (with --hold-ms) before a viewer saw them
+    QHash<QString, qint64> heldUntil;  // "LINE DEVICE" -> no new change before then
     QTimer changeTimer;
     QObject::connect(&changeTimer, &QTimer::timeout, [&] {
         // A change no viewer reported within 30 s counts as lost.
@@ -476,7 +495,7 @@ int main(int argc, char **argv)
         }
         for (int attempt = 0; attempt < 20; ++attempt) {
             const QString key = keys.at(int(random.bounded(keys.size())));
-            if (changes.contains(key))
+            if (changes.contains(key) || heldUntil.value(key) > now)
                 continue;
             SimulatedDevice *device = simulated.value(key);
             const Marker &marker = markers().value(device->map().family);
@@ -484,9 +503,28 @@ int main(int argc, char **argv)
             Change change;
             change.state = !device->flag(reference);
             change.t0 = wallMs();
-            device->setFlag(reference, change.state);
+            setMarker(device, change.state);
             changes.insert(key, change);
             ++changesMade;
+            if (holdMs > 0) {
+                // Set, held, cleared: the device rests as long again before its next alarm.
+                heldUntil.insert(key, change.t0 + 2 * holdMs);
+                QTimer::singleShot(holdMs, device, [&, key, device, t0 = change.t0] {
+                    const auto held = changes.find(key);
+                    if (held != changes.end() && held->t0 == t0) {
+                        statesMissed += held->seenBy.size() < viewerCount ? 1 : 0;
+                        changes.erase(held);
+                    }
+                    if (!measuring)
+                        return;
+                    Change back;
+                    back.state = false;
+                    back.t0 = wallMs();
+                    setMarker(device, false);
+                    changes.insert(key, back);
+                    ++changesMade;
+                });
+            }
             return;
         }
     });
@@ -517,7 +555,7 @@ int main(int argc, char **argv)
     for (size_t l = 0; l < sims.size(); ++l)
         requests += sims[l]->requestsReceived() - requestsBefore.at(int(l));
     // The last changes get their time to arrive.
-    waitUntil([&] { return changes.isEmpty(); }, 30000);
+    waitUntil([&] { return changes.isEmpty(); }, 30000 + holdMs);
     measuring = false;
     changesLost += int(changes.size());
 
@@ -530,7 +568,9 @@ int main(int argc, char **argv)
                 double(requests) / elapsedS / lineCount);
     std::printf("| published (as a subscriber receives it) | %.0f messages/s, %.0f KiB/s |\n",
                 double(published) / elapsedS, double(publishedBytes) / elapsedS / 1024.0);
-    std::printf("| marker changes / not seen by every viewer | %d / %d |\n", changesMade, changesLost);
+    std::printf("| marker changes / not seen by every viewer | %d / %d |\n", changesMade, changesLost + statesMissed);
+    if (holdMs > 0)
+        std::printf("| alarm states held %d ms that ended before every viewer saw them | %d |\n", holdMs, statesMissed);
     std::printf("| devices that stopped answering for a while (timeouts under load) | %d |\n",
                 conditionLosses - lossesBefore);
     std::printf("| simulator -> viewer | %s |\n", qPrintable(figures(total)));

@@ -96,6 +96,8 @@ private slots:
     void refusesAKeyGivenTwice();
     void precisionFromTheMapOrTheUnit();
     void defaultsAreRead();
+    void pollClassesFromTheMap_data();
+    void pollClassesFromTheMap();
     void builtinMapsLoad();
     void faceplateFromTheMap();
     void userFolderReplacesBuiltinAndReportsBrokenFiles();
@@ -125,6 +127,15 @@ void tst_MapLoader::refusesBadMap_data()
     QTest::newRow("unknown type") << Mutation([](QJsonObject &m) {
         editEntry(m, 0, [](QJsonObject &e) { e["type"] = "double"; });
     }) << "entry 'value_a' (0x0000)" << "unknown type 'double'";
+    QTest::newRow("unknown poll class") << Mutation([](QJsonObject &m) {
+        editEntry(m, 0, [](QJsonObject &e) { e["poll"] = "often"; });
+    }) << "entry 'value_a' (0x0000)" << "unknown poll class 'often'";
+    QTest::newRow("poll class of a write-only entry") << Mutation([](QJsonObject &m) {
+        editEntry(m, 1, [](QJsonObject &e) {
+            e["access"] = "W";
+            e["poll"] = "alarm";
+        });
+    }) << "entry 'mode' (0x0002)" << "'poll' is only for entries that are read";
     QTest::newRow("duplicate id") << Mutation([](QJsonObject &m) {
         editEntry(m, 3, [](QJsonObject &e) { e["id"] = "mode"; });
     }) << "entry 'mode' (0x0004)" << "duplicate id";
@@ -506,6 +517,34 @@ void tst_MapLoader::refusesBadMap_data()
         e["type"] = "bool";
         e.remove("values");
     }) << "entry 'mode' (0x0002)" << "'default' of a boolean must be true or false, not 0";
+}
+
+void tst_MapLoader::pollClassesFromTheMap_data()
+{
+    QTest::addColumn<QString>("entry");
+    QTest::addColumn<QString>("poll");       // the entry's "poll", or empty
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("measured value: live") << "value_a" << "" << "live";
+    QTest::newRow("writable parameter: setting") << "mode" << "" << "setting";
+    QTest::newRow("alarm and warning bits: alarm") << "alarms" << "" << "alarm";
+    QTest::newRow("text: setting") << "name" << "" << "setting";
+    QTest::newRow("override, live to alarm") << "value_a" << "alarm" << "alarm";
+    QTest::newRow("override, alarm to live") << "alarms" << "live" << "live";
+    QTest::newRow("override, setting to live") << "mode" << "live" << "live";
+}
+
+void tst_MapLoader::pollClassesFromTheMap()
+{
+    QFETCH(QString, entry);
+    QFETCH(QString, poll);
+    QFETCH(QString, expected);
+    QJsonObject json = validMap();
+    const int index = QStringList{"value_a", "mode", "alarms", "name"}.indexOf(entry);
+    if (!poll.isEmpty())
+        editEntry(json, index, [&poll](QJsonObject &e) { e["poll"] = poll; });
+    const MapLoadResult r = MapLoader::loadData(QJsonDocument(json).toJson(), "test.json");
+    QVERIFY2(r.ok(), qPrintable(r.errors.join('\n')));
+    QCOMPARE(pollClassName(r.map->entry(entry)->pollClass), expected);
 }
 
 void tst_MapLoader::defaultsAreRead()

@@ -1,5 +1,6 @@
 // The read planner makes as few requests as the family's limit allows, and never reads
 // a write-only register, an undefined address or across one.
+#include "bus/linetiming.h"
 #include "protocol/familyregistry.h"
 #include "protocol/maploader.h"
 #include "protocol/readplanner.h"
@@ -72,6 +73,7 @@ private slots:
     void fullDevicePlan_data();
     void fullDevicePlan();
     void mergesOnlyThroughDefinedRegisters();
+    void bridgesOnlyGapsCheaperThanARequest();
     void respectsWordLimit();
     void refusesWriteOnlyAndUnknown();
     void neverSplitsAValue();
@@ -129,6 +131,27 @@ void tst_ReadPlanner::mergesOnlyThroughDefinedRegisters()
     // Far apart but connected through readable registers: bridged in one request.
     plan = ReadPlanner::plan(map, QStringList{"load_voltage", "device_temperature_c"});
     QCOMPARE(plan.blocks.size(), 1);
+}
+
+void tst_ReadPlanner::bridgesOnlyGapsCheaperThanARequest()
+{
+    // Issue 22: the IPC 300's faceplate was 177 words in 2 requests. A gap is read through
+    // only where its words cost less wire time than one more request.
+    const RegisterMap &map = *registry().family("ipc300");
+    const RegisterEntry *voltage = map.entry("load_voltage");
+    const RegisterEntry *temperature = map.entry("device_temperature_c");
+    const int gap = int(temperature->address) - int(voltage->lastAddress()) - 1;
+    QVERIFY(gap > 0);
+    const QList<const RegisterEntry *> wanted{voltage, temperature};
+    QCOMPARE(ReadPlanner::plan(map, wanted, gap).blocks.size(), 1);
+    QCOMPARE(ReadPlanner::plan(map, wanted, gap - 1).blocks.size(), 2);
+    QCOMPARE(ReadPlanner::plan(map, wanted).blocks.size(), 1);
+
+    // A request's fixed cost in words: a slower line pays more per word than per request.
+    const int at38400 = LineTiming::bridgeableGapWords(*LineFormat::parse(38400, "8N1"), map.protocol);
+    const int at9600 = LineTiming::bridgeableGapWords(*LineFormat::parse(9600, "8N1"), map.protocol);
+    QVERIFY2(at38400 >= 15 && at38400 <= 30, qPrintable(QString::number(at38400)));
+    QVERIFY2(at9600 >= 8 && at9600 < at38400, qPrintable(QString::number(at9600)));
 }
 
 void tst_ReadPlanner::respectsWordLimit()

@@ -61,6 +61,8 @@ private slots:
     void errataAreCorrectedAndRecorded();
     void everyEntryIsWellFormed_data();
     void everyEntryIsWellFormed();
+    void pollClasses_data();
+    void pollClasses();
 };
 
 void tst_RegisterMaps::sectionCounts_data()
@@ -266,6 +268,39 @@ void tst_RegisterMaps::everyEntryIsWellFormed()
         if (e.type == ValueType::Float)
             QCOMPARE(e.wordCount(), 2);
     }
+}
+
+void tst_RegisterMaps::pollClasses_data()
+{
+    QTest::addColumn<QString>("family");
+    QTest::addColumn<QString>("entry");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("ipc300 malfunction bits: alarm") << "ipc300" << "malfunction_signal_1" << "alarm";
+    QTest::newRow("ipc300 faceplate mode word: alarm") << "ipc300" << "manual_mode_active" << "alarm";
+    QTest::newRow("ipc300 load voltage: live") << "ipc300" << "load_voltage" << "live";
+    QTest::newRow("ipc300 setpoint (RAM): setting") << "ipc300" << "input_setpoint" << "setting";
+    QTest::newRow("ipc300 software version (text): setting") << "ipc300" << "software_version" << "setting";
+    QTest::newRow("ipc300 nominal current (identity): setting") << "ipc300" << "nominal_current" << "setting";
+    QTest::newRow("tya200 malfunction bits: alarm") << "tya200" << "malfunction_signals_3" << "alarm";
+    QTest::newRow("tya200 status bits: live") << "tya200" << "binary_signals_1" << "live";
+    QTest::newRow("dtron300 program state (warning bit): alarm") << "dtron300" << "program_status" << "alarm";
+    QTest::newRow("dtron300 controller state (faceplate mode): alarm") << "dtron300" << "controller_status" << "alarm";
+    QTest::newRow("dtron300 process value: live") << "dtron300" << "filtered_process_value" << "live";
+    QTest::newRow("dtron300 EEPROM parameter: setting") << "dtron300" << "ps1_pb1" << "setting";
+    QTest::newRow("dtron300 device format (identity): setting") << "dtron300" << "device_format" << "setting";
+    QTest::newRow("dtron300 sampling time (map says setting)") << "dtron300" << "sampling_cycle_time" << "setting";
+    QTest::newRow("quantrol limit monitoring: alarm") << "quantrol" << "limit_value_monitoring" << "alarm";
+    QTest::newRow("quantrol sampling time (map says setting)") << "quantrol" << "sampling_time" << "setting";
+}
+
+void tst_RegisterMaps::pollClasses()
+{
+    QFETCH(QString, family);
+    QFETCH(QString, entry);
+    QFETCH(QString, expected);
+    const RegisterEntry *e = registry().family(family)->entry(entry);
+    QVERIFY(e);
+    QCOMPARE(pollClassName(e->pollClass), expected);
 }
 
 QTEST_GUILESS_MAIN(tst_RegisterMaps)
