@@ -282,7 +282,8 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::Bus</name>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+90"/>
+        <location filename="../lib/bus/bus.cpp" line="+99"/>
+        <location line="+3"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
@@ -320,8 +321,8 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>&apos;%1&apos; benötigt mehr Wörter, als eine Schreibanfrage umfassen darf</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="-9"/>
-        <location line="+18"/>
+        <location filename="../lib/bus/bus.cpp" line="-12"/>
+        <location line="+21"/>
         <source>the line was reopened</source>
         <translation>die Leitung wurde neu geöffnet</translation>
     </message>
@@ -373,7 +374,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>nicht gehalten: %1 ist nicht als %2 bestätigt</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+288"/>
+        <location filename="../lib/bus/bus.cpp" line="+295"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
@@ -394,7 +395,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>%1 ist nicht als %2 bestätigt (es wird erneut geprüft, sobald es antwortet); setzen Sie das Halten erneut, sobald es bestätigt ist</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+95"/>
         <source>exception %1, %2</source>
         <translation>Exception %1, %2</translation>
     </message>
@@ -407,12 +408,12 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::ClientTransport</name>
     <message>
-        <location filename="../lib/bus/clienttransport.cpp" line="+44"/>
+        <location filename="../lib/bus/clienttransport.cpp" line="+45"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>a request was sent while another was under way</source>
         <translation>eine Anfrage wurde gesendet, während eine andere noch lief</translation>
     </message>
@@ -576,18 +577,18 @@ Leitungen auf stderr sagt, was er erledigt hat.
 <context>
     <name>jumo::CommissioningReport</name>
     <message>
-        <location filename="../lib/commissioning/commissioningreport.cpp" line="+392"/>
+        <location filename="../lib/commissioning/commissioningreport.cpp" line="+389"/>
         <source>(stale)</source>
         <translation>(veraltet)</translation>
     </message>
     <message>
-        <location line="-207"/>
-        <location line="+324"/>
+        <location line="-204"/>
+        <location line="+321"/>
         <source>Commissioning report</source>
         <translation>Inbetriebnahmebericht</translation>
     </message>
     <message>
-        <location line="-365"/>
+        <location line="-362"/>
         <source>(empty)</source>
         <translation>(leer)</translation>
     </message>
@@ -638,12 +639,12 @@ Leitungen auf stderr sagt, was er erledigt hat.
     </message>
     <message>
         <location line="+0"/>
-        <location line="+238"/>
+        <location line="+235"/>
         <source>Date</source>
         <translation>Datum</translation>
     </message>
     <message>
-        <location line="-237"/>
+        <location line="-234"/>
         <source>Cabinet</source>
         <translation>Schaltschrank</translation>
     </message>
@@ -700,12 +701,12 @@ Leitungen auf stderr sagt, was er erledigt hat.
     <message>
         <location line="+8"/>
         <location line="+2"/>
-        <location line="+154"/>
+        <location line="+151"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location line="-156"/>
+        <location line="-153"/>
         <source>Default</source>
         <translation>Standardwert</translation>
     </message>
@@ -730,7 +731,7 @@ Leitungen auf stderr sagt, was er erledigt hat.
         <translation>Zustand</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+26"/>
         <source>%1, bit %2</source>
         <translation>%1, Bit %2</translation>
     </message>
@@ -901,7 +902,7 @@ Leitungen auf stderr sagt, was er erledigt hat.
         <translation>Inbetriebnahmebericht %1</translation>
     </message>
     <message>
-        <location line="-149"/>
+        <location line="-146"/>
         <source>Signal</source>
         <translation>Signal</translation>
     </message>
@@ -929,7 +930,7 @@ Leitungen auf stderr sagt, was er erledigt hat.
         <translation>Gelesen am %1; ein Wert ohne Eintrag unter Zustand ist aktuell. Ein Wert, der nicht gelesen werden konnte, zeigt %2 und den Grund.</translation>
     </message>
     <message>
-        <location line="+111"/>
+        <location line="+108"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
@@ -2962,7 +2963,7 @@ andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal
 <context>
     <name>jumo::LiveValuesModel</name>
     <message>
-        <location filename="../lib/models/livevaluesmodel.cpp" line="+130"/>
+        <location filename="../lib/models/livevaluesmodel.cpp" line="+141"/>
         <source>Value: %1</source>
         <translation>Wert: %1</translation>
     </message>
@@ -3832,7 +3833,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+25"/>
-        <location line="+95"/>
+        <location line="+96"/>
         <source>&apos;%1&apos; is not a readable entry</source>
         <translation>&apos;%1&apos; ist kein lesbarer Eintrag</translation>
     </message>
@@ -3897,15 +3898,15 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Eintrag #%1 (%2)</translation>
     </message>
     <message>
-        <location line="-418"/>
-        <location line="+419"/>
-        <location line="+408"/>
+        <location line="-419"/>
+        <location line="+420"/>
+        <location line="+416"/>
         <location filename="../lib/protocol/overlapcheck.cpp" line="+70"/>
         <source>entry &apos;%1&apos; (%2)</source>
         <translation>Eintrag &apos;%1&apos; (%2)</translation>
     </message>
     <message>
-        <location line="-398"/>
+        <location line="-406"/>
         <source>id must be lower case letters, digits and &apos;_&apos;</source>
         <translation>die Kennung darf nur aus Kleinbuchstaben, Ziffern und &apos;_&apos; bestehen</translation>
     </message>
@@ -3960,7 +3961,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Adressbereich %1..%2 ist leer</translation>
     </message>
     <message>
-        <location line="-322"/>
+        <location line="-323"/>
         <source>malformed JSON at byte %1: &apos;%2&apos; given twice in one object</source>
         <translation>fehlerhaftes JSON bei Byte %1: &apos;%2&apos; zweimal im selben Objekt angegeben</translation>
     </message>
@@ -3975,7 +3976,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;configuredUnit&apos; nennt &apos;%1&apos;, das &apos;configuredUnits&apos; nicht definiert</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+55"/>
         <source>&apos;%1&apos; must be a readable bool entry or a single bit of a readable bit field</source>
         <translation>&apos;%1&apos; muss ein lesbarer Bool-Eintrag oder ein einzelnes Bit eines lesbaren Bitfelds sein</translation>
     </message>
@@ -4143,6 +4144,16 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+3"/>
         <source>&apos;action&apos; is for command words (bit fields, enums, integers), not for a %1</source>
         <translation>&apos;action&apos; ist für Befehlswörter (Bitfelder, Aufzählungen, Ganzzahlen), nicht für ein %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>unknown poll class &apos;%1&apos; (expected alarm, live or setting)</source>
+        <translation>unbekannte Abfrageklasse &apos;%1&apos; (erwartet: alarm, live oder setting)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&apos;poll&apos; is only for entries that are read (not write-only, not an alias)</source>
+        <translation>&apos;poll&apos; ist nur für Einträge, die gelesen werden (nicht nur schreibbar, kein Alias)</translation>
     </message>
     <message>
         <location line="+17"/>
@@ -4413,7 +4424,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>der Broker hat innerhalb der Keepalive-Zeit nicht geantwortet</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+70"/>
         <source>cannot make an MQTT client: %1</source>
         <translation>MQTT-Client lässt sich nicht anlegen: %1</translation>
     </message>
@@ -4443,7 +4454,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Der letzte Wille (Last Will) lässt sich nicht setzen: %1</translation>
     </message>
     <message>
-        <location line="+174"/>
+        <location line="+179"/>
         <source>the broker refused the connection: %1</source>
         <translation>Der Broker hat die Verbindung abgelehnt: %1</translation>
     </message>
@@ -4575,7 +4586,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../ui/parametereditor.cpp" line="+168"/>
+        <location filename="../ui/parametereditor.cpp" line="+170"/>
         <source>Confirmed by read-back: %1</source>
         <translation>Durch Rücklesen bestätigt: %1</translation>
     </message>
@@ -5472,7 +5483,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::PollSelection</name>
     <message>
-        <location filename="../lib/bus/pollselection.cpp" line="+64"/>
+        <location filename="../lib/bus/pollselection.cpp" line="+40"/>
         <source>&apos;%1&apos; is no entry of %2 (jumoctl map %2 lists them) nor &apos;faceplate&apos; or &apos;alarms&apos;</source>
         <translation>&apos;%1&apos; ist weder ein Eintrag von %2 (jumoctl map %2 listet sie auf) noch &apos;faceplate&apos; oder &apos;alarms&apos;</translation>
     </message>
@@ -5783,6 +5794,11 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>ms</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>Start even when a station of this name is online at the broker: that publisher stops (without it, this one refuses to start, exit code 2).</source>
+        <translation>Auch starten, wenn eine Station dieses Namens am Broker online ist: dieser Publisher stoppt dann (ohne die Option verweigert dieser den Start, Exit-Code 2).</translation>
+    </message>
+    <message>
         <location line="+18"/>
         <source>unexpected argument &apos;%1&apos;</source>
         <translation>unerwartetes Argument &apos;%1&apos;</translation>
@@ -5857,11 +5873,21 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <source>&apos;%1&apos; cannot be a station name: it is one topic level, without &apos;/&apos;, &apos;+&apos; and &apos;#&apos;</source>
         <translation>&apos;%1&apos; kann kein Stationsname sein: er ist eine Topic-Ebene, ohne &apos;/&apos;, &apos;+&apos; und &apos;#&apos;</translation>
     </message>
+    <message>
+        <location line="+9"/>
+        <source>another publisher took over station %1 (--take-over): stopped</source>
+        <translation>ein anderer Publisher hat die Station %1 übernommen (--take-over): gestoppt</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>a station named %1 is online at %2: give this one another --name, or --take-over to replace it</source>
+        <translation>eine Station namens %1 ist an %2 online: geben Sie dieser einen anderen --name oder --take-over, um jene zu ersetzen</translation>
+    </message>
 </context>
 <context>
     <name>jumo::ReadPlanner</name>
     <message>
-        <location filename="../lib/bus/devicepoll.cpp" line="+53"/>
+        <location filename="../lib/bus/devicepoll.cpp" line="+89"/>
         <location filename="../lib/protocol/readplanner.cpp" line="+32"/>
         <source>&apos;%1&apos; is not an entry of %2</source>
         <translation>&apos;%1&apos; ist kein Eintrag von %2</translation>
@@ -5885,7 +5911,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RegisterMap</name>
     <message>
-        <location filename="../lib/protocol/registermap.cpp" line="+222"/>
+        <location filename="../lib/protocol/registermap.cpp" line="+296"/>
         <source>the gateway&apos;s path to the device is unavailable (sent by the gateway, the request did not reach the device)</source>
         <translation>der Weg des Gateways zum Gerät ist nicht verfügbar (vom Gateway gesendet, die Anfrage hat das Gerät nicht erreicht)</translation>
     </message>
@@ -5987,17 +6013,17 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RemoteLines</name>
     <message>
-        <location filename="../lib/mqtt/remotelines.cpp" line="+156"/>
+        <location filename="../lib/mqtt/remotelines.cpp" line="+251"/>
         <source>the station has not reported this line</source>
         <translation>die Station hat diese Leitung nicht gemeldet</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+13"/>
         <source>the broker cannot be reached: values are the last ones received</source>
         <translation>der Broker ist nicht erreichbar: die Werte sind die zuletzt empfangenen</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+2"/>
         <source>station %1 has not said that it is online</source>
         <translation>Station %1 hat nicht gemeldet, dass sie online ist</translation>
     </message>
@@ -6012,15 +6038,84 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Station %1 ist offline (%2)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>station %1 has not been heard for %2 s</source>
         <translation>von Station %1 kam seit %2 s nichts</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>receiving the state of station %1</source>
+        <translation>der Zustand der Station %1 wird empfangen</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::RemoteStation</name>
+    <message>
+        <location filename="../lib/mqtt/remotestation.cpp" line="+47"/>
+        <source>a message of %1 bytes, over the limit of %2</source>
+        <translation>eine Nachricht von %1 Byte, über der Grenze von %2</translation>
+    </message>
+    <message>
+        <location line="+170"/>
+        <source>more than %1 stations publish under %2/: use --remote-station NAME</source>
+        <translation>mehr als %1 Stationen veröffentlichen unter %2/: --remote-station NAME verwenden</translation>
+    </message>
+    <message>
+        <location line="+59"/>
+        <source>not a station status</source>
+        <translation>kein Stationsstatus</translation>
+    </message>
+    <message>
+        <location line="+86"/>
+        <source>not a device order</source>
+        <translation>keine Gerätereihenfolge</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>not a line state</source>
+        <translation>kein Leitungszustand</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>more than %1 lines in one station</source>
+        <translation>mehr als %1 Leitungen in einer Station</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <location line="+54"/>
+        <source>its info does not name this device</source>
+        <translation>ihre Info nennt dieses Gerät nicht</translation>
+    </message>
+    <message>
+        <location line="-48"/>
+        <source>more than %1 devices in one station</source>
+        <translation>mehr als %1 Geräte in einer Station</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>no info for this device, and too much waiting for one</source>
+        <translation>keine Info für dieses Gerät, und zu viel wartet auf eine</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>not a device condition</source>
+        <translation>kein Gerätezustand</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>no entry of %1</source>
+        <translation>kein Eintrag von %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>not a value (or its validity and status disagree)</source>
+        <translation>kein Wert (oder seine Gültigkeit und sein Status widersprechen sich)</translation>
     </message>
 </context>
 <context>
     <name>jumo::RemoteWindow</name>
     <message>
-        <location filename="../ui/remotewindow.cpp" line="+45"/>
+        <location filename="../ui/remotewindow.cpp" line="+48"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
@@ -6060,12 +6155,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Zustand</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>JUMO HMI remote view: %1 [read-only]</source>
         <translation>JUMO HMI Fernansicht: %1 [nur lesen]</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+11"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -6080,7 +6175,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Fernansicht: Werte, wie die Stationen sie an den Broker senden. Von hier aus kann nichts geschrieben werden.</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+44"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -6100,9 +6195,9 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&amp;Kompakte Übersicht</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>%1/%2/%3 is of a family this program has no map of: not shown</source>
-        <translation>%1/%2/%3 gehört zu einer Familie, für die dieses Programm keine Registertabelle hat: nicht angezeigt</translation>
+        <location line="+21"/>
+        <source>Not shown: %1 (%2)</source>
+        <translation>Nicht angezeigt: %1 (%2)</translation>
     </message>
     <message>
         <location line="+36"/>
@@ -6116,11 +6211,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+2"/>
+        <location line="+49"/>
         <source>line lost</source>
         <translation>Leitung verloren</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-47"/>
         <source>Line lost: %1</source>
         <translation>Leitung verloren: %1</translation>
     </message>
@@ -6135,12 +6231,37 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Getrennt: %1</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
+        <source>connected</source>
+        <translation>verbunden</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>disconnected</source>
+        <translation>getrennt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+1"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+128"/>
+        <source>This broker lets anyone publish station data: values and liveness may be forged.</source>
+        <translation>Dieser Broker lässt jeden Stationsdaten veröffentlichen: Werte und Lebenszeichen können gefälscht sein.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>This viewer&apos;s own user could publish into a station&apos;s topics; give the broker users and an ACL (README, &quot;MQTT&quot;).</source>
+        <translation>Der eigene Benutzer dieses Betrachters könnte in die Topics einer Station veröffentlichen; richten Sie am Broker Benutzer und eine ACL ein (README, &quot;MQTT&quot;).</translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <source>Broker %1: connected</source>
         <translation>Broker %1: verbunden</translation>
     </message>
@@ -6154,10 +6275,23 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <source>Broker %1: not reachable (%2); values are the last ones received</source>
         <translation>Broker %1: nicht erreichbar (%2); die Werte sind die zuletzt empfangenen</translation>
     </message>
+    <message numerus="yes">
+        <location line="+19"/>
+        <source>%1 undid %n message(s) of other clients</source>
+        <translation>
+            <numerusform>%1 hat %n Nachricht anderer Clients rückgängig gemacht</numerusform>
+            <numerusform>%1 hat %n Nachrichten anderer Clients rückgängig gemacht</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+6"/>
+        <location line="+3"/>
         <source>Live: %1</source>
         <translation>Aktiv: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Online, receiving its state: %1</source>
+        <translation>Online, empfängt seinen Zustand: %1</translation>
     </message>
     <message>
         <location line="+2"/>
