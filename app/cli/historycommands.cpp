@@ -7,6 +7,7 @@
 #include "logs/eventlog.h"
 #include "protocol/csv.h"
 #include "protocol/familyregistry.h"
+#include "protocol/printable.h"
 #include "protocol/valuecodec.h"
 
 #include <QJsonArray>
@@ -26,10 +27,11 @@ QString isoTime(qint64 ms)
     return QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC).toString(Qt::ISODateWithMs);
 }
 
+// For text and CSV: a device text's control characters as \xHH (JSON escapes its own).
 QString valueText(const HistoryPoint &p, double number)
 {
     if (!p.text.isEmpty())
-        return p.text;
+        return printable(p.text);
     return std::isnan(number) ? QString() : ValueCodec::formatFloat(number);
 }
 
@@ -214,7 +216,7 @@ int HistoryCommands::history(const QStringList &arguments)
                         records.append(o);
                     } else if (csv) {
                         m_out << isoTime(p.timeMs) << ',' << csvField(key.name()) << ',' << csvField(entry) << ','
-                              << csvField(valueText(p, p.value)) << ',' << csvField(unit) << ','
+                              << csvField(valueText(p, p.value)) << ',' << csvField(printable(unit)) << ','
                               << sampleStateName(p.state) << ',' << sampleValidityName(p.state) << ',' << resolution
                               << ',' << (r.minute ? valueText(p, p.minimum) : QString()) << ','
                               << (r.minute ? valueText(p, p.mean) : QString()) << ','
@@ -223,7 +225,9 @@ int HistoryCommands::history(const QStringList &arguments)
                         const QString value = valueText(p, p.value);
                         m_out << QDateTime::fromMSecsSinceEpoch(p.timeMs).toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz"))
                               << "  " << entry << "  "
-                              << (value.isEmpty() ? QStringLiteral("-") : unit.isEmpty() ? value : value + QLatin1Char(' ') + unit)
+                              << (value.isEmpty()  ? QStringLiteral("-")
+                                  : unit.isEmpty() ? value
+                                                   : value + QLatin1Char(' ') + printable(unit))
                               << "  " << sampleStateName(p.state);
                         if (r.minute)
                             m_out << "  " << tr("(minute: %1 to %2, mean %3)")

@@ -359,7 +359,10 @@ void LineCommands::lineLost(qsizetype index, const QString &message)
         line.scanner->cancel();
         return;
     }
-    finish(exitcode::Failed);
+    // A write under way when the line went ends as unknown from the event loop, after
+    // this: its outcome is said and audited first, and it outweighs the loss.
+    QMetaObject::invokeMethod(
+            this, [this] { finish(m_uncertain ? exitcode::Uncertain : exitcode::Failed); }, Qt::QueuedConnection);
 }
 
 bool LineCommands::isDeviceName(const QString &text)

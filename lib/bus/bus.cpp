@@ -96,10 +96,11 @@ bool Bus::open()
 void Bus::close()
 {
     m_line.close();
-    abortQueued(tr("the line was closed"));
     // The request under way ends now (a write as unknown): the transport says so only
     // from the event loop, when whoever closed the line may be gone (a CLI on a signal).
+    // Then the queue, with what its transaction asked next.
     loseInFlight(tr("the line was closed"));
+    abortQueued(tr("the line was closed"));
     invalidateAll(ReadError::LineClosed);
     m_identities.forgetAll();
 }
@@ -125,6 +126,10 @@ void Bus::onStateChanged(LineState state)
 void Bus::onLineLost(const QString &reason)
 {
     qCWarning(lcBus).noquote() << reason;
+    // The request under way is lost with the line (a write: unknown), said before the
+    // loss itself: whoever ends on the loss has its outcome and audit record first. Then
+    // the queue, with what its transaction asked next (a repeat of a write).
+    loseInFlight(reason);
     abortQueued(reason);
     invalidateAll(ReadError::LineLost);
     m_identities.forgetAll();

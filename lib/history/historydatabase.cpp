@@ -1,11 +1,16 @@
 #include "history/historydatabase.h"
 
+#include "protocol/regularfile.h"
+
 #include <QAtomicInteger>
 #include <QDir>
 #include <QFileInfo>
 #include <QSqlError>
 #include <QSqlQuery>
 #include <QVariant>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace jumo {
 
@@ -89,6 +94,18 @@ bool HistoryDatabase::open(bool writable, QString *error)
                 *error = tr("no history at %1").arg(m_location.path);
             close();
             return false;
+        }
+        if (info.exists() || info.isSymLink()) {
+            // SQLite would block in open() on a FIFO, and read a device: regular files only.
+            QString why;
+            const int fd = RegularFile::openDescriptor(m_location.path, O_RDONLY, &why);
+            if (fd < 0) {
+                if (error)
+                    *error = why;
+                close();
+                return false;
+            }
+            ::close(fd);
         }
         if (writable)
             QDir().mkpath(info.absolutePath());

@@ -24,6 +24,7 @@ public:
         ProtocolIdChanged,   // the right reply with protocol id 1
         JunkAfterReply,      // the right reply and 13 junk bytes behind it
         LengthTwoShort,      // the right reply with an MBAP length 2 bytes short
+        CutMidReply,         // the device acts; half its reply, then the connection is reset
     };
 
     explicit LyingGateway(SimulatorLine *line) : m_line(line)
@@ -103,6 +104,11 @@ private:
             case Lie::LengthTwoShort:
                 reply[5] = char(quint8(reply[5]) - 2);
                 break;
+            case Lie::CutMidReply:
+                socket->write(reply.left(reply.size() / 2));
+                socket->flush();
+                socket->abort();
+                return;
             default:
                 break;
             }

@@ -11,6 +11,8 @@
 #include "sim/simulatorserver.h"
 #include "testpeers.h"
 
+#include <QDir>
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -201,6 +203,7 @@ private slots:
     void lyingGatewayNeverGivesAnotherUnitsValue();
     void lyingGatewayNeverConfirmsAWrite_data();
     void lyingGatewayNeverConfirmsAWrite();
+    void connectionCutUnderAWriteLeavesItUnknown();
     void badGatewayFrameDoesNotCutADeviceOff_data();
     void badGatewayFrameDoesNotCutADeviceOff();
     void deviceServerLateRepliesAreNeverTaken();
@@ -707,6 +710,27 @@ void tst_LineKinds::lyingGatewayNeverConfirmsAWrite()
     QVERIFY2(outcome.message.contains("not sent again"), qPrintable(outcome.message));
     QTest::qWait(1000);
     QCOMPARE(s.line.writeRequestsReceived(), frames + 1);
+}
+
+void tst_LineKinds::connectionCutUnderAWriteLeavesItUnknown()
+{
+    // The device took the value; the gateway's connection broke in the middle of the
+    // reply. jumoctl says unknown (exit 3), not only "line lost", and audits the write.
+    Lying s;
+    QVERIFY(prepare(s));
+    s.bus.close();
+    s.gateway.lie(1, LyingGateway::Lie::CutMidReply, 1, true);
+    const int frames = s.line.writeRequestsReceived();
+    const Run r = run({"write", "--port", s.gateway.url(), "--baud", "19200", "ipc300@1", "input_setpoint=43.5"});
+    QVERIFY2(r.code == 3, qPrintable(QString::number(r.code) + ": " + r.err));
+    QVERIFY2(r.err.contains("unknown, check the device"), qPrintable(r.err));
+    QCOMPARE(s.line.writeRequestsReceived(), frames + 1);
+    QFile audit(QDir(m_logs.path()).filePath("write-audit.jsonl"));
+    QVERIFY(audit.open(QIODevice::ReadOnly));
+    const QList<QByteArray> records = audit.readAll().trimmed().split('\n');
+    const QJsonObject last = QJsonDocument::fromJson(records.constLast()).object();
+    QCOMPARE(last["entry"].toString(), QString("input_setpoint"));
+    QCOMPARE(last["result"].toString(), QString("unknown"));
 }
 
 void tst_LineKinds::badGatewayFrameDoesNotCutADeviceOff_data()

@@ -1420,21 +1420,21 @@ void TstMqtt::lineLossPublishesEachConditionOnce()
 
 void TstMqtt::ageIsOfTheLastRead()
 {
-    // A value read every cycle and never changed: its age is that of the last cycle, not
-    // of the change the station last published.
+    // A value read every cycle and never changed (an alarm word, read every round): its
+    // age is that of the last cycle, not of the change the station last published.
     QVERIFY(m_broker->start());
     QVERIFY(startPublisher(brokerUrl(), {QStringLiteral("--heartbeat"), QStringLiteral("200")}));
     auto mirror = startMirror();
     QVERIFY(mirror);
     QTRY_VERIFY_WITH_TIMEOUT(everythingCurrent(*mirror), 30000);
     const DeviceId id = *mirror->findDevice(station, "line1", "ipc300@1");
-    const QDateTime changed = mirror->published(id, "device_name")->read;
+    const QDateTime changed = mirror->published(id, "malfunction_signal_1")->read;
     QVERIFY(changed.isValid());
-    const qint64 firstGood = mirror->entryState(id, "device_name")->goodMs;
+    const qint64 firstGood = mirror->entryState(id, "malfunction_signal_1")->goodMs;
     QSignalSpy read(mirror.get(), &RemoteStation::deviceRead);
     QTRY_VERIFY_WITH_TIMEOUT(mirror->device(id)->cycle > changed.addSecs(2), 30000);
-    QCOMPARE(mirror->published(id, "device_name")->read, changed);   // no new publication of it
-    QVERIFY(mirror->entryState(id, "device_name")->goodMs >= firstGood + 2000);
+    QCOMPARE(mirror->published(id, "malfunction_signal_1")->read, changed);   // no new publication of it
+    QVERIFY(mirror->entryState(id, "malfunction_signal_1")->goodMs >= firstGood + 2000);
     QVERIFY(!read.isEmpty());
     // The viewer's lines carry it to the live values' Age column.
     RemoteLines lines(mirror.get());
@@ -1442,7 +1442,7 @@ void TstMqtt::ageIsOfTheLastRead()
     const DeviceId mirrored = line->device("ipc300", 1);
     read.clear();
     QVERIFY(read.wait(10000));
-    QVERIFY(line->clockMs() - line->entryState(mirrored, "device_name")->goodMs < 5000);
+    QVERIFY(line->clockMs() - line->entryState(mirrored, "malfunction_signal_1")->goodMs < 5000);
 }
 
 void TstMqtt::lostSinceIsWhenTheViewerLostContact()

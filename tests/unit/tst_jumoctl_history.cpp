@@ -13,6 +13,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <sys/stat.h>
+
 using namespace jumo;
 using namespace jumo::test;
 
@@ -25,6 +27,7 @@ private slots:
     void csvHasEveryRecord();
     void jsonHasEveryRecord();
     void stationFileFindsItsHistory();
+    void deviceTextsKeepTheTerminal();
     void refused_data();
     void refused();
 
@@ -81,6 +84,10 @@ void tst_JumoctlHistory::initTestCase()
     s.text.clear();
     s.value = 1;
     store.record(s);
+    // A device text that would clear the terminal and turn it red.
+    s.series = store.series({{"hall", "b", "ipc300@1"}, "device_name", false, ""});
+    s.text = "\x1b[2J\x1b[31mEVIL\aline";
+    store.record(s);
     store.flush();
     QTRY_VERIFY_WITH_TIMEOUT(!written.isEmpty(), 20000);
 }
@@ -127,6 +134,20 @@ void tst_JumoctlHistory::stationFileFindsItsHistory()
     QVERIFY2(lines[1].endsWith("  load_voltage  -  line_lost"), qPrintable(lines[1]));
 }
 
+void tst_JumoctlHistory::deviceTextsKeepTheTerminal()
+{
+    for (const QString &format : {QString(), QStringLiteral("--csv")}) {
+        QStringList arguments{"history", "--db", m_db, "b/ipc300@1", "device_name", "--from", iso(m_t0 - 1000),
+                              "--to", iso(m_t0 + 60000)};
+        if (!format.isEmpty())
+            arguments << format;
+        const Run r = run(arguments);
+        QCOMPARE(r.code, 0);
+        QVERIFY2(r.out.contains("\\x1b[2J\\x1b[31mEVIL\\x07line"), qPrintable(r.out));
+        QVERIFY2(!r.out.contains(QChar(0x1b)) && !r.out.contains(QChar(0x07)), qPrintable(format));
+    }
+}
+
 void tst_JumoctlHistory::refused_data()
 {
     QTest::addColumn<QStringList>("arguments");
@@ -154,6 +175,9 @@ void tst_JumoctlHistory::refused_data()
     QTest::newRow("a password in the URL") << QStringList{"--db", "postgresql://u:pw@db/h", "a/ipc300@1", "power"} << 2
                                            << "a password in the address can be read by every user";
     QTest::newRow("no entry") << QStringList{"--db", "DB", "a/ipc300@1"} << 2 << "wrong number of arguments";
+    // SQLite would wait in open() for a writer to the FIFO, for ever.
+    QTest::newRow("a FIFO") << QStringList{"--db", "FIFO", "a/ipc300@1", "power"} << 1 << "not a regular file";
+    QTest::newRow("a folder") << QStringList{"--db", "FOLDER", "a/ipc300@1", "power"} << 1 << "not a regular file";
 }
 
 void tst_JumoctlHistory::refused()
@@ -163,6 +187,10 @@ void tst_JumoctlHistory::refused()
     QFETCH(QString, error);
     arguments.replaceInStrings(QRegularExpression("^DB$"), m_db);
     arguments.replaceInStrings(QRegularExpression("^S$"), m_station);
+    QTemporaryDir dir;
+    QVERIFY(::mkfifo(QFile::encodeName(dir.filePath("fifo.sqlite")).constData(), 0600) == 0);
+    arguments.replaceInStrings(QRegularExpression("^FIFO$"), dir.filePath("fifo.sqlite"));
+    arguments.replaceInStrings(QRegularExpression("^FOLDER$"), dir.path());
     const Run r = run(QStringList{"history"} + arguments);
     QCOMPARE(r.code, code);
     QVERIFY2(r.err.contains(error), qPrintable(r.err));
@@ -171,3 +199,4 @@ void tst_JumoctlHistory::refused()
 
 QTEST_GUILESS_MAIN(tst_JumoctlHistory)
 #include "tst_jumoctl_history.moc"
+

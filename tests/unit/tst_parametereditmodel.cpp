@@ -7,6 +7,7 @@
 #include "bus/entrystate.h"
 #include "fakeline.h"
 #include "models/parametereditmodel.h"
+#include "models/viewinterest.h"
 #include "bus/valuetext.h"
 #include "protocol/valuecodec.h"
 
@@ -378,7 +379,10 @@ void tst_ParameterEditModel::readBackShowsAtOnce()
     QCOMPARE(cell.data().toString(), QString("5000"));
     QCOMPARE(cell.data(ParameterEditModel::ValidityRole).toInt(), int(Validity::Current));
     QVERIFY(!changed.isEmpty());   // the view is told, not left to the next poll
-    // A poll after the write reads what the device has now.
+    // A poll after the write reads what the device has now: soon, while the editor shows
+    // the parameter (a setting not shown is read only about once a minute).
+    ViewInterest shown(line.bus.get(), device);
+    shown.setShown(&model, true, {"power_limit"});
     line.sim(7)->setNumber("power_limit", 4500);
     QVERIFY(line.runUntil([&] { return cell.data().toString() == "4500"; }, 20000));
 }
