@@ -301,7 +301,7 @@ PollOutcome DevicePoll::finished(int block, const ModbusResult &result, int maxR
     case ModbusResult::Status::Exception:
         if (result.exceptionCode == illegalDataAddress) {
             markSuccess(out);
-            isolate(block, out, now);
+            isolate(block, out);
             if (!out.retry)
                 checkCycle(now, out, polling);
             return out;
@@ -379,7 +379,7 @@ void DevicePoll::checkCycle(qint64 now, PollOutcome &outcome, bool polling)
     finishCycle(now, outcome);
 }
 
-void DevicePoll::isolate(int block, PollOutcome &out, qint64 now)
+void DevicePoll::isolate(int block, PollOutcome &out)
 {
     // A smaller model lacks an address of the block: halve it until the one entry is
     // found; the rest is read, that entry leaves the plan for the session.
@@ -396,7 +396,7 @@ void DevicePoll::isolate(int block, PollOutcome &out, qint64 now)
     }
     // One entry left: asked once more, so a single garbled answer never hides it.
     if (++m_attempts[block] <= 1) {
-                out.retry = true;
+        out.retry = true;
         return;
     }
     m_unavailable.insert(whole.entries.first()->id);
@@ -405,7 +405,6 @@ void DevicePoll::isolate(int block, PollOutcome &out, qint64 now)
     out.unavailable = whole.entries;
     m_info.plan.blocks.removeAt(block);
     m_attempts.removeAt(block);
-
 }
 
 void DevicePoll::finishCycle(qint64 now, PollOutcome &outcome)

@@ -132,7 +132,7 @@ private:
     void replan();
     qint64 doneMs(const ReadBlock &block) const;
     bool forced(const ReadBlock &block) const;
-    void isolate(int block, PollOutcome &outcome, qint64 now);
+    void isolate(int block, PollOutcome &outcome);
     void markRead(const ReadBlock &block, qint64 now, bool good);
     void checkCycle(qint64 now, PollOutcome &outcome, bool polling);
     void finishCycle(qint64 now, PollOutcome &outcome);
