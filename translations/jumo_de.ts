@@ -282,8 +282,8 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::Bus</name>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+99"/>
-        <location line="+3"/>
+        <location filename="../lib/bus/bus.cpp" line="+102"/>
+        <location line="+1"/>
         <source>the line was closed</source>
         <translation>die Leitung wurde geschlossen</translation>
     </message>
@@ -321,8 +321,8 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>&apos;%1&apos; benötigt mehr Wörter, als eine Schreibanfrage umfassen darf</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="-12"/>
-        <location line="+21"/>
+        <location filename="../lib/bus/bus.cpp" line="-13"/>
+        <location line="+22"/>
         <source>the line was reopened</source>
         <translation>die Leitung wurde neu geöffnet</translation>
     </message>
@@ -374,7 +374,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>nicht gehalten: %1 ist nicht als %2 bestätigt</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+295"/>
+        <location filename="../lib/bus/bus.cpp" line="+299"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
@@ -1736,7 +1736,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
 <context>
     <name>jumo::HistoryCommands</name>
     <message>
-        <location filename="../app/cli/historycommands.cpp" line="+75"/>
+        <location filename="../app/cli/historycommands.cpp" line="+77"/>
         <source>Prints the recorded values of a device&apos;s entries from FROM to TO with their state and validity: every sample kept, and one-minute rows (minimum, mean, maximum) where the samples are thinned out. Reads the station&apos;s history (--station FILE: its file in the log folder) or the database given by --db; no line is opened.</source>
         <translation>Gibt die aufgezeichneten Werte der Einträge eines Geräts von FROM bis TO mit Zustand und Gültigkeit aus: jeden aufbewahrten Messwert und Minutenzeilen (Minimum, Mittelwert, Maximum), wo die Messwerte ausgedünnt sind. Liest die Historie der Station (--station FILE: ihre Datei im Protokollordner) oder die mit --db angegebene Datenbank; es wird keine Leitung geöffnet.</translation>
     </message>
@@ -1800,12 +1800,12 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <location line="+4"/>
         <location line="+46"/>
         <location line="+5"/>
-        <location line="+90"/>
+        <location line="+92"/>
         <source>jumoctl history: %1</source>
         <translation>jumoctl history: %1</translation>
     </message>
     <message>
-        <location line="-135"/>
+        <location line="-137"/>
         <source>give at most one of --csv and --json</source>
         <translation>höchstens eines von --csv und --json angeben</translation>
     </message>
@@ -1855,7 +1855,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>%1 ist für %2 nicht aufgezeichnet (aufgezeichnet: %3)</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+46"/>
         <source>(minute: %1 to %2, mean %3)</source>
         <translation>(Minute: %1 bis %2, Mittelwert %3)</translation>
     </message>
@@ -1863,7 +1863,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
 <context>
     <name>jumo::HistoryDatabase</name>
     <message>
-        <location filename="../lib/history/historydatabase.cpp" line="+72"/>
+        <location filename="../lib/history/historydatabase.cpp" line="+77"/>
         <source>cannot open the history %1: Qt&apos;s %2 driver is not installed (%3)</source>
         <translation>die Historie %1 kann nicht geöffnet werden: Qts Treiber %2 ist nicht installiert (%3)</translation>
     </message>
@@ -1873,7 +1873,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>keine Historie unter %1</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+25"/>
         <location line="+11"/>
         <source>open</source>
         <translation>geöffnet</translation>
@@ -2197,12 +2197,12 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
     <message>
         <location line="+0"/>
         <location line="+2"/>
-        <location line="+768"/>
+        <location line="+771"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-768"/>
+        <location line="-771"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
@@ -2213,12 +2213,12 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
     </message>
     <message>
         <location line="+0"/>
-        <location line="+768"/>
+        <location line="+771"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-765"/>
+        <location line="-768"/>
         <source>Never write to any line (control-room mode; the system configuration can set it for everyone, a station file for one line).</source>
         <translation>Auf keine Leitung schreiben (Leitwarten-Modus; die Systemkonfiguration kann ihn für alle festlegen, eine Stationsdatei für eine Leitung).</translation>
     </message>
@@ -2273,7 +2273,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>Leitung %1: %2</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+59"/>
         <source>&apos;%1&apos; is not a device: use FAMILY@ADDRESS, e.g. ipc300@1 (families: %2)</source>
         <translation>&apos;%1&apos; ist kein Gerät: FAMILY@ADDRESS verwenden, z. B. ipc300@1 (Gerätefamilien: %2)</translation>
     </message>
@@ -2374,8 +2374,8 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>Erste Adresse (Standard 1).</translation>
     </message>
     <message>
-        <location line="-375"/>
-        <location line="+375"/>
+        <location line="-378"/>
+        <location line="+378"/>
         <location line="+1"/>
         <source>address</source>
         <translation>Adresse</translation>
@@ -2557,7 +2557,7 @@ das nicht antwortet; 4 eine andere Familie an der Adresse.</translation>
         <translation>Name</translation>
     </message>
     <message>
-        <location line="-1202"/>
+        <location line="-1205"/>
         <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
         <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
     </message>
@@ -2577,7 +2577,7 @@ das nicht antwortet; 4 eine andere Familie an der Adresse.</translation>
         <translation>Baudrate: 4800, 9600, 19200 oder 38400 (Standard 9600); hinter einem Gateway die seiner seriellen Seite (sie bestimmt das Zeitverhalten).</translation>
     </message>
     <message>
-        <location line="+362"/>
+        <location line="+365"/>
         <source>Finds devices on the line and names their family; with several lines (--line, --station), on every line at once.</source>
         <translation>Sucht Geräte an der Leitung und benennt ihre Gerätefamilie; bei mehreren Leitungen (--line, --station) an allen Leitungen gleichzeitig.</translation>
     </message>
@@ -6051,7 +6051,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RemoteStation</name>
     <message>
-        <location filename="../lib/mqtt/remotestation.cpp" line="+47"/>
+        <location filename="../lib/mqtt/remotestation.cpp" line="+48"/>
         <source>a message of %1 bytes, over the limit of %2</source>
         <translation>eine Nachricht von %1 Byte, über der Grenze von %2</translation>
     </message>
@@ -6071,7 +6071,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>keine Gerätereihenfolge</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+20"/>
         <source>not a line state</source>
         <translation>kein Leitungszustand</translation>
     </message>
@@ -6082,22 +6082,27 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+36"/>
-        <location line="+54"/>
+        <location line="+93"/>
         <source>its info does not name this device</source>
         <translation>ihre Info nennt dieses Gerät nicht</translation>
     </message>
     <message>
-        <location line="-48"/>
+        <location line="-86"/>
+        <source>not in the station&apos;s device list, and too much waiting for it</source>
+        <translation>nicht in der Geräteliste der Station, und zu viel wartet schon darauf</translation>
+    </message>
+    <message>
+        <location line="+43"/>
         <source>more than %1 devices in one station</source>
         <translation>mehr als %1 Geräte in einer Station</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="-33"/>
         <source>no info for this device, and too much waiting for one</source>
         <translation>keine Info für dieses Gerät, und zu viel wartet auf eine</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+88"/>
         <source>not a device condition</source>
         <translation>kein Gerätezustand</translation>
     </message>

@@ -128,6 +128,7 @@ Result measure(const FamilyRegistry &registry, const QString &family, const Scen
 
 int main(int argc, char *argv[])
 {
+    jumo::bench::warnIfUnoptimised();
     QCoreApplication app(argc, argv);
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Bus benchmark: cycle time against the wire-time limit."));

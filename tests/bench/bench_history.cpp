@@ -263,6 +263,7 @@ int query(int entries)
 
 int main(int argc, char *argv[])
 {
+    jumo::bench::warnIfUnoptimised();
     QCoreApplication app(argc, argv);
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("History benchmark: recording cost, bytes per sample, query time."));

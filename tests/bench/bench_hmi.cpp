@@ -39,6 +39,7 @@ bool waitForOutput(QProcess &process, const QByteArray &text, int timeoutMs, QBy
 
 int main(int argc, char *argv[])
 {
+    jumo::bench::warnIfUnoptimised();
     QCoreApplication app(argc, argv);
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("HMI benchmark: CPU, memory and start-up time of jumo-hmi."));

@@ -5,6 +5,8 @@
 #include "logs/eventlog.h"
 #include "models/eventlogmodel.h"
 
+#include "benchsupport.h"
+
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDateTime>
@@ -136,6 +138,7 @@ bool waitUntil(const std::function<bool()> &done, int timeoutMs = 600000)
 
 int main(int argc, char *argv[])
 {
+    jumo::bench::warnIfUnoptimised();
     QCoreApplication app(argc, argv);
     std::setvbuf(stdout, nullptr, _IOLBF, 0);   // each figure as soon as it is measured
     QCommandLineParser parser;

@@ -48,6 +48,7 @@ struct Varied
 
 int main(int argc, char **argv)
 {
+    jumo::bench::warnIfUnoptimised();
     QCoreApplication app(argc, argv);
     // Faults on purpose: Qt's complaints about them are not news.
     QLoggingCategory::setFilterRules(QStringLiteral("qt.modbus*=false\njumo.bus*=false"));

@@ -247,6 +247,7 @@ struct Viewer
 
 int main(int argc, char **argv)
 {
+    jumo::bench::warnIfUnoptimised();
     QCoreApplication app(argc, argv);
     QLoggingCategory::setFilterRules(QStringLiteral("qt.modbus*=false\njumo.*=false"));
     QCommandLineParser parser;

@@ -9,10 +9,22 @@
 #include <QList>
 #include <QTimer>
 
+#include <cstdio>
 #include <functional>
 #include <unistd.h>
 
 namespace jumo::bench {
+
+// Figures of an unoptimised build (.ci/build's Check type, made for the tests) are not the
+// product's: said on stderr before anything is measured.
+inline void warnIfUnoptimised()
+{
+#ifndef __OPTIMIZE__
+    std::fputs("warning: this benchmark was built without optimisation (build type Check?); for figures, build "
+               "RelWithDebInfo or Release\n",
+               stderr);
+#endif
+}
 
 // Runs the event loop for this long.
 inline void spin(int ms)
