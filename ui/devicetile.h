@@ -78,8 +78,7 @@ signals:
     void activated(jumo::DeviceId device);
 
 protected:
-    // On screen, the faceplate's entries and the scales of its bars are read sooner (a
-    // class higher).
+    // On screen, the faceplate's entries and the scales of its bars are read sooner.
     void showEvent(QShowEvent *event) override;
     void hideEvent(QHideEvent *event) override;
     void mouseReleaseEvent(QMouseEvent *event) override;

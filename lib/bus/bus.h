@@ -93,7 +93,8 @@ public:
     void requestCycle(DeviceId id);
 
     const EntryState *entryState(DeviceId id, const QString &entryId) const override;
-    // Views say here what they show: those entries are read one class higher meanwhile.
+    // Views say here what they show: those entries are read sooner meanwhile
+    // (shownClass()).
     ShownEntries *shownEntries() const override { return m_shown.get(); }
     // The class an entry of the device is read in now (its map's, or higher while shown).
     PollClass pollClass(DeviceId id, const QString &entryId) const;

@@ -221,6 +221,9 @@ PollChoice DevicePoll::choose(qint64 now, bool polling, PollChoice::Tier from) c
         } else if (age >= target && !filler) {
             here.tier = ownTier;
             here.overdueMs = age - target;
+        } else if (b.shown && filler && age >= shownTargetMs) {
+            here.tier = PollChoice::Due;
+            here.overdueMs = age - shownTargetMs;
         } else if (age >= ceiling) {
             here.tier = PollChoice::Due;
             here.overdueMs = age - ceiling;

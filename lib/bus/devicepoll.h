@@ -56,10 +56,10 @@ struct PollChoice
 {
     enum Tier {
         AlarmDue,   // an alarm block at its target age
-        Due,        // a setting at its target age, any block at the ceiling, a probe, a
-                    // cycle asked for, settings after a write
-        ShownFiller, // live values a view shows: as often as the rest allows, first
-        Filler,     // other live values: as often as the rest allows
+        Due,        // a setting or live values a view shows at their target age, any
+                    // block at the ceiling, a probe, a cycle asked for, settings after a
+                    // write: the most overdue first, so none of them starves another
+        Filler,     // live values: as often as the rest allows (shown ones first)
         None
     };
     int block = -1;
@@ -78,6 +78,10 @@ public:
     // No block waits longer than a setting does.
     static constexpr int alarmTargetMs = 1000;
     static constexpr int settingTargetMs = 55000;
+    // Live values a view shows (a faceplate, an open page): due at this age, with the
+    // settings (the most overdue first), ahead of the other live values and never in the
+    // alarm words' place, so a full line still reads its alarm words every round.
+    static constexpr int shownTargetMs = 3000;
 
     DevicePoll() = default;
     DevicePoll(std::shared_ptr<const RegisterMap> map, quint8 address, qint64 now);
@@ -92,7 +96,7 @@ public:
     // selection is read whole every cycle, as one live class.
     void setPollEntries(const QStringList &ids);
     QStringList pollEntries() const { return m_pollIds; }
-    // Entries a view shows: each reads one class higher while shown.
+    // Entries a view shows: read sooner while shown (shownClass(), shownTargetMs).
     void setShown(const QSet<QString> &entryIds);
     // The line's baud rate and format: plans weigh the wire time of gaps against requests.
     void setLineFormat(const std::optional<LineFormat> &format);

@@ -32,8 +32,8 @@ struct DeviceCondition
 };
 
 // What the views of a line show, so the line reads it sooner: a Bus reads the entries a
-// view shows one poll class higher while it shows them (a setting as a live value, a live
-// value as an alarm word). A mirror of a station has no line to hurry.
+// view shows sooner while it shows them (a setting as a live value, a live value ahead of
+// the other live values). A mirror of a station has no line to hurry.
 class ShownEntries
 {
 public:

@@ -65,7 +65,7 @@ public:
 
     // Which entries a poll cycle reads (empty: every readable entry).
     void setPollEntries(DeviceId id, const QStringList &ids);
-    // The entries views show of the device: each is read one class higher meanwhile.
+    // The entries views show of the device: each is read sooner meanwhile.
     void setShown(DeviceId id, const QSet<QString> &entryIds);
     // The line's format, for plans that weigh wire time (none: fewest requests).
     void setLineFormat(const std::optional<LineFormat> &format);

@@ -1,5 +1,5 @@
 // What the views of one line show, device by device and view by view: the union is what
-// the scheduler reads one class higher. A view that shows nothing any more is forgotten.
+// the scheduler reads sooner. A view that shows nothing any more is forgotten.
 #pragma once
 
 #include "bus/devicesource.h"

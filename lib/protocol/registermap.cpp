@@ -128,7 +128,7 @@ std::optional<PollClass> pollClassFromName(const QString &name) { return lookup(
 
 PollClass shownClass(PollClass pollClass)
 {
-    return pollClass == PollClass::Setting ? PollClass::Live : PollClass::Alarm;
+    return pollClass == PollClass::Setting ? PollClass::Live : pollClass;
 }
 QString wordOrderName(WordOrder order) { return nameOf(wordOrderNames, order); }
 std::optional<WordOrder> wordOrderFromName(const QString &name) { return lookup(wordOrderNames, name); }

@@ -43,7 +43,9 @@ std::optional<BitKind> bitKindFromName(const QString &name);
 QString wordOrderName(WordOrder order);
 QString pollClassName(PollClass pollClass);
 std::optional<PollClass> pollClassFromName(const QString &name);
-// One class up (setting to live, live to alarm): what an entry is while a view shows it.
+// What an entry is while a view shows it: a setting is read as a live value, and live
+// values a view shows are read ahead of the others at a target of their own (DevicePoll),
+// never in the alarm words' place.
 PollClass shownClass(PollClass pollClass);
 // The number an enum text starts with ("100 A" -> 100), for nominal values kept as enums.
 std::optional<double> leadingNumber(const QString &text);

@@ -116,12 +116,15 @@ void tst_Scheduler::classDeadlinesHoldOnAFullLine_data()
     const QStringList four{"ipc300", "tya200", "dtron300", "quantrol"};
     QTest::newRow("38400, IPC 300, TYA 200, dTRON 300") << 38400 << three << 1300 << false << 60000 << true;
     QTest::newRow("19200, all four families") << 19200 << four << 2500 << false << 60000 << true;
-    // Every faceplate shown: its live values are read as alarm words, its setpoints as
-    // live values. Alarm words and faceplates fill a line of 31 devices: what these
-    // rows hold is what the scheduler achieves today (issue 22 asks 1.5 s for alarms and
-    // 3 s for faceplate values at 38400; the setpoints, moved up to live, wait longest).
-    QTest::newRow("38400, faceplates shown") << 38400 << three << 2500 << true << 35000 << true;
-    QTest::newRow("19200, all four families, faceplates shown") << 19200 << four << 4000 << true << 60000 << false;
+    // Every faceplate shown: its setpoints are read as live values, and its live values
+    // at a target of their own (3 s), after the alarm words and, with settings and
+    // whatever reached the ceiling, the most overdue first. Alarm words and faceplates
+    // overfill a line of 31 devices at 38400 (about 60 % of the line for the alarm words
+    // every second, 62 faceplate blocks): the faceplates get what the alarm words and the
+    // settings leave. These are the longest times, not percentiles (before the faceplates
+    // had a target of their own: alarm 2.3 s and faceplate 23 s at 38400).
+    QTest::newRow("38400, faceplates shown") << 38400 << three << 1500 << true << 10000 << true;
+    QTest::newRow("19200, all four families, faceplates shown") << 19200 << four << 2500 << true << 45000 << false;
 }
 
 void tst_Scheduler::classDeadlinesHoldOnAFullLine()
@@ -287,8 +290,9 @@ void tst_Scheduler::jobsTakeOnlyTheirShareOfLineTime()
 void tst_Scheduler::shownEntryMovesUpAClassAndBack()
 {
     // A view shows a setting and a live value through the model it uses: while shown the
-    // setting is read as a live value and the live value as an alarm word; hidden, they
-    // are what their map says again. A view that goes shows nothing any more.
+    // setting is read as a live value, and the live value stays one (read ahead of the
+    // others at a target of its own: classDeadlinesHoldOnAFullLine); hidden, they are what
+    // their map says again. A view that goes shows nothing any more.
     Line line({{"ipc300", 1}});
     QVERIFY(line.bus->open());
     const DeviceId id = line.bus->addDevice(families().family("ipc300"), 1);
@@ -307,11 +311,11 @@ void tst_Scheduler::shownEntryMovesUpAClassAndBack()
     QObject view;
     values.setShown(&view, true, {"load_voltage_limit", "load_voltage"});
     QCOMPARE(line.bus->pollClass(id, "load_voltage_limit"), PollClass::Live);
-    QCOMPARE(line.bus->pollClass(id, "load_voltage"), PollClass::Alarm);
+    QCOMPARE(line.bus->pollClass(id, "load_voltage"), PollClass::Live);
     reads.clear();
     line.run(5000);
     QVERIFY2(reads.value("load_voltage_limit") >= 5, qPrintable(QString::number(reads.value("load_voltage_limit"))));
-    QVERIFY(reads.value("load_voltage") >= 4 && reads.value("load_voltage") <= 6);
+    QVERIFY2(reads.value("load_voltage") >= 5, qPrintable(QString::number(reads.value("load_voltage"))));
 
     values.setShown(&view, false);
     QCOMPARE(line.bus->pollClass(id, "load_voltage_limit"), PollClass::Setting);
