@@ -4,14 +4,13 @@
 #include "commandparser.h"
 #include "exitcodes.h"
 #include "history/historyreader.h"
+#include "historyjsonwriter.h"
 #include "logs/eventlog.h"
 #include "protocol/csv.h"
 #include "protocol/familyregistry.h"
 #include "protocol/printable.h"
 #include "protocol/valuecodec.h"
 
-#include <QJsonArray>
-#include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
 #include <QSet>
@@ -193,10 +192,14 @@ int HistoryCommands::history(const QStringList &arguments)
     const qint64 toMs = to->toMSecsSinceEpoch();
     if (csv)
         m_out << "time,device,entry,value,unit,state,validity,resolution,minimum,mean,maximum\n";
-    QJsonArray jsonEntries;
+    // JSON as it is read, like the others: a long history never waits whole in memory.
+    HistoryJsonWriter jsonWriter(m_out);
+    if (json)
+        jsonWriter.begin(key.name(), isoTime(fromMs), isoTime(toMs));
     for (const QString &entry : entries) {
         const QString unit = infos.value(entry).unit;
-        QJsonArray records;
+        if (json)
+            jsonWriter.beginEntry(entry, unit);
         const bool ok = reader.records(
                 key, entry, fromMs, toMs,
                 [&](const HistoryRecord &r) {
@@ -213,7 +216,7 @@ int HistoryCommands::history(const QStringList &arguments)
                             o.insert("mean", jsonNumber(p.mean));
                             o.insert("maximum", jsonNumber(p.maximum));
                         }
-                        records.append(o);
+                        jsonWriter.record(o);
                     } else if (csv) {
                         m_out << isoTime(p.timeMs) << ',' << csvField(key.name()) << ',' << csvField(entry) << ','
                               << csvField(valueText(p, p.value)) << ',' << csvField(printable(unit)) << ','
@@ -244,14 +247,10 @@ int HistoryCommands::history(const QStringList &arguments)
             return exitcode::Failed;
         }
         if (json)
-            jsonEntries.append(QJsonObject{{"entry", entry}, {"unit", unit}, {"records", records}});
+            jsonWriter.endEntry();
     }
     if (json)
-        m_out << QJsonDocument(QJsonObject{{"device", key.name()},
-                                           {"from", isoTime(fromMs)},
-                                           {"to", isoTime(toMs)},
-                                           {"entries", jsonEntries}})
-                         .toJson(QJsonDocument::Indented);
+        jsonWriter.end();
     m_out.flush();
     return exitcode::Ok;
 }

@@ -1,7 +1,9 @@
 // jumoctl history: a station's recorded values as CSV, JSON and text, found through the
 // station file or a database URL, and every wrong request refused with a reason.
 #include "clirun.h"
+#include "history/historydatabase.h"
 #include "history/sqlhistorystore.h"
+#include "historyjsonwriter.h"
 #include "logs/eventlog.h"
 
 #include <QDateTime>
@@ -9,10 +11,12 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <sys/resource.h>
 #include <sys/stat.h>
 
 using namespace jumo;
@@ -26,12 +30,18 @@ private slots:
     void initTestCase();
     void csvHasEveryRecord();
     void jsonHasEveryRecord();
+    void jsonWriterGivesQJsonDocumentsText_data();
+    void jsonWriterGivesQJsonDocumentsText();
+    void jsonWriterWritesEachRecordAsItComes();
+    void jsonOfALongHistoryInLittleMemory();
     void stationFileFindsItsHistory();
     void deviceTextsKeepTheTerminal();
     void refused_data();
     void refused();
 
 private:
+    // A history of one entry, "long/a/ipc300@1" load_voltage, a sample a second from t0.
+    static bool makeLongHistory(const QString &path, int samples, qint64 t0);
     QString iso(qint64 ms) const { return QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC).toString(Qt::ISODateWithMs); }
 
     QTemporaryDir m_dir;
@@ -123,6 +133,99 @@ void tst_JumoctlHistory::jsonHasEveryRecord()
     QCOMPARE(records[0].toObject().value("validity").toString(), QString("current"));
 }
 
+void tst_JumoctlHistory::jsonWriterGivesQJsonDocumentsText_data()
+{
+    QTest::addColumn<QJsonObject>("document");
+
+    const QJsonObject raw{{"time", "2026-12-03T08:00:00.000Z"}, {"state", "ok"}, {"validity", "current"},
+                          {"resolution", "raw"}, {"value", 230.5}};
+    const QJsonObject gap{{"time", "2026-12-03T08:00:01.000Z"}, {"state", "line_lost"}, {"validity", "unknown"},
+                          {"resolution", "raw"}, {"value", QJsonValue()}};
+    const QJsonObject minute{{"time", "2026-12-03T07:00:00.000Z"}, {"state", "ok"}, {"validity", "current"},
+                             {"resolution", "minute"}, {"value", 1}, {"minimum", -0.25}, {"mean", 1e-7},
+                             {"maximum", 12345678.5}};
+    const QJsonObject text{{"time", "2026-12-03T08:00:00.000Z"}, {"state", "ok"}, {"validity", "current"},
+                           {"resolution", "raw"}, {"value", "IPC300, \"A\"\\\x1b[2J\u00e9\u20ac"}};
+    auto entry = [](const QString &name, const QString &unit, const QJsonArray &records) {
+        return QJsonObject{{"entry", name}, {"unit", unit}, {"records", records}};
+    };
+    auto document = [](const QJsonArray &entries) {
+        return QJsonObject{{"device", "hall/a/ipc300@1"},
+                           {"from", "2026-12-03T07:00:00.000Z"},
+                           {"to", "2026-12-03T09:00:00.000Z"},
+                           {"entries", entries}};
+    };
+    QTest::newRow("one record") << document({entry("load_voltage", "V", {raw})});
+    QTest::newRow("no records") << document({entry("load_voltage", "V", {})});
+    QTest::newRow("a gap's null value") << document({entry("load_voltage", "V", {raw, gap})});
+    QTest::newRow("one-minute rows") << document({entry("load_voltage", "V", {minute, raw})});
+    QTest::newRow("texts with quotes, escapes and umlauts") << document({entry("device_name", "\"", {text})});
+    QTest::newRow("entries with and without records")
+            << document({entry("load_voltage", "V", {raw, gap}), entry("power", "W", {}), entry("device_name", "", {text})});
+}
+
+// The streamed document is the one QJsonDocument gave when jumoctl built it whole.
+void tst_JumoctlHistory::jsonWriterGivesQJsonDocumentsText()
+{
+    QFETCH(QJsonObject, document);
+    QString written;
+    QTextStream out(&written);
+    HistoryJsonWriter writer(out);
+    writer.begin(document.value("device").toString(), document.value("from").toString(),
+                 document.value("to").toString());
+    for (const QJsonValue &e : document.value("entries").toArray()) {
+        writer.beginEntry(e.toObject().value("entry").toString(), e.toObject().value("unit").toString());
+        for (const QJsonValue &r : e.toObject().value("records").toArray())
+            writer.record(r.toObject());
+        writer.endEntry();
+    }
+    writer.end();
+    out.flush();
+    QCOMPARE(written, QString::fromUtf8(QJsonDocument(document).toJson(QJsonDocument::Indented)));
+}
+
+void tst_JumoctlHistory::jsonWriterWritesEachRecordAsItComes()
+{
+    QString written;
+    QTextStream out(&written);
+    HistoryJsonWriter writer(out);
+    writer.begin("hall/a/ipc300@1", iso(m_t0), iso(m_t0 + 60000));
+    writer.beginEntry("load_voltage", "V");
+    for (int i = 0; i < 3; ++i) {
+        writer.record({{"time", iso(m_t0 + i * 1000)}, {"value", 230 + i}});
+        out.flush();
+        QVERIFY2(written.contains("\"time\": \"" + iso(m_t0 + i * 1000) + '"'), qPrintable(written));
+        QVERIFY2(!written.contains(']'), qPrintable(written));
+    }
+}
+
+// 100000 samples in at most 128 MiB of heap: built whole, the document took 2.2 KB a
+// record (2.2 GB for a million); streamed, jumoctl needs under 32 MiB for any number.
+void tst_JumoctlHistory::jsonOfALongHistoryInLittleMemory()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath("long.sqlite");
+    const int samples = 100000;
+    QVERIFY(makeLongHistory(path, samples, m_t0));
+    QProcess p;
+    p.setChildProcessModifier([] {
+        const rlimit limit{128 << 20, 128 << 20};
+        ::setrlimit(RLIMIT_DATA, &limit);
+    });
+    p.start(QStringLiteral(JUMOCTL_PATH), {"history", "--db", path, "long/a/ipc300@1", "load_voltage", "--from",
+                                          iso(m_t0), "--to", iso(m_t0 + samples * 1000LL), "--json"});
+    QVERIFY(p.waitForFinished(300000));
+    QCOMPARE(p.readAllStandardError(), QByteArray());
+    QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(p.exitCode(), 0);
+    QJsonParseError parsed;
+    const QJsonDocument doc = QJsonDocument::fromJson(p.readAllStandardOutput(), &parsed);
+    QCOMPARE(parsed.errorString(), QJsonParseError().errorString());
+    const QJsonArray records = doc.object().value("entries").toArray().at(0).toObject().value("records").toArray();
+    QCOMPARE(records.size(), samples);
+    QCOMPARE(records.last().toObject().value("time").toString(), iso(m_t0 + (samples - 1) * 1000LL));
+}
+
 void tst_JumoctlHistory::stationFileFindsItsHistory()
 {
     const Run r = run({"history", "--station", m_station, "a/ipc300@1", "load_voltage", "--from", "-2h"});
@@ -195,6 +298,25 @@ void tst_JumoctlHistory::refused()
     QCOMPARE(r.code, code);
     QVERIFY2(r.err.contains(error), qPrintable(r.err));
     QCOMPARE(r.out, QString());
+}
+
+bool tst_JumoctlHistory::makeLongHistory(const QString &path, int samples, qint64 t0)
+{
+    HistoryDatabase db(HistoryLocation::file(path));
+    QString error;
+    const bool ok = db.open(true, &error)
+            && db.exec("INSERT INTO history_series (id, station, line, device, entry, is_number, unit) "
+                       "VALUES (1, 'long', 'a', 'ipc300@1', 'load_voltage', 1, 'V')",
+                       &error)
+            && db.exec(QString("WITH RECURSIVE n(i) AS (SELECT 0 UNION ALL SELECT i + 1 FROM n WHERE i < %1) "
+                               "INSERT INTO history_raw (series, t, state, value) "
+                               "SELECT 1, %2 + i * 1000, 0, 200 + (i % 1000) * 0.1 FROM n")
+                               .arg(samples - 1)
+                               .arg(t0),
+                       &error);
+    if (!ok)
+        qWarning() << error;
+    return ok;
 }
 
 QTEST_GUILESS_MAIN(tst_JumoctlHistory)
