@@ -141,15 +141,21 @@ int HistoryCommands::history(const QStringList &arguments)
     }
 
     HistoryReader reader(location);
-    if (!reader.open(&error)) {
+    // A file that is no history of ours, or a damaged one, is a wrong input (2); a history
+    // that cannot be reached or read now is a failure (1).
+    auto readFailed = [&] {
+        m_out.flush();
         m_err << tr("jumoctl history: %1").arg(error) << Qt::endl;
-        return exitcode::Failed;
-    }
+        const HistoryDatabase::Fault fault = reader.fault();
+        return fault == HistoryDatabase::Fault::NotAHistory || fault == HistoryDatabase::Fault::Damaged
+                ? exitcode::Usage
+                : exitcode::Failed;
+    };
+    if (!reader.open(&error))
+        return readFailed();
     const std::optional<QList<HistorySeriesInfo>> series = reader.series(station, &error);
-    if (!series) {
-        m_err << tr("jumoctl history: %1").arg(error) << Qt::endl;
-        return exitcode::Failed;
-    }
+    if (!series)
+        return readFailed();
     const QString device = parser.positionalArguments().constFirst();
     QList<HistoryKey> keys;
     QSet<QString> devices;
@@ -241,11 +247,8 @@ int HistoryCommands::history(const QStringList &arguments)
                     return m_out.status() == QTextStream::Ok;
                 },
                 &error);
-        if (!ok) {
-            m_out.flush();
-            m_err << tr("jumoctl history: %1").arg(error) << Qt::endl;
-            return exitcode::Failed;
-        }
+        if (!ok)
+            return readFailed();
         if (json)
             jsonWriter.endEntry();
     }

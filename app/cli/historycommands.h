@@ -22,7 +22,7 @@ public:
     HistoryCommands(const FamilyRegistry &registry, QTextStream &out, QTextStream &err);
 
     // 0 with the records; 1 when the history cannot be read or holds nothing of the
-    // device; 2 for wrong arguments.
+    // device; 2 for wrong arguments, and a file that is no JUMO history or a damaged one.
     int history(const QStringList &arguments);
 
     // "2026-12-03T08:00" (local time unless it names its offset or Z), "now", or a time

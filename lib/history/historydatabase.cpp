@@ -7,6 +7,7 @@
 #include <QFileInfo>
 #include <QSqlError>
 #include <QSqlQuery>
+#include <QSqlRecord>
 #include <QVariant>
 
 #include <fcntl.h>
@@ -44,6 +45,24 @@ QStringList schemaStatements(bool postgres)
     };
 }
 
+// The tables and the columns a reader needs (schemaStatements makes them).
+const QList<std::pair<QString, QStringList>> &readColumns()
+{
+    static const QList<std::pair<QString, QStringList>> tables{
+        {QStringLiteral("history_meta"), {QStringLiteral("name"), QStringLiteral("value")}},
+        {QStringLiteral("history_series"),
+         {QStringLiteral("id"), QStringLiteral("station"), QStringLiteral("line"), QStringLiteral("device"),
+          QStringLiteral("entry"), QStringLiteral("is_number"), QStringLiteral("unit")}},
+        {QStringLiteral("history_raw"),
+         {QStringLiteral("series"), QStringLiteral("t"), QStringLiteral("state"), QStringLiteral("value"),
+          QStringLiteral("text_value")}},
+        {QStringLiteral("history_minute"),
+         {QStringLiteral("series"), QStringLiteral("t"), QStringLiteral("state"), QStringLiteral("value"),
+          QStringLiteral("minimum"), QStringLiteral("maximum"), QStringLiteral("mean"), QStringLiteral("text_value")}},
+    };
+    return tables;
+}
+
 QString upsert(const QString &table, const QStringList &columns, int rows)
 {
     const QString row = QLatin1Char('(') + QStringList(columns.size(), QStringLiteral("?")).join(QLatin1Char(',')) + QLatin1Char(')');
@@ -70,9 +89,11 @@ HistoryDatabase::~HistoryDatabase()
 bool HistoryDatabase::open(bool writable, QString *error)
 {
     close();
+    m_fault = Fault::None;
     const bool postgres = isPostgres();
     m_db = QSqlDatabase::addDatabase(postgres ? QStringLiteral("QPSQL") : QStringLiteral("QSQLITE"), m_connectionName);
     if (!m_db.isValid()) {
+        m_fault = Fault::Unavailable;
         if (error)
             *error = tr("cannot open the history %1: Qt's %2 driver is not installed (%3)")
                              .arg(m_location.display(), postgres ? QStringLiteral("QPSQL") : QStringLiteral("QSQLITE"),
@@ -90,6 +111,7 @@ bool HistoryDatabase::open(bool writable, QString *error)
     } else {
         const QFileInfo info(m_location.path);
         if (!writable && !info.exists()) {
+            m_fault = Fault::Unavailable;
             if (error)
                 *error = tr("no history at %1").arg(m_location.path);
             close();
@@ -100,6 +122,7 @@ bool HistoryDatabase::open(bool writable, QString *error)
             QString why;
             const int fd = RegularFile::openDescriptor(m_location.path, O_RDONLY, &why);
             if (fd < 0) {
+                m_fault = Fault::Unavailable;
                 if (error)
                     *error = why;
                 close();
@@ -157,8 +180,9 @@ bool HistoryDatabase::isOpen() const
     return m_db.isValid() && m_db.isOpen();
 }
 
-QString HistoryDatabase::failure(const QString &doing, const QSqlError &error) const
+QString HistoryDatabase::failure(const QString &doing, const QSqlError &error)
 {
+    m_fault = Fault::Unavailable;
     QString why = error.databaseText().trimmed();
     if (why.isEmpty())
         why = error.driverText().trimmed();
@@ -229,20 +253,72 @@ bool HistoryDatabase::checkSchemaVersionOrSet(QString *error)
     return true;
 }
 
+bool HistoryDatabase::refuse(Fault fault, const QString &message, QString *error)
+{
+    m_fault = fault;
+    if (error)
+        *error = message;
+    return false;
+}
+
 bool HistoryDatabase::checkSchema(QString *error)
 {
+    // Every table and column a reader uses, so that a file of another program, or ours
+    // with a table dropped or altered, is named as such instead of failing a query later.
+    QStringList damage;
+    int found = 0;
+    for (const auto &[table, columns] : readColumns()) {
+        // The table as the connection finds it (PostgreSQL: on its search path); none
+        // has no columns.
+        const QSqlRecord record = m_db.record(table);
+        if (record.isEmpty()) {
+            damage << tr("no table %1").arg(table);
+            continue;
+        }
+        ++found;
+        QStringList lacking;
+        for (const QString &column : columns) {
+            if (!record.contains(column))
+                lacking << column;
+        }
+        if (!lacking.isEmpty())
+            damage << tr("the table %1 lacks the column(s) %2").arg(table, lacking.join(QStringLiteral(", ")));
+    }
+    if (found == 0) {
+        return refuse(Fault::NotAHistory,
+                      isPostgres() ? tr("%1 holds no JUMO history: none of the history's tables is there")
+                                             .arg(m_location.display())
+                                   : tr("%1 is not a JUMO history file: an SQLite database without the history's "
+                                        "tables")
+                                             .arg(m_location.display()),
+                      error);
+    }
+    if (!damage.isEmpty())
+        return refuse(Fault::Damaged,
+                      tr("%1 is damaged: %2").arg(m_location.display(), damage.join(QStringLiteral("; "))), error);
+
     QSqlQuery q = query();
-    if (!q.exec(QStringLiteral("SELECT value FROM history_meta WHERE name = 'schema'")) || !q.next()) {
+    if (!q.exec(QStringLiteral("SELECT value FROM history_meta WHERE name = 'schema'"))) {
         if (error)
-            *error = tr("%1 holds no history").arg(m_location.display());
+            *error = failure(tr("read"), q.lastError());
         return false;
     }
-    if (q.value(0).toInt() > schemaVersion) {
-        if (error)
-            *error = tr("cannot use the history %1: it was written by a newer version (schema %2, this one knows %3)")
-                             .arg(m_location.display(), q.value(0).toString())
-                             .arg(schemaVersion);
-        return false;
+    if (!q.next())
+        return refuse(Fault::Damaged, tr("%1 is damaged: it names no schema version").arg(m_location.display()), error);
+    bool number = false;
+    const int version = q.value(0).toString().toInt(&number);
+    if (!number || version < 1) {
+        return refuse(Fault::Damaged,
+                      tr("%1 is damaged: '%2' is no schema version").arg(m_location.display(), q.value(0).toString()),
+                      error);
+    }
+    if (version > schemaVersion) {
+        return refuse(Fault::Unavailable,
+                      tr("cannot use the history %1: it was written by a newer version (schema %2, this one knows %3)")
+                              .arg(m_location.display())
+                              .arg(version)
+                              .arg(schemaVersion),
+                      error);
     }
     return true;
 }

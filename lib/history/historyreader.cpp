@@ -55,12 +55,14 @@ bool HistoryReader::open(QString *error)
 std::optional<QList<HistorySeriesInfo>> HistoryReader::series(const QString &station, QString *error)
 {
     QSqlQuery q = m_db.query();
-    q.prepare(QStringLiteral("SELECT station, line, device, entry, is_number, unit FROM history_series %1"
-                             "ORDER BY station, line, device, entry")
-                      .arg(station.isEmpty() ? QString() : QStringLiteral("WHERE station = ? ")));
+    const bool prepared = q.prepare(
+            QStringLiteral("SELECT station, line, device, entry, is_number, unit FROM history_series %1"
+                           "ORDER BY station, line, device, entry")
+                    .arg(station.isEmpty() ? QString() : QStringLiteral("WHERE station = ? ")));
     if (!station.isEmpty())
         q.addBindValue(station);
-    if (!q.exec()) {
+    // A failed prepare says why; exec after it would only say "No query".
+    if (!prepared || !q.exec()) {
         if (error)
             *error = m_db.failure(tr("read"), q.lastError());
         return std::nullopt;
@@ -83,12 +85,13 @@ std::optional<qint64> HistoryReader::seriesId(const HistoryKey &key, const QStri
     if (const auto known = m_ids.constFind(name); known != m_ids.cend())
         return *known;
     QSqlQuery q = m_db.query();
-    q.prepare(QStringLiteral("SELECT id FROM history_series WHERE station = ? AND line = ? AND device = ? AND entry = ?"));
+    const bool prepared = q.prepare(
+            QStringLiteral("SELECT id FROM history_series WHERE station = ? AND line = ? AND device = ? AND entry = ?"));
     q.addBindValue(key.station);
     q.addBindValue(key.line);
     q.addBindValue(key.device);
     q.addBindValue(entry);
-    if (!q.exec()) {
+    if (!prepared || !q.exec()) {
         if (error)
             *error = m_db.failure(tr("read"), q.lastError());
         return std::nullopt;
@@ -103,11 +106,11 @@ std::optional<qint64> HistoryReader::seriesId(const HistoryKey &key, const QStri
 std::optional<HistoryReader::StationFacts> HistoryReader::stationFacts(const QString &station, QString *error)
 {
     QSqlQuery q = m_db.query();
-    q.prepare(QStringLiteral("SELECT name, value FROM history_meta WHERE name IN (?, ?, ?)"));
+    const bool prepared = q.prepare(QStringLiteral("SELECT name, value FROM history_meta WHERE name IN (?, ?, ?)"));
     q.addBindValue(QStringLiteral("raw_from:") + station);
     q.addBindValue(QStringLiteral("rolled:") + station);
     q.addBindValue(QStringLiteral("heartbeat:") + station);
-    if (!q.exec()) {
+    if (!prepared || !q.exec()) {
         if (error)
             *error = m_db.failure(tr("read"), q.lastError());
         return std::nullopt;
@@ -134,12 +137,13 @@ bool HistoryReader::readRange(bool minute, qint64 id, qint64 fromMs, qint64 toMs
     if (toMs <= fromMs)
         return true;
     QSqlQuery q = m_db.query();
-    q.prepare(QStringLiteral("SELECT %1 FROM %2 WHERE series = ? AND t >= ? AND t < ? ORDER BY t")
-                      .arg(columns(minute), minute ? QStringLiteral("history_minute") : QStringLiteral("history_raw")));
+    const bool prepared = q.prepare(
+            QStringLiteral("SELECT %1 FROM %2 WHERE series = ? AND t >= ? AND t < ? ORDER BY t")
+                    .arg(columns(minute), minute ? QStringLiteral("history_minute") : QStringLiteral("history_raw")));
     q.addBindValue(id);
     q.addBindValue(fromMs);
     q.addBindValue(toMs);
-    if (!q.exec()) {
+    if (!prepared || !q.exec()) {
         if (error)
             *error = m_db.failure(tr("read"), q.lastError());
         return false;
@@ -152,11 +156,12 @@ bool HistoryReader::readRange(bool minute, qint64 id, qint64 fromMs, qint64 toMs
 std::optional<HistoryPoint> HistoryReader::lastBefore(bool minute, qint64 id, qint64 timeMs, QString *error)
 {
     QSqlQuery q = m_db.query();
-    q.prepare(QStringLiteral("SELECT %1 FROM %2 WHERE series = ? AND t < ? ORDER BY t DESC LIMIT 1")
-                      .arg(columns(minute), minute ? QStringLiteral("history_minute") : QStringLiteral("history_raw")));
+    const bool prepared = q.prepare(
+            QStringLiteral("SELECT %1 FROM %2 WHERE series = ? AND t < ? ORDER BY t DESC LIMIT 1")
+                    .arg(columns(minute), minute ? QStringLiteral("history_minute") : QStringLiteral("history_raw")));
     q.addBindValue(id);
     q.addBindValue(timeMs);
-    if (!q.exec()) {
+    if (!prepared || !q.exec()) {
         if (error)
             *error = m_db.failure(tr("read"), q.lastError());
         return std::nullopt;

@@ -34,6 +34,8 @@ public:
     bool open(QString *error);
     bool isOpen() const { return m_db.isOpen(); }
     const HistoryLocation &location() const { return m_db.location(); }
+    // Why the last open or read failed.
+    HistoryDatabase::Fault fault() const { return m_db.fault(); }
 
     // The series of one station (empty: of every station), by station, line, device, entry.
     std::optional<QList<HistorySeriesInfo>> series(const QString &station, QString *error);

@@ -13,6 +13,8 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QSignalSpy>
+#include <QSqlDatabase>
+#include <QSqlQuery>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -38,6 +40,8 @@ private slots:
     void deviceTextsKeepTheTerminal();
     void refused_data();
     void refused();
+    void refusesWhatIsNoHistory_data();
+    void refusesWhatIsNoHistory();
 
 private:
     // A history of one entry, "long/a/ipc300@1" load_voltage, a sample a second from t0.
@@ -297,6 +301,59 @@ void tst_JumoctlHistory::refused()
     const Run r = run(QStringList{"history"} + arguments);
     QCOMPARE(r.code, code);
     QVERIFY2(r.err.contains(error), qPrintable(r.err));
+    QCOMPARE(r.out, QString());
+}
+
+void tst_JumoctlHistory::refusesWhatIsNoHistory_data()
+{
+    QTest::addColumn<bool>("ours");   // starts as a history, else as an empty SQLite database
+    QTest::addColumn<QStringList>("statements");
+    QTest::addColumn<QString>("error");
+
+    QTest::newRow("an SQLite database of another program")
+            << false << QStringList{"CREATE TABLE notes (id INTEGER PRIMARY KEY, text TEXT)"}
+            << "is not a JUMO history file: an SQLite database without the history's tables";
+    QTest::newRow("a history without its samples") << true << QStringList{"DROP TABLE history_raw"}
+                                                   << "is damaged: no table history_raw";
+    QTest::newRow("a history's table without a column")
+            << true << QStringList{"ALTER TABLE history_series DROP COLUMN is_number"}
+            << "is damaged: the table history_series lacks the column(s) is_number";
+    QTest::newRow("a history's table of another shape")
+            << true
+            << QStringList{"DROP TABLE history_minute", "CREATE TABLE history_minute (series BIGINT, t BIGINT, v REAL)"}
+            << "is damaged: the table history_minute lacks the column(s) state, value, minimum, maximum, mean, text_value";
+    QTest::newRow("a history without its schema version") << true << QStringList{"DELETE FROM history_meta"}
+                                                           << "is damaged: it names no schema version";
+    QTest::newRow("a schema version that is no number")
+            << true << QStringList{"UPDATE history_meta SET value = 'one' WHERE name = 'schema'"}
+            << "is damaged: 'one' is no schema version";
+}
+
+// A file that is an SQLite database but no history of ours, or one with its tables
+// changed, is named so, as a wrong input; never an SQL driver's "No query".
+void tst_JumoctlHistory::refusesWhatIsNoHistory()
+{
+    QFETCH(bool, ours);
+    QFETCH(QStringList, statements);
+    QFETCH(QString, error);
+    QTemporaryDir dir;
+    const QString path = dir.filePath("h.sqlite");
+    if (ours)
+        QVERIFY(makeLongHistory(path, 10, m_t0));
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase("QSQLITE", "changer");
+        db.setDatabaseName(path);
+        QVERIFY(db.open());
+        for (const QString &statement : std::as_const(statements)) {
+            QSqlQuery q(db);
+            QVERIFY2(q.exec(statement), qPrintable(statement));
+        }
+        db.close();
+    }
+    QSqlDatabase::removeDatabase("changer");
+    const Run r = run({"history", "--db", path, "long/a/ipc300@1", "load_voltage", "--from", iso(m_t0)});
+    QCOMPARE(r.err, "jumoctl history: " + path + ' ' + error + '\n');
+    QCOMPARE(r.code, 2);
     QCOMPARE(r.out, QString());
 }
 
