@@ -10,7 +10,9 @@
 #include <QSqlRecord>
 #include <QVariant>
 
+#include <cstring>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace jumo {
@@ -128,7 +130,12 @@ bool HistoryDatabase::open(bool writable, QString *error)
                 close();
                 return false;
             }
+            const bool usable = writable || checkFileHeader(fd, error);
             ::close(fd);
+            if (!usable) {
+                close();
+                return false;
+            }
         }
         if (writable)
             QDir().mkpath(info.absolutePath());
@@ -183,6 +190,13 @@ bool HistoryDatabase::isOpen() const
 QString HistoryDatabase::failure(const QString &doing, const QSqlError &error)
 {
     m_fault = Fault::Unavailable;
+    // SQLITE_CORRUPT (11, "database disk image is malformed") and SQLITE_NOTADB (26) with
+    // their extended codes: the file, not the reading, is at fault.
+    const int code = error.nativeErrorCode().toInt();
+    if (!isPostgres() && ((code & 0xff) == 11 || (code & 0xff) == 26)) {
+        m_fault = Fault::Damaged;
+        return tr("%1 is damaged: %2").arg(m_location.display(), error.databaseText().trimmed());
+    }
     QString why = error.databaseText().trimmed();
     if (why.isEmpty())
         why = error.driverText().trimmed();
@@ -253,6 +267,62 @@ bool HistoryDatabase::checkSchemaVersionOrSet(QString *error)
     return true;
 }
 
+bool HistoryDatabase::checkFileHeader(int fd, QString *error)
+{
+    // SQLite reads a file cut short as if the rest were zeros and fails only at the first
+    // page it misses, or takes a file that is no database for an empty one: its header
+    // says both at once (sqlite.org/fileformat.html, "The Database Header").
+    struct stat status = {};
+    if (::fstat(fd, &status) != 0)
+        return true;   // SQLite's open says why
+    const qint64 size = status.st_size;
+    if (size == 0)
+        return refuse(Fault::NotAHistory, tr("%1 is not a JUMO history file: it is empty").arg(m_location.display()),
+                      error);
+    unsigned char header[100] = {};
+    if (size < qint64(sizeof header) || ::pread(fd, header, sizeof header, 0) != qint64(sizeof header)
+        || std::memcmp(header, "SQLite format 3", 16) != 0) {
+        return refuse(Fault::NotAHistory,
+                      tr("%1 is not a JUMO history file: it is not an SQLite database").arg(m_location.display()),
+                      error);
+    }
+    auto bigEndian = [&header](int at, int bytes) {
+        quint32 value = 0;
+        for (int i = 0; i < bytes; ++i)
+            value = value << 8 | header[at + i];
+        return value;
+    };
+    const quint32 pageSize = bigEndian(16, 2) == 1 ? 65536 : bigEndian(16, 2);
+    if (pageSize < 512 || (pageSize & (pageSize - 1)) != 0) {
+        return refuse(Fault::Damaged,
+                      tr("%1 is damaged: its header names no page size (%2)").arg(m_location.display()).arg(pageSize),
+                      error);
+    }
+    // The page count is valid where the write that set it also set its check. A file in
+    // use has its newest pages in the -wal file beside it, and a checkpoint grows it page
+    // by page: only a file nobody writes is measured.
+    const qint64 pages = bigEndian(28, 4);
+    const bool countValid = pages > 0 && bigEndian(24, 4) == bigEndian(92, 4);
+    const bool settled = !QFileInfo::exists(m_location.path + QLatin1String("-wal"));
+    if (size % pageSize != 0) {
+        return refuse(Fault::Damaged,
+                      tr("%1 is damaged: it ends inside a page (%2 bytes, pages of %3): it was cut off")
+                              .arg(m_location.display())
+                              .arg(size)
+                              .arg(pageSize),
+                      error);
+    }
+    if (settled && countValid && size < pages * pageSize) {
+        return refuse(Fault::Damaged,
+                      tr("%1 is damaged: it ends after %2 bytes, where its header says %3: it was cut off")
+                              .arg(m_location.display())
+                              .arg(size)
+                              .arg(pages * pageSize),
+                      error);
+    }
+    return true;
+}
+
 bool HistoryDatabase::refuse(Fault fault, const QString &message, QString *error)
 {
     m_fault = fault;
@@ -265,6 +335,15 @@ bool HistoryDatabase::checkSchema(QString *error)
 {
     // Every table and column a reader uses, so that a file of another program, or ours
     // with a table dropped or altered, is named as such instead of failing a query later.
+    if (!isPostgres()) {
+        // The columns below are read without a word on failure: a damaged schema says so first.
+        QSqlQuery schema = query();
+        if (!schema.exec(QStringLiteral("SELECT count(*) FROM sqlite_master"))) {
+            if (error)
+                *error = failure(tr("read"), schema.lastError());
+            return false;
+        }
+    }
     QStringList damage;
     int found = 0;
     for (const auto &[table, columns] : readColumns()) {

@@ -63,6 +63,8 @@ public:
 private:
     bool createSchema(QString *error);
     bool checkSchema(QString *error);
+    // A read-only SQLite file: an SQLite database, whole.
+    bool checkFileHeader(int fd, QString *error);
     bool refuse(Fault fault, const QString &message, QString *error);
     bool checkSchemaVersionOrSet(QString *error);
 

@@ -25,6 +25,13 @@ QString columns(bool minute)
                   : QStringLiteral("t, state, value, text_value");
 }
 
+// next() is false at the end and when a page could not be read (a damaged file, a
+// server gone): only the error tells them apart.
+bool failedReading(const QSqlQuery &q)
+{
+    return q.lastError().isValid();
+}
+
 HistoryPoint pointOf(const QSqlQuery &q, bool minute)
 {
     HistoryPoint p;
@@ -76,6 +83,11 @@ std::optional<QList<HistorySeriesInfo>> HistoryReader::series(const QString &sta
         info.unit = q.value(5).toString();
         out.append(info);
     }
+    if (failedReading(q)) {
+        if (error)
+            *error = m_db.failure(tr("read"), q.lastError());
+        return std::nullopt;
+    }
     return out;
 }
 
@@ -96,8 +108,14 @@ std::optional<qint64> HistoryReader::seriesId(const HistoryKey &key, const QStri
             *error = m_db.failure(tr("read"), q.lastError());
         return std::nullopt;
     }
-    if (!q.next())
+    if (!q.next()) {
+        if (failedReading(q)) {
+            if (error)
+                *error = m_db.failure(tr("read"), q.lastError());
+            return std::nullopt;
+        }
         return qint64(-1);   // never recorded (not remembered: it may be soon)
+    }
     const qint64 id = q.value(0).toLongLong();
     m_ids.insert(name, id);
     return id;
@@ -127,6 +145,11 @@ std::optional<HistoryReader::StationFacts> HistoryReader::stationFacts(const QSt
         else if (value > 0)
             settings.heartbeatMs = value;
     }
+    if (failedReading(q)) {
+        if (error)
+            *error = m_db.failure(tr("read"), q.lastError());
+        return std::nullopt;
+    }
     facts.maxHoldMs = settings.maxHoldMs();
     return facts;
 }
@@ -150,6 +173,11 @@ bool HistoryReader::readRange(bool minute, qint64 id, qint64 fromMs, qint64 toMs
     }
     while (q.next())
         sink(pointOf(q, minute));
+    if (failedReading(q)) {
+        if (error)
+            *error = m_db.failure(tr("read"), q.lastError());
+        return false;
+    }
     return true;
 }
 
@@ -166,8 +194,12 @@ std::optional<HistoryPoint> HistoryReader::lastBefore(bool minute, qint64 id, qi
             *error = m_db.failure(tr("read"), q.lastError());
         return std::nullopt;
     }
-    if (!q.next())
-    {
+    if (!q.next()) {
+        if (failedReading(q)) {
+            if (error)
+                *error = m_db.failure(tr("read"), q.lastError());
+            return std::nullopt;
+        }
         HistoryPoint none;
         none.timeMs = -1;
         return none;

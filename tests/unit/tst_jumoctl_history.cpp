@@ -42,6 +42,8 @@ private slots:
     void refused();
     void refusesWhatIsNoHistory_data();
     void refusesWhatIsNoHistory();
+    void damagedFilesAreNamed_data();
+    void damagedFilesAreNamed();
 
 private:
     // A history of one entry, "long/a/ipc300@1" load_voltage, a sample a second from t0.
@@ -355,6 +357,52 @@ void tst_JumoctlHistory::refusesWhatIsNoHistory()
     QCOMPARE(r.err, "jumoctl history: " + path + ' ' + error + '\n');
     QCOMPARE(r.code, 2);
     QCOMPARE(r.out, QString());
+}
+
+void tst_JumoctlHistory::damagedFilesAreNamed_data()
+{
+    QTest::addColumn<QString>("damage");
+    QTest::addColumn<QString>("error");
+
+    QTest::newRow("cut off at half its size") << "half" << "is damaged: it ends after ";
+    QTest::newRow("cut off inside a page") << "inside a page" << "is damaged: it ends inside a page (";
+    QTest::newRow("a page overwritten") << "overwritten" << "is damaged: database disk image is malformed";
+    QTest::newRow("a text file") << "text" << "is not a JUMO history file: it is not an SQLite database";
+    QTest::newRow("an empty file") << "empty" << "is not a JUMO history file: it is empty";
+}
+
+// A damaged file is named damaged, a wrong input (2), whether its header or SQLite finds
+// the damage: never "holds no history", and never a read that ends early as if it were all.
+void tst_JumoctlHistory::damagedFilesAreNamed()
+{
+    QFETCH(QString, damage);
+    QFETCH(QString, error);
+    QTemporaryDir dir;
+    const QString path = dir.filePath("h.sqlite");
+    const int samples = 20000;
+    QVERIFY(makeLongHistory(path, samples, m_t0));
+    QFile file(path);
+    const qint64 size = file.size();
+    QVERIFY(size > 50 * 4096);
+    if (damage == "half") {
+        QVERIFY(file.resize(size / 2 / 4096 * 4096));
+    } else if (damage == "inside a page") {
+        QVERIFY(file.resize(size / 2 + 100));
+    } else if (damage == "overwritten") {
+        QVERIFY(file.open(QIODevice::ReadWrite));
+        QVERIFY(file.seek(size * 3 / 4 / 4096 * 4096));
+        QCOMPARE(file.write(QByteArray(4096, '\xff')), 4096);
+        file.close();
+    } else {
+        QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        if (damage == "text")
+            file.write("time,device,entry,value\n");
+        file.close();
+    }
+    const Run r = run({"history", "--db", path, "long/a/ipc300@1", "load_voltage", "--from", iso(m_t0), "--to",
+                       iso(m_t0 + samples * 1000LL)});
+    QVERIFY2(r.err.startsWith("jumoctl history: " + path + ' ' + error), qPrintable(r.err));
+    QCOMPARE(r.code, 2);
 }
 
 bool tst_JumoctlHistory::makeLongHistory(const QString &path, int samples, qint64 t0)
