@@ -8,6 +8,7 @@
 #include "logs/eventlog.h"
 #include "protocol/csv.h"
 #include "protocol/familyregistry.h"
+#include "protocol/localtime.h"
 #include "protocol/printable.h"
 #include "protocol/valuecodec.h"
 
@@ -53,7 +54,8 @@ HistoryCommands::HistoryCommands(const FamilyRegistry &registry, QTextStream &ou
 {
 }
 
-std::optional<QDateTime> HistoryCommands::parseTime(const QString &text, const QDateTime &now)
+std::optional<QDateTime> HistoryCommands::parseTime(const QString &text, const QDateTime &now, QString *error,
+                                                    QString *note)
 {
     if (text == QLatin1String("now"))
         return now;
@@ -64,10 +66,40 @@ std::optional<QDateTime> HistoryCommands::parseTime(const QString &text, const Q
         const qint64 seconds = unit == QLatin1Char('s') ? 1 : unit == QLatin1Char('m') ? 60 : unit == QLatin1Char('h') ? 3600 : 86400;
         return now.addSecs(-count * seconds);
     }
-    QDateTime time = QDateTime::fromString(text, Qt::ISODateWithMs);
-    if (!time.isValid())
+    const QDateTime parsed = QDateTime::fromString(text, Qt::ISODateWithMs);
+    if (parsed.isValid() && parsed.timeSpec() != Qt::LocalTime)
+        return parsed;   // it names its offset or Z
+    // A local time: its fields (read as if UTC, so that a time the clocks skip is still
+    // read), then the instants the local clocks showed them.
+    QDateTime fields = QDateTime::fromString(text + QLatin1Char('Z'), Qt::ISODateWithMs);
+    if (!fields.isValid()) {
+        const QDate date = QDate::fromString(text, Qt::ISODate);
+        if (date.isValid())
+            fields = QDateTime(date, QTime(0, 0), Qt::UTC);
+    }
+    if (!fields.isValid()) {
+        if (error)
+            *error = tr("'%1' is no time").arg(text);
         return std::nullopt;
-    return time;
+    }
+    const QTimeZone zone = QTimeZone::systemTimeZone();
+    const QList<QDateTime> instants = LocalTime::instants(fields.date(), fields.time(), zone);
+    if (instants.isEmpty()) {
+        const int before = zone.offsetFromUtc(fields.addDays(-1));
+        if (error)
+            *error = tr("%1 does not exist in local time (%2): the clocks skip it; give it with its offset, such as "
+                        "%3, or in UTC, such as %4")
+                             .arg(text, QString::fromUtf8(zone.id()), text + LocalTime::offsetText(before),
+                                  fields.addSecs(-before).toString(Qt::ISODate));
+        return std::nullopt;
+    }
+    if (instants.size() > 1 && note) {
+        *note = tr("%1 is twice in local time (%2), the clocks go back: taken as the first, %3; the second is %4")
+                        .arg(text, QString::fromUtf8(zone.id()),
+                             text + LocalTime::offsetText(int(instants.first().secsTo(fields))),
+                             text + LocalTime::offsetText(int(instants.last().secsTo(fields))));
+    }
+    return instants.first();
 }
 
 int HistoryCommands::history(const QStringList &arguments)
@@ -84,7 +116,8 @@ int HistoryCommands::history(const QStringList &arguments)
                       tr("URL")});
     parser.addOption({QStringLiteral("from"),
                       tr("Start: an ISO 8601 time (local unless it names its offset), 'now', or a time before now "
-                         "such as -90s, -15m, -2h, -7d. Default: -1h."),
+                         "such as -90s, -15m, -2h, -7d. Default: -1h. A local time the clocks skip is refused; of one "
+                         "they show twice, the first is taken."),
                       tr("TIME"), QStringLiteral("-1h")});
     parser.addOption({QStringLiteral("to"), tr("End, as --from. Default: now."), tr("TIME"), QStringLiteral("now")});
     parser.addOption({QStringLiteral("csv"), tr("CSV: time,device,entry,value,unit,state,validity,resolution,"
@@ -107,12 +140,19 @@ int HistoryCommands::history(const QStringList &arguments)
         return usage(tr("give exactly one of --station FILE and --db URL"));
 
     const QDateTime now = QDateTime::currentDateTimeUtc();
-    const std::optional<QDateTime> from = parseTime(parser.value(QStringLiteral("from")), now);
-    const std::optional<QDateTime> to = parseTime(parser.value(QStringLiteral("to")), now);
+    QString timeError;
+    QString fromNote;
+    QString toNote;
+    const std::optional<QDateTime> from = parseTime(parser.value(QStringLiteral("from")), now, &timeError, &fromNote);
     if (!from)
-        return usage(tr("--from: '%1' is no time").arg(parser.value(QStringLiteral("from"))));
+        return usage(QStringLiteral("--from: ") + timeError);
+    const std::optional<QDateTime> to = parseTime(parser.value(QStringLiteral("to")), now, &timeError, &toNote);
     if (!to)
-        return usage(tr("--to: '%1' is no time").arg(parser.value(QStringLiteral("to"))));
+        return usage(QStringLiteral("--to: ") + timeError);
+    if (!fromNote.isEmpty())
+        m_err << tr("jumoctl history: %1").arg(QStringLiteral("--from: ") + fromNote) << Qt::endl;
+    if (!toNote.isEmpty())
+        m_err << tr("jumoctl history: %1").arg(QStringLiteral("--to: ") + toNote) << Qt::endl;
     if (*to <= *from)
         return usage(tr("--to must be after --from"));
 

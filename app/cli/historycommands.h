@@ -26,8 +26,10 @@ public:
     int history(const QStringList &arguments);
 
     // "2026-12-03T08:00" (local time unless it names its offset or Z), "now", or a time
-    // before now: "-90s", "-15m", "-2h", "-7d".
-    static std::optional<QDateTime> parseTime(const QString &text, const QDateTime &now);
+    // before now: "-90s", "-15m", "-2h", "-7d". A local time the clocks skip is an error;
+    // of one they show twice, the first, and note says so.
+    static std::optional<QDateTime> parseTime(const QString &text, const QDateTime &now, QString *error,
+                                              QString *note);
 
 private:
     const FamilyRegistry &m_registry;

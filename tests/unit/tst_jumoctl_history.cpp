@@ -18,6 +18,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <ctime>
 #include <sys/resource.h>
 #include <sys/stat.h>
 
@@ -44,6 +45,8 @@ private slots:
     void refusesWhatIsNoHistory();
     void damagedFilesAreNamed_data();
     void damagedFilesAreNamed();
+    void localTimesTheClocksSkipOrRepeat_data();
+    void localTimesTheClocksSkipOrRepeat();
 
 private:
     // A history of one entry, "long/a/ipc300@1" load_voltage, a sample a second from t0.
@@ -403,6 +406,59 @@ void tst_JumoctlHistory::damagedFilesAreNamed()
                        iso(m_t0 + samples * 1000LL)});
     QVERIFY2(r.err.startsWith("jumoctl history: " + path + ' ' + error), qPrintable(r.err));
     QCOMPARE(r.code, 2);
+}
+
+void tst_JumoctlHistory::localTimesTheClocksSkipOrRepeat_data()
+{
+    QTest::addColumn<QString>("from");
+    QTest::addColumn<int>("code");
+    QTest::addColumn<QString>("start");   // the span's start in UTC, as the JSON gives it
+    QTest::addColumn<QString>("error");
+
+    // Europe/Berlin: on 2026-03-29 the clocks go from 02:00 to 03:00, on 2026-10-25 from
+    // 03:00 (+02:00) back to 02:00 (+01:00).
+    QTest::newRow("a time the clocks skip")
+            << "2026-03-29T02:30" << 2 << QString()
+            << "jumoctl history: --from: 2026-03-29T02:30 does not exist in local time (Europe/Berlin): the clocks "
+               "skip it; give it with its offset, such as 2026-03-29T02:30+01:00, or in UTC, such as "
+               "2026-03-29T01:30:00Z\n";
+    QTest::newRow("a time the clocks show twice is the first")
+            << "2026-10-25T02:30" << 0 << "2026-10-25T00:30:00.000Z"
+            << "jumoctl history: --from: 2026-10-25T02:30 is twice in local time (Europe/Berlin), the clocks go back: "
+               "taken as the first, 2026-10-25T02:30+02:00; the second is 2026-10-25T02:30+01:00\n";
+    QTest::newRow("the second, by its offset") << "2026-10-25T02:30+01:00" << 0 << "2026-10-25T01:30:00.000Z"
+                                               << QString();
+    QTest::newRow("in UTC") << "2026-03-29T01:30Z" << 0 << "2026-03-29T01:30:00.000Z" << QString();
+    QTest::newRow("a local time before the change") << "2026-03-29T01:30" << 0 << "2026-03-29T00:30:00.000Z"
+                                                    << QString();
+    QTest::newRow("a local time after the change") << "2026-03-29T03:30" << 0 << "2026-03-29T01:30:00.000Z"
+                                                   << QString();
+    QTest::newRow("a date") << "2026-10-25" << 0 << "2026-10-24T22:00:00.000Z" << QString();
+}
+
+void tst_JumoctlHistory::localTimesTheClocksSkipOrRepeat()
+{
+    QFETCH(QString, from);
+    QFETCH(int, code);
+    QFETCH(QString, start);
+    QFETCH(QString, error);
+    const QByteArray zone = qgetenv("TZ");
+    const bool hadZone = qEnvironmentVariableIsSet("TZ");
+    qputenv("TZ", "Europe/Berlin");
+    ::tzset();
+    const auto restore = qScopeGuard([&] {
+        if (hadZone)
+            qputenv("TZ", zone);
+        else
+            qunsetenv("TZ");
+        ::tzset();
+    });
+    const Run r = run({"history", "--db", m_db, "a/ipc300@1", "load_voltage", "--from", from, "--to",
+                       "2026-12-31T00:00Z", "--json"});
+    QCOMPARE(r.err, error);
+    QCOMPARE(r.code, code);
+    if (code == 0)
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object().value("from").toString(), start);
 }
 
 bool tst_JumoctlHistory::makeLongHistory(const QString &path, int samples, qint64 t0)
