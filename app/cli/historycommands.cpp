@@ -272,8 +272,8 @@ int HistoryCommands::history(const QStringList &arguments)
                               << (r.minute ? valueText(p, p.maximum) : QString()) << '\n';
                     } else {
                         const QString value = valueText(p, p.value);
-                        m_out << QDateTime::fromMSecsSinceEpoch(p.timeMs).toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz"))
-                              << "  " << entry << "  "
+                        // With the offset: the hour the clocks repeat in autumn reads twice alike without it.
+                        m_out << LocalTime::withOffset(p.timeMs) << "  " << entry << "  "
                               << (value.isEmpty()  ? QStringLiteral("-")
                                   : unit.isEmpty() ? value
                                                    : value + QLatin1Char(' ') + printable(unit))

@@ -40,4 +40,10 @@ QString LocalTime::offsetText(int offsetSeconds)
             .arg(minutes % 60, 2, 10, QLatin1Char('0'));
 }
 
+QString LocalTime::withOffset(qint64 msSinceEpoch)
+{
+    const QDateTime local = QDateTime::fromMSecsSinceEpoch(msSinceEpoch);
+    return local.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")) + offsetText(local.offsetFromUtc());
+}
+
 } // namespace jumo

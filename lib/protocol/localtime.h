@@ -16,6 +16,8 @@ public:
     // The instants at which the clocks of zone showed date and time, earliest first (in
     // UTC): none in a gap the clocks skip, two in an hour they repeat.
     static QList<QDateTime> instants(QDate date, QTime time, const QTimeZone &zone = QTimeZone::systemTimeZone());
+    // "2026-10-25 02:30:00.000+02:00": the local time with its offset, never ambiguous.
+    static QString withOffset(qint64 msSinceEpoch);
     // "+02:00", "-03:30", "+00:00".
     static QString offsetText(int offsetSeconds);
 };

@@ -25,6 +25,33 @@
 using namespace jumo;
 using namespace jumo::test;
 
+namespace {
+
+// The process's local time zone (TZ) for one test, its own again after it.
+class TimeZone
+{
+public:
+    explicit TimeZone(const QByteArray &zone) : m_was(qgetenv("TZ")), m_wasSet(qEnvironmentVariableIsSet("TZ"))
+    {
+        qputenv("TZ", zone);
+        ::tzset();
+    }
+    ~TimeZone()
+    {
+        if (m_wasSet)
+            qputenv("TZ", m_was);
+        else
+            qunsetenv("TZ");
+        ::tzset();
+    }
+
+private:
+    QByteArray m_was;
+    bool m_wasSet;
+};
+
+} // namespace
+
 class tst_JumoctlHistory : public QObject
 {
     Q_OBJECT
@@ -47,10 +74,11 @@ private slots:
     void damagedFilesAreNamed();
     void localTimesTheClocksSkipOrRepeat_data();
     void localTimesTheClocksSkipOrRepeat();
+    void textTellsTheRepeatedHourApart();
 
 private:
-    // A history of one entry, "long/a/ipc300@1" load_voltage, a sample a second from t0.
-    static bool makeLongHistory(const QString &path, int samples, qint64 t0);
+    // A history of one entry, "long/a/ipc300@1" load_voltage, a sample every stepMs from t0.
+    static bool makeLongHistory(const QString &path, int samples, qint64 t0, qint64 stepMs = 1000);
     QString iso(qint64 ms) const { return QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC).toString(Qt::ISODateWithMs); }
 
     QTemporaryDir m_dir;
@@ -442,17 +470,7 @@ void tst_JumoctlHistory::localTimesTheClocksSkipOrRepeat()
     QFETCH(int, code);
     QFETCH(QString, start);
     QFETCH(QString, error);
-    const QByteArray zone = qgetenv("TZ");
-    const bool hadZone = qEnvironmentVariableIsSet("TZ");
-    qputenv("TZ", "Europe/Berlin");
-    ::tzset();
-    const auto restore = qScopeGuard([&] {
-        if (hadZone)
-            qputenv("TZ", zone);
-        else
-            qunsetenv("TZ");
-        ::tzset();
-    });
+    const TimeZone berlin("Europe/Berlin");
     const Run r = run({"history", "--db", m_db, "a/ipc300@1", "load_voltage", "--from", from, "--to",
                        "2026-12-31T00:00Z", "--json"});
     QCOMPARE(r.err, error);
@@ -461,7 +479,29 @@ void tst_JumoctlHistory::localTimesTheClocksSkipOrRepeat()
         QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object().value("from").toString(), start);
 }
 
-bool tst_JumoctlHistory::makeLongHistory(const QString &path, int samples, qint64 t0)
+// The text shows local time with its offset: the two 02:30 of the night the clocks go
+// back are two different times, and CSV and JSON give UTC.
+void tst_JumoctlHistory::textTellsTheRepeatedHourApart()
+{
+    const TimeZone berlin("Europe/Berlin");
+    QTemporaryDir dir;
+    const QString path = dir.filePath("h.sqlite");
+    const qint64 first = QDateTime::fromString("2026-10-25T00:30:00Z", Qt::ISODate).toMSecsSinceEpoch();
+    QVERIFY(makeLongHistory(path, 2, first, 3600 * 1000));
+    QStringList arguments{"history", "--db", path, "long/a/ipc300@1", "load_voltage", "--from", "2026-10-25T00:00Z",
+                          "--to", "2026-10-25T03:00Z"};
+    Run r = run(arguments);
+    QCOMPARE(r.err, QString());
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.out, QString("2026-10-25 02:30:00.000+02:00  load_voltage  200 V  ok\n"
+                            "2026-10-25 02:30:00.000+01:00  load_voltage  200.1 V  ok\n"));
+    r = run(arguments << "--csv");
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.contains("\n2026-10-25T00:30:00.000Z,") && r.out.contains("\n2026-10-25T01:30:00.000Z,"),
+             qPrintable(r.out));
+}
+
+bool tst_JumoctlHistory::makeLongHistory(const QString &path, int samples, qint64 t0, qint64 stepMs)
 {
     HistoryDatabase db(HistoryLocation::file(path));
     QString error;
@@ -471,9 +511,10 @@ bool tst_JumoctlHistory::makeLongHistory(const QString &path, int samples, qint6
                        &error)
             && db.exec(QString("WITH RECURSIVE n(i) AS (SELECT 0 UNION ALL SELECT i + 1 FROM n WHERE i < %1) "
                                "INSERT INTO history_raw (series, t, state, value) "
-                               "SELECT 1, %2 + i * 1000, 0, 200 + (i % 1000) * 0.1 FROM n")
+                               "SELECT 1, %2 + i * %3, 0, 200 + (i % 1000) * 0.1 FROM n")
                                .arg(samples - 1)
-                               .arg(t0),
+                               .arg(t0)
+                               .arg(stepMs),
                        &error);
     if (!ok)
         qWarning() << error;
