@@ -180,7 +180,8 @@ int HistoryCommands::history(const QStringList &arguments)
         location = *parsed;
     }
 
-    HistoryReader reader(location);
+    // A station's live history, or a copy: jumoctl leaves no file beside it.
+    HistoryReader reader(location, HistoryDatabase::ReadAccess::FromOutside);
     // A file that is no history of ours, or a damaged one, is a wrong input (2); a history
     // that cannot be reached or read now is a failure (1).
     auto readFailed = [&] {

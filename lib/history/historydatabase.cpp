@@ -8,6 +8,7 @@
 #include <QSqlError>
 #include <QSqlQuery>
 #include <QSqlRecord>
+#include <QUrl>
 #include <QVariant>
 
 #include <cstring>
@@ -78,8 +79,8 @@ QString upsert(const QString &table, const QStringList &columns, int rows)
 
 } // namespace
 
-HistoryDatabase::HistoryDatabase(const HistoryLocation &location)
-    : m_location(location), m_connectionName(nextConnectionName())
+HistoryDatabase::HistoryDatabase(const HistoryLocation &location, ReadAccess readAccess)
+    : m_location(location), m_connectionName(nextConnectionName()), m_readAccess(readAccess)
 {
 }
 
@@ -92,6 +93,7 @@ bool HistoryDatabase::open(bool writable, QString *error)
 {
     close();
     m_fault = Fault::None;
+    m_immutable = false;
     const bool postgres = isPostgres();
     m_db = QSqlDatabase::addDatabase(postgres ? QStringLiteral("QPSQL") : QStringLiteral("QSQLITE"), m_connectionName);
     if (!m_db.isValid()) {
@@ -130,19 +132,33 @@ bool HistoryDatabase::open(bool writable, QString *error)
                 close();
                 return false;
             }
-            const bool usable = writable || checkFileHeader(fd, error);
+            bool walMode = false;
+            const bool usable = writable || checkFileHeader(fd, &walMode, error);
             ::close(fd);
             if (!usable) {
                 close();
                 return false;
             }
+            // In WAL mode even a read-only connection makes the -wal and -shm files where
+            // they are missing, and leaves them. A reader from outside shares them where a
+            // writer is at work (so it reads what was committed last), and else reads the
+            // file as it is, touching nothing. A recorder that starts on the file while it
+            // is read so may change pages under it: failure() says so.
+            m_immutable = !writable && m_readAccess == ReadAccess::FromOutside && walMode
+                    && !QFileInfo::exists(m_location.path + QLatin1String("-wal"));
         }
         if (writable)
             QDir().mkpath(info.absolutePath());
-        m_db.setDatabaseName(m_location.path);
-        // A reader waits for a checkpoint rather than failing; never longer than this.
-        m_db.setConnectOptions(writable ? QStringLiteral("QSQLITE_BUSY_TIMEOUT=10000")
-                                        : QStringLiteral("QSQLITE_BUSY_TIMEOUT=10000;QSQLITE_OPEN_READONLY"));
+        if (m_immutable) {
+            m_db.setDatabaseName(QUrl::fromLocalFile(info.absoluteFilePath()).toString(QUrl::FullyEncoded)
+                                 + QLatin1String("?immutable=1"));
+            m_db.setConnectOptions(QStringLiteral("QSQLITE_OPEN_URI;QSQLITE_OPEN_READONLY"));
+        } else {
+            m_db.setDatabaseName(m_location.path);
+            // A reader waits for a checkpoint rather than failing; never longer than this.
+            m_db.setConnectOptions(writable ? QStringLiteral("QSQLITE_BUSY_TIMEOUT=10000")
+                                            : QStringLiteral("QSQLITE_BUSY_TIMEOUT=10000;QSQLITE_OPEN_READONLY"));
+        }
     }
     if (!m_db.open()) {
         if (error)
@@ -194,6 +210,10 @@ QString HistoryDatabase::failure(const QString &doing, const QSqlError &error)
     // their extended codes: the file, not the reading, is at fault.
     const int code = error.nativeErrorCode().toInt();
     if (!isPostgres() && ((code & 0xff) == 11 || (code & 0xff) == 26)) {
+        if (m_immutable && QFileInfo::exists(m_location.path + QLatin1String("-wal"))) {
+            return tr("the history %1 changed while it was read (a recorder started on it): read it again")
+                    .arg(m_location.display());
+        }
         m_fault = Fault::Damaged;
         return tr("%1 is damaged: %2").arg(m_location.display(), error.databaseText().trimmed());
     }
@@ -267,7 +287,7 @@ bool HistoryDatabase::checkSchemaVersionOrSet(QString *error)
     return true;
 }
 
-bool HistoryDatabase::checkFileHeader(int fd, QString *error)
+bool HistoryDatabase::checkFileHeader(int fd, bool *walMode, QString *error)
 {
     // SQLite reads a file cut short as if the rest were zeros and fails only at the first
     // page it misses, or takes a file that is no database for an empty one: its header
@@ -304,6 +324,8 @@ bool HistoryDatabase::checkFileHeader(int fd, QString *error)
     const qint64 pages = bigEndian(28, 4);
     const bool countValid = pages > 0 && bigEndian(24, 4) == bigEndian(92, 4);
     const bool settled = !QFileInfo::exists(m_location.path + QLatin1String("-wal"));
+    // The versions that read and write it: 2, WAL.
+    *walMode = header[18] == 2 && header[19] == 2;
     if (size % pageSize != 0) {
         return refuse(Fault::Damaged,
                       tr("%1 is damaged: it ends inside a page (%2 bytes, pages of %3): it was cut off")

@@ -28,7 +28,13 @@ public:
     // is no JUMO history, or a damaged one.
     enum class Fault { None, Unavailable, NotAHistory, Damaged };
 
-    explicit HistoryDatabase(const HistoryLocation &location);
+    // How a read-only connection treats an SQLite file in WAL mode. Beside its writer (a
+    // store's own trends) it shares the writer's -wal and -shm files, made where missing.
+    // From outside (jumoctl, a copy of a history) it never leaves a file beside the
+    // history: it shares them where a writer left them, and else reads the file as is.
+    enum class ReadAccess { BesideWriter, FromOutside };
+
+    explicit HistoryDatabase(const HistoryLocation &location, ReadAccess readAccess = ReadAccess::BesideWriter);
     ~HistoryDatabase();
     HistoryDatabase(const HistoryDatabase &) = delete;
     HistoryDatabase &operator=(const HistoryDatabase &) = delete;
@@ -63,14 +69,16 @@ public:
 private:
     bool createSchema(QString *error);
     bool checkSchema(QString *error);
-    // A read-only SQLite file: an SQLite database, whole.
-    bool checkFileHeader(int fd, QString *error);
+    // A read-only SQLite file: an SQLite database, whole; walMode from its header.
+    bool checkFileHeader(int fd, bool *walMode, QString *error);
     bool refuse(Fault fault, const QString &message, QString *error);
     bool checkSchemaVersionOrSet(QString *error);
 
     HistoryLocation m_location;
     QString m_connectionName;
     QSqlDatabase m_db;
+    ReadAccess m_readAccess;
+    bool m_immutable = false;   // opened as a file nobody writes
     Fault m_fault = Fault::None;
 };
 

@@ -51,7 +51,10 @@ HistoryPoint pointOf(const QSqlQuery &q, bool minute)
 
 } // namespace
 
-HistoryReader::HistoryReader(const HistoryLocation &location) : m_db(location) { }
+HistoryReader::HistoryReader(const HistoryLocation &location, HistoryDatabase::ReadAccess access)
+    : m_db(location, access)
+{
+}
 
 bool HistoryReader::open(QString *error)
 {

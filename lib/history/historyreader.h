@@ -29,7 +29,8 @@ class HistoryReader
     Q_DECLARE_TR_FUNCTIONS(jumo::HistoryReader)
 
 public:
-    explicit HistoryReader(const HistoryLocation &location);
+    explicit HistoryReader(const HistoryLocation &location,
+                           HistoryDatabase::ReadAccess access = HistoryDatabase::ReadAccess::BesideWriter);
 
     bool open(QString *error);
     bool isOpen() const { return m_db.isOpen(); }

@@ -7,6 +7,7 @@
 #include "logs/eventlog.h"
 
 #include <QDateTime>
+#include <QDir>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -75,6 +76,8 @@ private slots:
     void localTimesTheClocksSkipOrRepeat_data();
     void localTimesTheClocksSkipOrRepeat();
     void textTellsTheRepeatedHourApart();
+    void readingLeavesNoFileBeside();
+    void readingALiveHistory();
 
 private:
     // A history of one entry, "long/a/ipc300@1" load_voltage, a sample every stepMs from t0.
@@ -499,6 +502,72 @@ void tst_JumoctlHistory::textTellsTheRepeatedHourApart()
     QCOMPARE(r.code, 0);
     QVERIFY2(r.out.contains("\n2026-10-25T00:30:00.000Z,") && r.out.contains("\n2026-10-25T01:30:00.000Z,"),
              qPrintable(r.out));
+}
+
+static QStringList filesIn(const QTemporaryDir &dir)
+{
+    return QDir(dir.path()).entryList(QDir::Files, QDir::Name);
+}
+
+// A history nobody writes (a copy, a station stopped) is read without a -wal or -shm
+// file made beside it: SQLite's read-only connection to a file in WAL mode left both.
+void tst_JumoctlHistory::readingLeavesNoFileBeside()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath("h.sqlite");
+    QVERIFY(makeLongHistory(path, 100, m_t0));
+    QCOMPARE(filesIn(dir), QStringList{"h.sqlite"});
+    const QFileInfo before(path);
+    for (const QString format : {"--csv", "--json", "--csv"}) {
+        const Run r = run({"history", "--db", path, "long/a/ipc300@1", "load_voltage", "--from", iso(m_t0), "--to",
+                           iso(m_t0 + 100000), format});
+        QCOMPARE(r.err, QString());
+        QCOMPARE(r.code, 0);
+        if (format == "--csv")
+            QCOMPARE(r.out.count('\n'), 101);
+        else
+            QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8())["entries"][0]["records"].toArray().size(), 100);
+        QCOMPARE(filesIn(dir), QStringList{"h.sqlite"});
+    }
+    QCOMPARE(QFileInfo(path).lastModified(), before.lastModified());
+}
+
+// A station's history while its recorder writes it: jumoctl reads what was committed
+// last (through the writer's -wal file), and when the recorder stops no file is left.
+void tst_JumoctlHistory::readingALiveHistory()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath("history-live.sqlite");
+    const QStringList arguments{"history", "--db", path, "live/a/ipc300@1", "load_voltage", "--from", iso(m_t0),
+                                "--to", iso(m_t0 + 60000), "--csv"};
+    {
+        HistorySettings settings;
+        settings.batchIntervalMs = 20;
+        SqlHistoryStore store(HistoryLocation::file(path), "live", settings);
+        QSignalSpy written(&store, &SqlHistoryStore::written);
+        store.start();
+        HistorySample s;
+        s.series = store.series({{"live", "a", "ipc300@1"}, "load_voltage", true, "V"});
+        s.state = SampleState::Ok;
+        for (int i = 0; i < 3; ++i) {
+            s.timeMs = m_t0 + i * 1000;
+            s.value = 230 + i;
+            store.record(s);
+            store.flush();
+            QVERIFY(written.wait(20000));
+            const Run r = run(arguments);
+            QCOMPARE(r.err, QString());
+            QCOMPARE(r.code, 0);
+            QCOMPARE(r.out.count('\n'), 1 + i + 1);   // the header and every sample so far
+            QVERIFY2(r.out.contains(QString(",live/a/ipc300@1,load_voltage,%1,V,ok,").arg(230 + i)), qPrintable(r.out));
+        }
+    }
+    QCOMPARE(filesIn(dir), QStringList{"history-live.sqlite"});
+    // The recorder's stop (marked at the time it stopped), read from the file it left.
+    const Run r = run(QStringList(arguments.mid(0, 7)) << "--to" << "now" << "--csv");
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.contains(",not_recorded,"), qPrintable(r.out));
+    QCOMPARE(filesIn(dir), QStringList{"history-live.sqlite"});
 }
 
 bool tst_JumoctlHistory::makeLongHistory(const QString &path, int samples, qint64 t0, qint64 stepMs)
