@@ -247,10 +247,12 @@ int HistoryCommands::history(const QStringList &arguments)
         const QString unit = infos.value(entry).unit;
         if (json)
             jsonWriter.beginEntry(entry, unit);
+        int unknownStates = 0;
         const bool ok = reader.records(
                 key, entry, fromMs, toMs,
                 [&](const HistoryRecord &r) {
                     const HistoryPoint &p = r.point;
+                    unknownStates += p.state == SampleState::UnknownState;
                     const QString resolution = r.minute ? QStringLiteral("minute") : QStringLiteral("raw");
                     if (json) {
                         QJsonObject o{{"time", isoTime(p.timeMs)},
@@ -290,6 +292,14 @@ int HistoryCommands::history(const QStringList &arguments)
                 &error);
         if (!ok)
             return readFailed();
+        if (unknownStates > 0) {
+            // A newer version's state, or a hand-made file's: shown, never taken for ok.
+            m_err << tr("jumoctl history: %1: %n record(s) with a state this version does not know, shown as "
+                        "unknown_state (validity unknown)",
+                        nullptr, unknownStates)
+                             .arg(entry)
+                  << Qt::endl;
+        }
         if (json)
             jsonWriter.endEntry();
     }

@@ -36,7 +36,7 @@ HistoryPoint pointOf(const QSqlQuery &q, bool minute)
 {
     HistoryPoint p;
     p.timeMs = q.value(0).toLongLong();
-    p.state = sampleStateFromNumber(q.value(1).toInt()).value_or(SampleState::NotRecorded);
+    p.state = sampleStateFromStored(q.value(1));
     p.value = number(q.value(2));
     p.text = q.value(3).toString();
     if (minute) {

@@ -78,6 +78,7 @@ private slots:
     void textTellsTheRepeatedHourApart();
     void readingLeavesNoFileBeside();
     void readingALiveHistory();
+    void unknownStatesAreNotGood();
 
 private:
     // A history of one entry, "long/a/ipc300@1" load_voltage, a sample every stepMs from t0.
@@ -568,6 +569,38 @@ void tst_JumoctlHistory::readingALiveHistory()
     QCOMPARE(r.code, 0);
     QVERIFY2(r.out.contains(",not_recorded,"), qPrintable(r.out));
     QCOMPARE(filesIn(dir), QStringList{"history-live.sqlite"});
+}
+
+// A state column's value that this version does not know (a newer version's number, a
+// hand-made file's text, a fraction) is shown as unknown_state, said so on stderr, and
+// never read as ok (a text was 0) or as a state it is not (2.5 was invalid, 99 not_recorded).
+void tst_JumoctlHistory::unknownStatesAreNotGood()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath("h.sqlite");
+    QVERIFY(makeLongHistory(path, 6, m_t0));
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase("QSQLITE", "changer");
+        db.setDatabaseName(path);
+        QVERIFY(db.open());
+        const QStringList states{"99", "'ok'", "''", "2.5", "-1", "4"};
+        for (int i = 0; i < states.size(); ++i) {
+            QSqlQuery q(db);
+            QVERIFY(q.exec(QString("UPDATE history_raw SET state = %1 WHERE t = %2").arg(states[i]).arg(m_t0 + i * 1000)));
+        }
+        db.close();
+    }
+    QSqlDatabase::removeDatabase("changer");
+    const Run r = run({"history", "--db", path, "long/a/ipc300@1", "load_voltage", "--from", iso(m_t0), "--to",
+                       iso(m_t0 + 6000), "--csv"});
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.err, QString("jumoctl history: load_voltage: 5 record(s) with a state this version does not know, "
+                            "shown as unknown_state (validity unknown)\n"));
+    const QStringList lines = r.out.split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), 7);
+    for (int i = 1; i <= 5; ++i)
+        QVERIFY2(lines[i].endsWith(",V,unknown_state,unknown,raw,,,"), qPrintable(lines[i]));
+    QVERIFY2(lines[6].endsWith(",V,stale,stale,raw,,,"), qPrintable(lines[6]));   // 4, as it should be
 }
 
 bool tst_JumoctlHistory::makeLongHistory(const QString &path, int samples, qint64 t0, qint64 stepMs)
