@@ -11,12 +11,14 @@
 #include "protocol/localtime.h"
 #include "protocol/printable.h"
 #include "protocol/valuecodec.h"
+#include "quitonsignal.h"
 
 #include <QJsonObject>
 #include <QRegularExpression>
 #include <QSet>
 
 #include <cmath>
+#include <csignal>
 
 namespace jumo {
 
@@ -100,6 +102,15 @@ std::optional<QDateTime> HistoryCommands::parseTime(const QString &text, const Q
                              text + LocalTime::offsetText(int(instants.last().secsTo(fields))));
     }
     return instants.first();
+}
+
+QString HistoryCommands::signalSummary(int signal, const QString &done)
+{
+    const QString summary = signal == SIGTERM  ? tr("terminated: %1")
+            : signal == SIGHUP                 ? tr("hangup: %1")
+            : signal == SIGPIPE                ? tr("output closed: %1")
+                                               : tr("interrupted: %1");
+    return tr("jumoctl history: %1").arg(summary.arg(done));
 }
 
 int HistoryCommands::history(const QStringList &arguments)
@@ -192,9 +203,17 @@ int HistoryCommands::history(const QStringList &arguments)
                 ? exitcode::Usage
                 : exitcode::Failed;
     };
-    if (!reader.open(&error))
-        return readFailed();
-    const std::optional<QList<HistorySeriesInfo>> series = reader.series(station, &error);
+    std::optional<QList<HistorySeriesInfo>> series;
+    {
+        // Qt's connect to PostgreSQL (up to its 10 s timeout) and SQLite's wait for a lock
+        // block and cannot be interrupted; nothing is read yet, so a signal ends it at once.
+        const EndAtOnceOnSignals endAtOnce([&](int signal) {
+            return signalSummary(signal, tr("nothing was read (opening %1)").arg(location.display()));
+        });
+        if (!reader.open(&error))
+            return readFailed();
+        series = reader.series(station, &error);
+    }
     if (!series)
         return readFailed();
     const QString device = parser.positionalArguments().constFirst();
@@ -241,6 +260,7 @@ int HistoryCommands::history(const QStringList &arguments)
         m_out << "time,device,entry,value,unit,state,validity,resolution,minimum,mean,maximum\n";
     // JSON as it is read, like the others: a long history never waits whole in memory.
     HistoryJsonWriter jsonWriter(m_out);
+    int printed = 0;
     if (json)
         jsonWriter.begin(key.name(), isoTime(fromMs), isoTime(toMs));
     for (const QString &entry : entries) {
@@ -251,6 +271,10 @@ int HistoryCommands::history(const QStringList &arguments)
         const bool ok = reader.records(
                 key, entry, fromMs, toMs,
                 [&](const HistoryRecord &r) {
+                    // A signal stops it before the next record (the loop is not running).
+                    if (pendingTerminationSignal() != 0)
+                        return false;
+                    ++printed;
                     const HistoryPoint &p = r.point;
                     unknownStates += p.state == SampleState::UnknownState;
                     const QString resolution = r.minute ? QStringLiteral("minute") : QStringLiteral("raw");
@@ -292,6 +316,11 @@ int HistoryCommands::history(const QStringList &arguments)
                 &error);
         if (!ok)
             return readFailed();
+        if (const int signal = pendingTerminationSignal(); signal != 0) {
+            m_out.flush();
+            m_err << signalSummary(signal, tr("%n record(s) printed", nullptr, printed)) << Qt::endl;
+            return 128 + signal;
+        }
         if (unknownStates > 0) {
             // A newer version's state, or a hand-made file's: shown, never taken for ok.
             m_err << tr("jumoctl history: %1: %n record(s) with a state this version does not know, shown as "

@@ -16,8 +16,11 @@
 #include <QSignalSpy>
 #include <QSqlDatabase>
 #include <QSqlQuery>
+#include <QTcpServer>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <csignal>
 
 #include <ctime>
 #include <sys/resource.h>
@@ -79,6 +82,9 @@ private slots:
     void readingLeavesNoFileBeside();
     void readingALiveHistory();
     void unknownStatesAreNotGood();
+    void signalEndsAConnectThatHangs_data();
+    void signalEndsAConnectThatHangs();
+    void signalStopsALongRead();
 
 private:
     // A history of one entry, "long/a/ipc300@1" load_voltage, a sample every stepMs from t0.
@@ -601,6 +607,69 @@ void tst_JumoctlHistory::unknownStatesAreNotGood()
     for (int i = 1; i <= 5; ++i)
         QVERIFY2(lines[i].endsWith(",V,unknown_state,unknown,raw,,,"), qPrintable(lines[i]));
     QVERIFY2(lines[6].endsWith(",V,stale,stale,raw,,,"), qPrintable(lines[6]));   // 4, as it should be
+}
+
+void tst_JumoctlHistory::signalEndsAConnectThatHangs_data()
+{
+    QTest::addColumn<int>("signal");
+    QTest::addColumn<int>("code");
+    QTest::addColumn<QString>("word");
+
+    QTest::newRow("Ctrl-C") << SIGINT << 130 << "interrupted";
+    QTest::newRow("SIGTERM") << SIGTERM << 143 << "terminated";
+    QTest::newRow("a closed terminal") << SIGHUP << 129 << "hangup";
+}
+
+// A PostgreSQL server that takes the connection and never answers held jumoctl in Qt's
+// connect for its 10 s timeout, deaf to Ctrl-C, and then it exited 1.
+void tst_JumoctlHistory::signalEndsAConnectThatHangs()
+{
+    QFETCH(int, signal);
+    QFETCH(int, code);
+    QFETCH(QString, word);
+    if (!QSqlDatabase::isDriverAvailable("QPSQL"))
+        QSKIP("Qt's QPSQL driver is not installed (libqt6sql6-psql)");
+    QTcpServer silent;
+    QVERIFY(silent.listen(QHostAddress::LocalHost));
+    QSignalSpy connected(&silent, &QTcpServer::newConnection);
+    QProcess p;
+    p.start(QStringLiteral(JUMOCTL_PATH), {"history", "--db", QString("postgresql://127.0.0.1:%1/h").arg(silent.serverPort()),
+                                          "ipc300@1", "load_voltage"});
+    QVERIFY(p.waitForStarted(30000));
+    QVERIFY(connected.wait(30000));   // jumoctl waits in the connect now
+    QCOMPARE(::kill(pid_t(p.processId()), signal), 0);
+    QVERIFY(p.waitForFinished(60000));
+    QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(QString::fromUtf8(p.readAllStandardError()),
+             QString("jumoctl history: %1: nothing was read (opening postgresql://127.0.0.1:%2/h)\n")
+                     .arg(word)
+                     .arg(silent.serverPort()));
+    QCOMPARE(p.exitCode(), code);
+}
+
+// A signal stops a long read before its next record, with what was printed flushed and
+// counted, as the line commands stop: jumoctl read on to the end before.
+void tst_JumoctlHistory::signalStopsALongRead()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath("long.sqlite");
+    const int samples = 200000;
+    QVERIFY(makeLongHistory(path, samples, m_t0));
+    QProcess p;
+    p.start(QStringLiteral(JUMOCTL_PATH), {"history", "--db", path, "long/a/ipc300@1", "load_voltage", "--from",
+                                          iso(m_t0), "--to", iso(m_t0 + samples * 1000LL), "--csv"});
+    // The first records are out; what follows waits for the pipe, which this test does
+    // not read until the signal is sent.
+    QVERIFY(p.waitForReadyRead(60000));
+    QCOMPARE(::kill(pid_t(p.processId()), SIGINT), 0);
+    QVERIFY(p.waitForFinished(120000));
+    QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+    const QString err = QString::fromUtf8(p.readAllStandardError());
+    const QStringList lines = QString::fromUtf8(p.readAllStandardOutput()).split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(p.exitCode(), 130);
+    QCOMPARE(err, QString("jumoctl history: interrupted: %1 record(s) printed\n").arg(lines.size() - 1));
+    QVERIFY2(lines.size() - 1 < samples, qPrintable(err));
+    QVERIFY(lines.last().endsWith(",ok,current,raw,,,"));   // whole records only
 }
 
 bool tst_JumoctlHistory::makeLongHistory(const QString &path, int samples, qint64 t0, qint64 stepMs)
