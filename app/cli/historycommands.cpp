@@ -4,19 +4,21 @@
 #include "commandparser.h"
 #include "exitcodes.h"
 #include "history/historyreader.h"
+#include "historyjsonwriter.h"
 #include "logs/eventlog.h"
 #include "protocol/csv.h"
 #include "protocol/familyregistry.h"
+#include "protocol/localtime.h"
 #include "protocol/printable.h"
 #include "protocol/valuecodec.h"
+#include "quitonsignal.h"
 
-#include <QJsonArray>
-#include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
 #include <QSet>
 
 #include <cmath>
+#include <csignal>
 
 namespace jumo {
 
@@ -54,7 +56,8 @@ HistoryCommands::HistoryCommands(const FamilyRegistry &registry, QTextStream &ou
 {
 }
 
-std::optional<QDateTime> HistoryCommands::parseTime(const QString &text, const QDateTime &now)
+std::optional<QDateTime> HistoryCommands::parseTime(const QString &text, const QDateTime &now, QString *error,
+                                                    QString *note)
 {
     if (text == QLatin1String("now"))
         return now;
@@ -65,10 +68,49 @@ std::optional<QDateTime> HistoryCommands::parseTime(const QString &text, const Q
         const qint64 seconds = unit == QLatin1Char('s') ? 1 : unit == QLatin1Char('m') ? 60 : unit == QLatin1Char('h') ? 3600 : 86400;
         return now.addSecs(-count * seconds);
     }
-    QDateTime time = QDateTime::fromString(text, Qt::ISODateWithMs);
-    if (!time.isValid())
+    const QDateTime parsed = QDateTime::fromString(text, Qt::ISODateWithMs);
+    if (parsed.isValid() && parsed.timeSpec() != Qt::LocalTime)
+        return parsed;   // it names its offset or Z
+    // A local time: its fields (read as if UTC, so that a time the clocks skip is still
+    // read), then the instants the local clocks showed them.
+    QDateTime fields = QDateTime::fromString(text + QLatin1Char('Z'), Qt::ISODateWithMs);
+    if (!fields.isValid()) {
+        const QDate date = QDate::fromString(text, Qt::ISODate);
+        if (date.isValid())
+            fields = QDateTime(date, QTime(0, 0), Qt::UTC);
+    }
+    if (!fields.isValid()) {
+        if (error)
+            *error = tr("'%1' is no time").arg(text);
         return std::nullopt;
-    return time;
+    }
+    const QTimeZone zone = QTimeZone::systemTimeZone();
+    const QList<QDateTime> instants = LocalTime::instants(fields.date(), fields.time(), zone);
+    if (instants.isEmpty()) {
+        const int before = zone.offsetFromUtc(fields.addDays(-1));
+        if (error)
+            *error = tr("%1 does not exist in local time (%2): the clocks skip it; give it with its offset, such as "
+                        "%3, or in UTC, such as %4")
+                             .arg(text, QString::fromUtf8(zone.id()), text + LocalTime::offsetText(before),
+                                  fields.addSecs(-before).toString(Qt::ISODate));
+        return std::nullopt;
+    }
+    if (instants.size() > 1 && note) {
+        *note = tr("%1 is twice in local time (%2), the clocks go back: taken as the first, %3; the second is %4")
+                        .arg(text, QString::fromUtf8(zone.id()),
+                             text + LocalTime::offsetText(int(instants.first().secsTo(fields))),
+                             text + LocalTime::offsetText(int(instants.last().secsTo(fields))));
+    }
+    return instants.first();
+}
+
+QString HistoryCommands::signalSummary(int signal, const QString &done)
+{
+    const QString summary = signal == SIGTERM  ? tr("terminated: %1")
+            : signal == SIGHUP                 ? tr("hangup: %1")
+            : signal == SIGPIPE                ? tr("output closed: %1")
+                                               : tr("interrupted: %1");
+    return tr("jumoctl history: %1").arg(summary.arg(done));
 }
 
 int HistoryCommands::history(const QStringList &arguments)
@@ -85,7 +127,8 @@ int HistoryCommands::history(const QStringList &arguments)
                       tr("URL")});
     parser.addOption({QStringLiteral("from"),
                       tr("Start: an ISO 8601 time (local unless it names its offset), 'now', or a time before now "
-                         "such as -90s, -15m, -2h, -7d. Default: -1h."),
+                         "such as -90s, -15m, -2h, -7d. Default: -1h. A local time the clocks skip is refused; of one "
+                         "they show twice, the first is taken."),
                       tr("TIME"), QStringLiteral("-1h")});
     parser.addOption({QStringLiteral("to"), tr("End, as --from. Default: now."), tr("TIME"), QStringLiteral("now")});
     parser.addOption({QStringLiteral("csv"), tr("CSV: time,device,entry,value,unit,state,validity,resolution,"
@@ -108,12 +151,19 @@ int HistoryCommands::history(const QStringList &arguments)
         return usage(tr("give exactly one of --station FILE and --db URL"));
 
     const QDateTime now = QDateTime::currentDateTimeUtc();
-    const std::optional<QDateTime> from = parseTime(parser.value(QStringLiteral("from")), now);
-    const std::optional<QDateTime> to = parseTime(parser.value(QStringLiteral("to")), now);
+    QString timeError;
+    QString fromNote;
+    QString toNote;
+    const std::optional<QDateTime> from = parseTime(parser.value(QStringLiteral("from")), now, &timeError, &fromNote);
     if (!from)
-        return usage(tr("--from: '%1' is no time").arg(parser.value(QStringLiteral("from"))));
+        return usage(QStringLiteral("--from: ") + timeError);
+    const std::optional<QDateTime> to = parseTime(parser.value(QStringLiteral("to")), now, &timeError, &toNote);
     if (!to)
-        return usage(tr("--to: '%1' is no time").arg(parser.value(QStringLiteral("to"))));
+        return usage(QStringLiteral("--to: ") + timeError);
+    if (!fromNote.isEmpty())
+        m_err << tr("jumoctl history: %1").arg(QStringLiteral("--from: ") + fromNote) << Qt::endl;
+    if (!toNote.isEmpty())
+        m_err << tr("jumoctl history: %1").arg(QStringLiteral("--to: ") + toNote) << Qt::endl;
     if (*to <= *from)
         return usage(tr("--to must be after --from"));
 
@@ -141,16 +191,31 @@ int HistoryCommands::history(const QStringList &arguments)
         location = *parsed;
     }
 
-    HistoryReader reader(location);
-    if (!reader.open(&error)) {
+    // A station's live history, or a copy: jumoctl leaves no file beside it.
+    HistoryReader reader(location, HistoryDatabase::ReadAccess::FromOutside);
+    // A file that is no history of ours, or a damaged one, is a wrong input (2); a history
+    // that cannot be reached or read now is a failure (1).
+    auto readFailed = [&] {
+        m_out.flush();
         m_err << tr("jumoctl history: %1").arg(error) << Qt::endl;
-        return exitcode::Failed;
+        const HistoryDatabase::Fault fault = reader.fault();
+        return fault == HistoryDatabase::Fault::NotAHistory || fault == HistoryDatabase::Fault::Damaged
+                ? exitcode::Usage
+                : exitcode::Failed;
+    };
+    std::optional<QList<HistorySeriesInfo>> series;
+    {
+        // Qt's connect to PostgreSQL (up to its 10 s timeout) and SQLite's wait for a lock
+        // block and cannot be interrupted; nothing is read yet, so a signal ends it at once.
+        const EndAtOnceOnSignals endAtOnce([&](int signal) {
+            return signalSummary(signal, tr("nothing was read (opening %1)").arg(location.display()));
+        });
+        if (!reader.open(&error))
+            return readFailed();
+        series = reader.series(station, &error);
     }
-    const std::optional<QList<HistorySeriesInfo>> series = reader.series(station, &error);
-    if (!series) {
-        m_err << tr("jumoctl history: %1").arg(error) << Qt::endl;
-        return exitcode::Failed;
-    }
+    if (!series)
+        return readFailed();
     const QString device = parser.positionalArguments().constFirst();
     QList<HistoryKey> keys;
     QSet<QString> devices;
@@ -193,14 +258,25 @@ int HistoryCommands::history(const QStringList &arguments)
     const qint64 toMs = to->toMSecsSinceEpoch();
     if (csv)
         m_out << "time,device,entry,value,unit,state,validity,resolution,minimum,mean,maximum\n";
-    QJsonArray jsonEntries;
+    // JSON as it is read, like the others: a long history never waits whole in memory.
+    HistoryJsonWriter jsonWriter(m_out);
+    int printed = 0;
+    if (json)
+        jsonWriter.begin(key.name(), isoTime(fromMs), isoTime(toMs));
     for (const QString &entry : entries) {
         const QString unit = infos.value(entry).unit;
-        QJsonArray records;
+        if (json)
+            jsonWriter.beginEntry(entry, unit);
+        int unknownStates = 0;
         const bool ok = reader.records(
                 key, entry, fromMs, toMs,
                 [&](const HistoryRecord &r) {
+                    // A signal stops it before the next record (the loop is not running).
+                    if (pendingTerminationSignal() != 0)
+                        return false;
+                    ++printed;
                     const HistoryPoint &p = r.point;
+                    unknownStates += p.state == SampleState::UnknownState;
                     const QString resolution = r.minute ? QStringLiteral("minute") : QStringLiteral("raw");
                     if (json) {
                         QJsonObject o{{"time", isoTime(p.timeMs)},
@@ -213,7 +289,7 @@ int HistoryCommands::history(const QStringList &arguments)
                             o.insert("mean", jsonNumber(p.mean));
                             o.insert("maximum", jsonNumber(p.maximum));
                         }
-                        records.append(o);
+                        jsonWriter.record(o);
                     } else if (csv) {
                         m_out << isoTime(p.timeMs) << ',' << csvField(key.name()) << ',' << csvField(entry) << ','
                               << csvField(valueText(p, p.value)) << ',' << csvField(printable(unit)) << ','
@@ -223,8 +299,8 @@ int HistoryCommands::history(const QStringList &arguments)
                               << (r.minute ? valueText(p, p.maximum) : QString()) << '\n';
                     } else {
                         const QString value = valueText(p, p.value);
-                        m_out << QDateTime::fromMSecsSinceEpoch(p.timeMs).toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz"))
-                              << "  " << entry << "  "
+                        // With the offset: the hour the clocks repeat in autumn reads twice alike without it.
+                        m_out << LocalTime::withOffset(p.timeMs) << "  " << entry << "  "
                               << (value.isEmpty()  ? QStringLiteral("-")
                                   : unit.isEmpty() ? value
                                                    : value + QLatin1Char(' ') + printable(unit))
@@ -238,20 +314,26 @@ int HistoryCommands::history(const QStringList &arguments)
                     return m_out.status() == QTextStream::Ok;
                 },
                 &error);
-        if (!ok) {
+        if (!ok)
+            return readFailed();
+        if (const int signal = pendingTerminationSignal(); signal != 0) {
             m_out.flush();
-            m_err << tr("jumoctl history: %1").arg(error) << Qt::endl;
-            return exitcode::Failed;
+            m_err << signalSummary(signal, tr("%n record(s) printed", nullptr, printed)) << Qt::endl;
+            return 128 + signal;
+        }
+        if (unknownStates > 0) {
+            // A newer version's state, or a hand-made file's: shown, never taken for ok.
+            m_err << tr("jumoctl history: %1: %n record(s) with a state this version does not know, shown as "
+                        "unknown_state (validity unknown)",
+                        nullptr, unknownStates)
+                             .arg(entry)
+                  << Qt::endl;
         }
         if (json)
-            jsonEntries.append(QJsonObject{{"entry", entry}, {"unit", unit}, {"records", records}});
+            jsonWriter.endEntry();
     }
     if (json)
-        m_out << QJsonDocument(QJsonObject{{"device", key.name()},
-                                           {"from", isoTime(fromMs)},
-                                           {"to", isoTime(toMs)},
-                                           {"entries", jsonEntries}})
-                         .toJson(QJsonDocument::Indented);
+        jsonWriter.end();
     m_out.flush();
     return exitcode::Ok;
 }

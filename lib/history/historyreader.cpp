@@ -25,11 +25,18 @@ QString columns(bool minute)
                   : QStringLiteral("t, state, value, text_value");
 }
 
+// next() is false at the end and when a page could not be read (a damaged file, a
+// server gone): only the error tells them apart.
+bool failedReading(const QSqlQuery &q)
+{
+    return q.lastError().isValid();
+}
+
 HistoryPoint pointOf(const QSqlQuery &q, bool minute)
 {
     HistoryPoint p;
     p.timeMs = q.value(0).toLongLong();
-    p.state = sampleStateFromNumber(q.value(1).toInt()).value_or(SampleState::NotRecorded);
+    p.state = sampleStateFromStored(q.value(1));
     p.value = number(q.value(2));
     p.text = q.value(3).toString();
     if (minute) {
@@ -44,7 +51,10 @@ HistoryPoint pointOf(const QSqlQuery &q, bool minute)
 
 } // namespace
 
-HistoryReader::HistoryReader(const HistoryLocation &location) : m_db(location) { }
+HistoryReader::HistoryReader(const HistoryLocation &location, HistoryDatabase::ReadAccess access)
+    : m_db(location, access)
+{
+}
 
 bool HistoryReader::open(QString *error)
 {
@@ -55,12 +65,14 @@ bool HistoryReader::open(QString *error)
 std::optional<QList<HistorySeriesInfo>> HistoryReader::series(const QString &station, QString *error)
 {
     QSqlQuery q = m_db.query();
-    q.prepare(QStringLiteral("SELECT station, line, device, entry, is_number, unit FROM history_series %1"
-                             "ORDER BY station, line, device, entry")
-                      .arg(station.isEmpty() ? QString() : QStringLiteral("WHERE station = ? ")));
+    const bool prepared = q.prepare(
+            QStringLiteral("SELECT station, line, device, entry, is_number, unit FROM history_series %1"
+                           "ORDER BY station, line, device, entry")
+                    .arg(station.isEmpty() ? QString() : QStringLiteral("WHERE station = ? ")));
     if (!station.isEmpty())
         q.addBindValue(station);
-    if (!q.exec()) {
+    // A failed prepare says why; exec after it would only say "No query".
+    if (!prepared || !q.exec()) {
         if (error)
             *error = m_db.failure(tr("read"), q.lastError());
         return std::nullopt;
@@ -74,6 +86,11 @@ std::optional<QList<HistorySeriesInfo>> HistoryReader::series(const QString &sta
         info.unit = q.value(5).toString();
         out.append(info);
     }
+    if (failedReading(q)) {
+        if (error)
+            *error = m_db.failure(tr("read"), q.lastError());
+        return std::nullopt;
+    }
     return out;
 }
 
@@ -83,18 +100,25 @@ std::optional<qint64> HistoryReader::seriesId(const HistoryKey &key, const QStri
     if (const auto known = m_ids.constFind(name); known != m_ids.cend())
         return *known;
     QSqlQuery q = m_db.query();
-    q.prepare(QStringLiteral("SELECT id FROM history_series WHERE station = ? AND line = ? AND device = ? AND entry = ?"));
+    const bool prepared = q.prepare(
+            QStringLiteral("SELECT id FROM history_series WHERE station = ? AND line = ? AND device = ? AND entry = ?"));
     q.addBindValue(key.station);
     q.addBindValue(key.line);
     q.addBindValue(key.device);
     q.addBindValue(entry);
-    if (!q.exec()) {
+    if (!prepared || !q.exec()) {
         if (error)
             *error = m_db.failure(tr("read"), q.lastError());
         return std::nullopt;
     }
-    if (!q.next())
+    if (!q.next()) {
+        if (failedReading(q)) {
+            if (error)
+                *error = m_db.failure(tr("read"), q.lastError());
+            return std::nullopt;
+        }
         return qint64(-1);   // never recorded (not remembered: it may be soon)
+    }
     const qint64 id = q.value(0).toLongLong();
     m_ids.insert(name, id);
     return id;
@@ -103,11 +127,11 @@ std::optional<qint64> HistoryReader::seriesId(const HistoryKey &key, const QStri
 std::optional<HistoryReader::StationFacts> HistoryReader::stationFacts(const QString &station, QString *error)
 {
     QSqlQuery q = m_db.query();
-    q.prepare(QStringLiteral("SELECT name, value FROM history_meta WHERE name IN (?, ?, ?)"));
+    const bool prepared = q.prepare(QStringLiteral("SELECT name, value FROM history_meta WHERE name IN (?, ?, ?)"));
     q.addBindValue(QStringLiteral("raw_from:") + station);
     q.addBindValue(QStringLiteral("rolled:") + station);
     q.addBindValue(QStringLiteral("heartbeat:") + station);
-    if (!q.exec()) {
+    if (!prepared || !q.exec()) {
         if (error)
             *error = m_db.failure(tr("read"), q.lastError());
         return std::nullopt;
@@ -124,6 +148,11 @@ std::optional<HistoryReader::StationFacts> HistoryReader::stationFacts(const QSt
         else if (value > 0)
             settings.heartbeatMs = value;
     }
+    if (failedReading(q)) {
+        if (error)
+            *error = m_db.failure(tr("read"), q.lastError());
+        return std::nullopt;
+    }
     facts.maxHoldMs = settings.maxHoldMs();
     return facts;
 }
@@ -134,35 +163,46 @@ bool HistoryReader::readRange(bool minute, qint64 id, qint64 fromMs, qint64 toMs
     if (toMs <= fromMs)
         return true;
     QSqlQuery q = m_db.query();
-    q.prepare(QStringLiteral("SELECT %1 FROM %2 WHERE series = ? AND t >= ? AND t < ? ORDER BY t")
-                      .arg(columns(minute), minute ? QStringLiteral("history_minute") : QStringLiteral("history_raw")));
+    const bool prepared = q.prepare(
+            QStringLiteral("SELECT %1 FROM %2 WHERE series = ? AND t >= ? AND t < ? ORDER BY t")
+                    .arg(columns(minute), minute ? QStringLiteral("history_minute") : QStringLiteral("history_raw")));
     q.addBindValue(id);
     q.addBindValue(fromMs);
     q.addBindValue(toMs);
-    if (!q.exec()) {
+    if (!prepared || !q.exec()) {
         if (error)
             *error = m_db.failure(tr("read"), q.lastError());
         return false;
     }
     while (q.next())
         sink(pointOf(q, minute));
+    if (failedReading(q)) {
+        if (error)
+            *error = m_db.failure(tr("read"), q.lastError());
+        return false;
+    }
     return true;
 }
 
 std::optional<HistoryPoint> HistoryReader::lastBefore(bool minute, qint64 id, qint64 timeMs, QString *error)
 {
     QSqlQuery q = m_db.query();
-    q.prepare(QStringLiteral("SELECT %1 FROM %2 WHERE series = ? AND t < ? ORDER BY t DESC LIMIT 1")
-                      .arg(columns(minute), minute ? QStringLiteral("history_minute") : QStringLiteral("history_raw")));
+    const bool prepared = q.prepare(
+            QStringLiteral("SELECT %1 FROM %2 WHERE series = ? AND t < ? ORDER BY t DESC LIMIT 1")
+                    .arg(columns(minute), minute ? QStringLiteral("history_minute") : QStringLiteral("history_raw")));
     q.addBindValue(id);
     q.addBindValue(timeMs);
-    if (!q.exec()) {
+    if (!prepared || !q.exec()) {
         if (error)
             *error = m_db.failure(tr("read"), q.lastError());
         return std::nullopt;
     }
-    if (!q.next())
-    {
+    if (!q.next()) {
+        if (failedReading(q)) {
+            if (error)
+                *error = m_db.failure(tr("read"), q.lastError());
+            return std::nullopt;
+        }
         HistoryPoint none;
         none.timeMs = -1;
         return none;

@@ -29,11 +29,14 @@ class HistoryReader
     Q_DECLARE_TR_FUNCTIONS(jumo::HistoryReader)
 
 public:
-    explicit HistoryReader(const HistoryLocation &location);
+    explicit HistoryReader(const HistoryLocation &location,
+                           HistoryDatabase::ReadAccess access = HistoryDatabase::ReadAccess::BesideWriter);
 
     bool open(QString *error);
     bool isOpen() const { return m_db.isOpen(); }
     const HistoryLocation &location() const { return m_db.location(); }
+    // Why the last open or read failed.
+    HistoryDatabase::Fault fault() const { return m_db.fault(); }
 
     // The series of one station (empty: of every station), by station, line, device, entry.
     std::optional<QList<HistorySeriesInfo>> series(const QString &station, QString *error);

@@ -3,16 +3,18 @@
 #include <QHash>
 
 #include <array>
+#include <cmath>
 
 namespace jumo {
 
 namespace {
 
-constexpr std::array<const char *, 15> stateNames{
+constexpr std::array<const char *, 16> stateNames{
     "ok",      "underrange", "overrange", "invalid", "stale",       "timeout",      "exception",    "offline",
     "line_lost", "disconnected", "unavailable", "unconfirmed", "wrong_device", "not_read", "not_recorded",
+    "unknown_state",
 };
-static_assert(stateNames.size() == size_t(SampleState::NotRecorded) + 1);
+static_assert(stateNames.size() == size_t(SampleState::UnknownState) + 1);
 
 } // namespace
 
@@ -34,6 +36,33 @@ std::optional<SampleState> sampleStateFromNumber(int number)
 {
     if (number < 0 || number > int(SampleState::NotRecorded))
         return std::nullopt;
+    return SampleState(number);
+}
+
+SampleState sampleStateFromStored(const QVariant &stored)
+{
+    // Integers only: QVariant reads a text as 0 (ok) and rounds 2.5 to 3.
+    bool whole = false;
+    switch (stored.typeId()) {
+    case QMetaType::Int:
+    case QMetaType::UInt:
+    case QMetaType::LongLong:
+    case QMetaType::ULongLong:
+    case QMetaType::Short:
+    case QMetaType::UShort:
+        whole = true;
+        break;
+    case QMetaType::Double:
+        whole = std::trunc(stored.toDouble()) == stored.toDouble();
+        break;
+    default:
+        break;
+    }
+    if (!whole)
+        return SampleState::UnknownState;
+    const qint64 number = stored.toLongLong();
+    if (number < 0 || number > int(SampleState::NotRecorded))
+        return SampleState::UnknownState;
     return SampleState(number);
 }
 

@@ -4,6 +4,7 @@
 
 #include <QList>
 #include <QString>
+#include <QVariant>
 #include <QtNumeric>
 
 #include <optional>
@@ -30,12 +31,17 @@ enum class SampleState : quint8 {
     WrongDevice,
     NotRead,
     NotRecorded,
+    // Never stored: a state read from a history that this version does not know (a
+    // number of a newer version, a hand-made file's text). Unknown, a gap. Stays last.
+    UnknownState,
 };
 
-// "ok", "underrange", ..., "line_lost", "not_recorded".
+// "ok", "underrange", ..., "line_lost", "not_recorded", "unknown_state".
 QString sampleStateName(SampleState state);
 std::optional<SampleState> sampleStateFromName(const QString &name);
 std::optional<SampleState> sampleStateFromNumber(int number);
+// A state column's value: a stored number, else UnknownState (never a 0 read as ok).
+SampleState sampleStateFromStored(const QVariant &stored);
 // "current", "stale" or "unknown": the validity of the bus (bus/entrystate.h).
 QString sampleValidityName(SampleState state);
 // A value to draw: ok or stale.
