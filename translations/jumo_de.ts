@@ -1736,7 +1736,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
 <context>
     <name>jumo::HistoryCommands</name>
     <message>
-        <location filename="../app/cli/historycommands.cpp" line="+77"/>
+        <location filename="../app/cli/historycommands.cpp" line="+119"/>
         <source>Prints the recorded values of a device&apos;s entries from FROM to TO with their state and validity: every sample kept, and one-minute rows (minimum, mean, maximum) where the samples are thinned out. Reads the station&apos;s history (--station FILE: its file in the log folder) or the database given by --db; no line is opened.</source>
         <translation>Gibt die aufgezeichneten Werte der Einträge eines Geräts von FROM bis TO mit Zustand und Gültigkeit aus: jeden aufbewahrten Messwert und Minutenzeilen (Minimum, Mittelwert, Maximum), wo die Messwerte ausgedünnt sind. Liest die Historie der Station (--station FILE: ihre Datei im Protokollordner) oder die mit --db angegebene Datenbank; es wird keine Leitung geöffnet.</translation>
     </message>
@@ -1761,12 +1761,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>URL</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Start: an ISO 8601 time (local unless it names its offset), &apos;now&apos;, or a time before now such as -90s, -15m, -2h, -7d. Default: -1h.</source>
-        <translation>Beginn: eine Zeit nach ISO 8601 (Ortszeit, wenn sie keinen Versatz nennt), &apos;now&apos; oder eine Zeit vor jetzt wie -90s, -15m, -2h, -7d. Standard: -1h.</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+5"/>
         <location line="+1"/>
         <source>TIME</source>
         <translation>TIME</translation>
@@ -1797,15 +1792,56 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>Auszugebende Einträge.</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <location line="+46"/>
-        <location line="+5"/>
-        <location line="+92"/>
+        <location line="-26"/>
+        <location line="+30"/>
+        <location line="+21"/>
+        <location line="+2"/>
+        <location line="+34"/>
         <source>jumoctl history: %1</source>
         <translation>jumoctl history: %1</translation>
     </message>
     <message>
-        <location line="-137"/>
+        <location line="-116"/>
+        <source>&apos;%1&apos; is no time</source>
+        <translation>&apos;%1&apos; ist keine Zeit</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 does not exist in local time (%2): the clocks skip it; give it with its offset, such as %3, or in UTC, such as %4</source>
+        <translation>%1 gibt es in Ortszeit (%2) nicht: die Uhren überspringen sie; mit Zeitzonenversatz angeben, etwa %3, oder in UTC, etwa %4</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 is twice in local time (%2), the clocks go back: taken as the first, %3; the second is %4</source>
+        <translation>%1 gibt es in Ortszeit (%2) zweimal, die Uhren werden zurückgestellt: genommen wird die erste, %3; die zweite ist %4</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>terminated: %1</source>
+        <translation>beendet: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>hangup: %1</source>
+        <translation>Verbindung beendet (SIGHUP): %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>output closed: %1</source>
+        <translation>Ausgabe geschlossen: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: %1</source>
+        <translation>abgebrochen: %1</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Start: an ISO 8601 time (local unless it names its offset), &apos;now&apos;, or a time before now such as -90s, -15m, -2h, -7d. Default: -1h. A local time the clocks skip is refused; of one they show twice, the first is taken.</source>
+        <translation>Beginn: eine Zeit nach ISO 8601 (Ortszeit, wenn sie keinen Zeitzonenversatz nennt), &apos;now&apos; oder eine Zeit vor jetzt wie -90s, -15m, -2h, -7d. Vorgabe: -1h. Eine Ortszeit, die die Uhren überspringen, wird abgelehnt; von einer, die sie zweimal zeigen, wird die erste genommen.</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>give at most one of --csv and --json</source>
         <translation>höchstens eines von --csv und --json angeben</translation>
     </message>
@@ -1814,18 +1850,24 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <source>give exactly one of --station FILE and --db URL</source>
         <translation>genau eines von --station FILE und --db URL angeben</translation>
     </message>
-    <message>
-        <location line="+6"/>
-        <source>--from: &apos;%1&apos; is no time</source>
-        <translation>--from: &apos;%1&apos; ist keine Zeit</translation>
+    <message numerus="yes">
+        <location line="+170"/>
+        <source>%n record(s) printed</source>
+        <translation>
+            <numerusform>%n Datensatz ausgegeben</numerusform>
+            <numerusform>%n Datensätze ausgegeben</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>jumoctl history: %1: %n record(s) with a state this version does not know, shown as unknown_state (validity unknown)</source>
+        <translation>
+            <numerusform>jumoctl history: %1: %n Datensatz mit einem Zustand, den diese Version nicht kennt, gezeigt als unknown_state (Gültigkeit unbekannt)</numerusform>
+            <numerusform>jumoctl history: %1: %n Datensätze mit einem Zustand, den diese Version nicht kennt, gezeigt als unknown_state (Gültigkeit unbekannt)</numerusform>
+        </translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>--to: &apos;%1&apos; is no time</source>
-        <translation>--to: &apos;%1&apos; ist keine Zeit</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="-158"/>
         <source>--to must be after --from</source>
         <translation>--to muss nach --from liegen</translation>
     </message>
@@ -1835,7 +1877,12 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>jumoctl history: kein Protokollordner, in dem die Historie liegen könnte: %1</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+30"/>
+        <source>nothing was read (opening %1)</source>
+        <translation>nichts gelesen (beim Öffnen von %1)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>jumoctl history: nothing of %1 is recorded in %2</source>
         <translation>jumoctl history: von %1 ist in %2 nichts aufgezeichnet</translation>
     </message>
@@ -1855,7 +1902,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>%1 ist für %2 nicht aufgezeichnet (aufgezeichnet: %3)</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+57"/>
         <source>(minute: %1 to %2, mean %3)</source>
         <translation>(Minute: %1 bis %2, Mittelwert %3)</translation>
     </message>
@@ -1863,23 +1910,34 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
 <context>
     <name>jumo::HistoryDatabase</name>
     <message>
-        <location filename="../lib/history/historydatabase.cpp" line="+77"/>
+        <location filename="../lib/history/historydatabase.cpp" line="+102"/>
         <source>cannot open the history %1: Qt&apos;s %2 driver is not installed (%3)</source>
         <translation>die Historie %1 kann nicht geöffnet werden: Qts Treiber %2 ist nicht installiert (%3)</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>no history at %1</source>
         <translation>keine Historie unter %1</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+45"/>
         <location line="+11"/>
         <source>open</source>
         <translation>geöffnet</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+38"/>
+        <source>the history %1 changed while it was read (a recorder started on it): read it again</source>
+        <translation>die Historie %1 hat sich beim Lesen geändert (ein Aufzeichner hat auf ihr begonnen): bitte erneut lesen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+181"/>
+        <source>%1 is damaged: %2</source>
+        <translation>%1 ist beschädigt: %2</translation>
+    </message>
+    <message>
+        <location line="-175"/>
         <source>unknown error</source>
         <translation>unbekannter Fehler</translation>
     </message>
@@ -1892,23 +1950,75 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
     <message>
         <location line="+16"/>
         <location line="+21"/>
-        <location line="+68"/>
+        <location line="+187"/>
         <source>write</source>
         <translation>geschrieben</translation>
     </message>
     <message>
-        <location line="-49"/>
-        <location line="+18"/>
+        <location line="-168"/>
+        <location line="+136"/>
         <source>cannot use the history %1: it was written by a newer version (schema %2, this one knows %3)</source>
         <translation>die Historie %1 ist nicht verwendbar: sie wurde von einer neueren Version geschrieben (Schema %2, diese kennt %3)</translation>
     </message>
     <message>
-        <location line="-5"/>
-        <source>%1 holds no history</source>
-        <translation>%1 enthält keine Historie</translation>
+        <location line="-118"/>
+        <source>%1 is not a JUMO history file: it is empty</source>
+        <translation>%1 ist keine JUMO-Historiendatei: sie ist leer</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+6"/>
+        <source>%1 is not a JUMO history file: it is not an SQLite database</source>
+        <translation>%1 ist keine JUMO-Historiendatei: sie ist keine SQLite-Datenbank</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 is damaged: its header names no page size (%2)</source>
+        <translation>%1 ist beschädigt: ihr Kopf nennt keine Seitengröße (%2)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 is damaged: it ends inside a page (%2 bytes, pages of %3): it was cut off</source>
+        <translation>%1 ist beschädigt: sie endet mitten in einer Seite (%2 Bytes, Seiten zu %3): sie wurde abgeschnitten</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 is damaged: it ends after %2 bytes, where its header says %3: it was cut off</source>
+        <translation>%1 ist beschädigt: sie endet nach %2 Bytes, ihr Kopf sagt %3: sie wurde abgeschnitten</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>no table %1</source>
+        <translation>keine Tabelle %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the table %1 lacks the column(s) %2</source>
+        <translation>der Tabelle %1 fehlen die Spalte(n) %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 holds no JUMO history: none of the history&apos;s tables is there</source>
+        <translation>%1 enthält keine JUMO-Historie: keine der Tabellen der Historie ist da</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 is not a JUMO history file: an SQLite database without the history&apos;s tables</source>
+        <translation>%1 ist keine JUMO-Historiendatei: eine SQLite-Datenbank ohne die Tabellen der Historie</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 is damaged: it names no schema version</source>
+        <translation>%1 ist beschädigt: sie nennt keine Schemaversion</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 is damaged: &apos;%2&apos; is no schema version</source>
+        <translation>%1 ist beschädigt: &apos;%2&apos; ist keine Schemaversion</translation>
+    </message>
+    <message>
+        <location line="-48"/>
+        <location line="+39"/>
+        <location line="+30"/>
         <source>read</source>
         <translation>gelesen</translation>
     </message>
@@ -1969,11 +2079,16 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
 <context>
     <name>jumo::HistoryReader</name>
     <message>
-        <location filename="../lib/history/historyreader.cpp" line="+65"/>
-        <location line="+28"/>
+        <location filename="../lib/history/historyreader.cpp" line="+77"/>
+        <location line="+14"/>
+        <location line="+20"/>
+        <location line="+6"/>
         <location line="+19"/>
-        <location line="+32"/>
         <location line="+17"/>
+        <location line="+21"/>
+        <location line="+7"/>
+        <location line="+16"/>
+        <location line="+6"/>
         <source>read</source>
         <translation>gelesen</translation>
     </message>
