@@ -343,6 +343,7 @@ void Bus::updateAllowance(DeviceId id)
     // than that was missed by a read that should have come.
     for (PollClass c : {PollClass::Alarm, PollClass::Live, PollClass::Setting})
         m_store.setAllowance(id, c, m_scheduler.allowanceMs(id, c));
+    m_store.setShownLive(id, m_scheduler.shownLive(id), m_scheduler.shownAllowanceMs(id));
 }
 
 double Bus::interFrameDelayMs() const

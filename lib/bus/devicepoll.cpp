@@ -141,6 +141,24 @@ qint64 DevicePoll::allowanceMs(PollClass pollClass) const
     return std::max<qint64>(2 * expected, 2000) + 1000;
 }
 
+QSet<QString> DevicePoll::shownLive() const
+{
+    QSet<QString> ids;
+    for (const ReadBlock &b : m_info.plan.blocks) {
+        if (b.shown) {
+            for (const RegisterEntry *e : b.entries)
+                ids.insert(e->id);
+        }
+    }
+    return ids;
+}
+
+qint64 DevicePoll::shownAllowanceMs() const
+{
+    const qint64 expected = std::max<qint64>(m_info.intervalMs > 0 ? m_info.intervalMs : shownTargetMs, m_info.shownAgeMs);
+    return std::max<qint64>(2 * expected, 2000) + 1000;
+}
+
 qint64 DevicePoll::doneMs(const ReadBlock &block) const
 {
     qint64 done = std::numeric_limits<qint64>::max();
@@ -357,8 +375,11 @@ void DevicePoll::markRead(const ReadBlock &block, qint64 now, bool good)
     const int c = classIndex(block.pollClass);
     for (const RegisterEntry *e : block.entries) {
         const qint64 previous = m_doneMs.value(e->id, neverMs);
-        if (good && previous != neverMs)
+        if (good && previous != neverMs) {
             m_cycleClassAgeMs[c] = std::max(m_cycleClassAgeMs[c], now - previous);
+            if (block.shown)
+                m_cycleShownAgeMs = std::max(m_cycleShownAgeMs, now - previous);
+        }
         m_doneMs.insert(e->id, now);
     }
     ++m_readsThisCycle;
@@ -420,6 +441,9 @@ void DevicePoll::finishCycle(qint64 now, PollOutcome &outcome)
             m_info.classAgeMs[c] = m_cycleClassAgeMs[c];
     }
     m_cycleClassAgeMs = {};
+    if (m_cycleShownAgeMs > 0)
+        m_info.shownAgeMs = m_cycleShownAgeMs;
+    m_cycleShownAgeMs = 0;
     m_cycleStartMs = now;
     m_readsThisCycle = 0;
     m_requestedMs = -1;

@@ -35,6 +35,7 @@ struct DeviceInfo
     // Per class: the longest time between two reads of one of its blocks in the last
     // cycle (0: none read twice yet). What the values' allowance is made of.
     std::array<qint64, pollClassCount> classAgeMs{};
+    qint64 shownAgeMs = 0;   // the same for the live values a view shows
 };
 
 // What became of a poll turn, for the bus to carry out.
@@ -111,6 +112,10 @@ public:
     // How long a value of the class stays current: about twice the age its blocks are
     // read at (their target, or what the line gave them lately), plus a second.
     qint64 allowanceMs(PollClass pollClass) const;
+    // The live values a view shows (read at shownTargetMs) and how long they stay current:
+    // as long as their own reads allow, not as long as the other live values'.
+    QSet<QString> shownLive() const;
+    qint64 shownAllowanceMs() const;
 
     // One cycle soon, every block, polling on or off; false when there is nothing to read.
     bool requestCycle(qint64 now);
@@ -161,6 +166,7 @@ private:
     qint64 m_cycleStartMs = 0;
     int m_readsThisCycle = 0;
     std::array<qint64, pollClassCount> m_cycleClassAgeMs{};
+    qint64 m_cycleShownAgeMs = 0;
     qint64 m_nextProbeMs = 0;             // offline: the next probe
     int m_consecutiveFailures = 0;
 };

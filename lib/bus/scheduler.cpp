@@ -52,6 +52,18 @@ QHash<QString, PollClass> Scheduler::entryClasses(DeviceId id) const
     return it == m_devices.cend() ? QHash<QString, PollClass>() : it->poll.classes();
 }
 
+QSet<QString> Scheduler::shownLive(DeviceId id) const
+{
+    const auto it = m_devices.constFind(id);
+    return it == m_devices.cend() ? QSet<QString>() : it->poll.shownLive();
+}
+
+qint64 Scheduler::shownAllowanceMs(DeviceId id) const
+{
+    const auto it = m_devices.constFind(id);
+    return it == m_devices.cend() ? 0 : it->poll.shownAllowanceMs();
+}
+
 qint64 Scheduler::allowanceMs(DeviceId id, PollClass pollClass) const
 {
     const auto it = m_devices.constFind(id);

@@ -73,6 +73,8 @@ public:
     QHash<QString, PollClass> entryClasses(DeviceId id) const;
     // How long a value of the class stays current (see DevicePoll::allowanceMs).
     qint64 allowanceMs(DeviceId id, PollClass pollClass) const;
+    QSet<QString> shownLive(DeviceId id) const;
+    qint64 shownAllowanceMs(DeviceId id) const;
     // The device's settings are read at once (after a write to it).
     void refreshSettings(DeviceId id, qint64 now);
     void forgetUnavailable(DeviceId id);

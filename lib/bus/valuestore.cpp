@@ -54,6 +54,14 @@ void ValueStore::setClasses(DeviceId id, const QHash<QString, PollClass> &classe
         d->classes = classes;
 }
 
+void ValueStore::setShownLive(DeviceId id, const QSet<QString> &entryIds, qint64 ms)
+{
+    if (const auto d = m_devices.find(id); d != m_devices.end()) {
+        d->shownLive = entryIds;
+        d->shownAllowanceMs = ms;
+    }
+}
+
 qint64 ValueStore::allowance(DeviceId id, PollClass pollClass) const
 {
     const auto d = m_devices.constFind(id);
@@ -85,7 +93,7 @@ QStringList ValueStore::store(DeviceId id, const QList<const RegisterEntry *> &e
         s.exceptionCode = 0;
         s.updatedMs = now;
         s.goodMs = now;
-        d->readAllowanceMs.insert(e->id, d->allowanceMs[size_t(d->classes.value(e->id, PollClass::Live))]);
+        d->readAllowanceMs.insert(e->id, d->classAllowanceOf(e->id));
         updated << e->id;
     }
     return updated;

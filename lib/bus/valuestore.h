@@ -12,6 +12,7 @@
 #include "protocol/registermap.h"
 
 #include <QHash>
+#include <QSet>
 #include <QStringList>
 
 #include <array>
@@ -39,6 +40,8 @@ public:
     void setAllowance(DeviceId id, qint64 ms);
     void setAllowance(DeviceId id, PollClass pollClass, qint64 ms);
     void setClasses(DeviceId id, const QHash<QString, PollClass> &classes);
+    // The live values a view shows and their allowance (shorter than the live class's).
+    void setShownLive(DeviceId id, const QSet<QString> &entryIds, qint64 ms);
     qint64 allowance(DeviceId id, PollClass pollClass = PollClass::Live) const;
     qint64 allowance(DeviceId id, const QString &entryId) const;
 
@@ -64,14 +67,24 @@ private:
         DeviceStatistics stats;
         std::array<qint64, 3> allowanceMs{10000, 10000, 10000};
         QHash<QString, PollClass> classes;
+        QSet<QString> shownLive;
+        qint64 shownAllowanceMs = 0;
         // The allowance of the class a value was read in: a setting a view has just
         // moved up is as current as it was a moment ago, until it is read again.
         QHash<QString, qint64> readAllowanceMs;
 
+        qint64 classAllowanceOf(const QString &entryId) const
+        {
+            const qint64 ofClass = allowanceMs[size_t(classes.value(entryId, PollClass::Live))];
+            // On a full line the live class's allowance is that of values read once a
+            // minute; the ones a view shows are read every few seconds.
+            if (shownAllowanceMs > 0 && shownLive.contains(entryId))
+                return std::min(ofClass, shownAllowanceMs);
+            return ofClass;
+        }
         qint64 allowanceOf(const QString &entryId) const
         {
-            return std::max(allowanceMs[size_t(classes.value(entryId, PollClass::Live))],
-                            readAllowanceMs.value(entryId, 0));
+            return std::max(classAllowanceOf(entryId), readAllowanceMs.value(entryId, 0));
         }
     };
 

@@ -91,6 +91,7 @@ private slots:
     void jobsAndPollsTakeTurns();
     void lineLossMakesEverythingUnknownAtOnce();
     void valuesTurnStaleWhenNotRead();
+    void shownValuesTurnStaleSoonOnAFullLine();
     void offlineDeviceIsUnknownAndComesBack();
     void bitChangeKeepsTheOtherBits_data();
     void bitChangeKeepsTheOtherBits();
@@ -553,6 +554,34 @@ void tst_Scheduler::valuesTurnStaleWhenNotRead()
     QCOMPARE(line.bus->entryState(id, "controller_setpoint")->validity, Validity::Current);
     line.run(2 * DevicePoll::settingTargetMs);
     QCOMPARE(line.bus->entryState(id, "controller_setpoint")->validity, Validity::Stale);
+}
+
+void tst_Scheduler::shownValuesTurnStaleSoonOnAFullLine()
+{
+    // On a full line the live values nobody shows are read about once a minute and stay
+    // current for two; a faceplate's live values are read every few seconds, and when
+    // their reads stop they turn stale within seconds, not with the others.
+    const QList<QPair<QString, int>> devices = fullLine({"ipc300", "tya200", "dtron300"});
+    Line line(devices, 38400);
+    QVERIFY(line.bus->open());
+    QObject overview;
+    DeviceId ipc = 0;
+    for (const auto &[family, address] : devices) {
+        const DeviceId id = line.bus->addDevice(families().family(family), quint8(address));
+        line.bus->shownEntries()->setShown(&overview, id, line.bus->deviceMap(id)->faceplateEntries(false));
+        if (family == "ipc300" && !ipc)
+            ipc = id;
+    }
+    const QStringList faceplate = line.bus->deviceMap(ipc)->faceplateEntries(false);
+    QVERIFY(faceplate.contains("load_voltage") && !faceplate.contains("controller_output_level"));
+    QCOMPARE(line.bus->pollClass(ipc, "controller_output_level"), PollClass::Live);
+    line.run(130000);
+    QCOMPARE(line.bus->entryState(ipc, "load_voltage")->validity, Validity::Current);
+    QCOMPARE(line.bus->entryState(ipc, "controller_output_level")->validity, Validity::Current);
+    line.bus->setPolling(false);
+    line.run(25000);
+    QCOMPARE(line.bus->entryState(ipc, "load_voltage")->validity, Validity::Stale);
+    QCOMPARE(line.bus->entryState(ipc, "controller_output_level")->validity, Validity::Current);
 }
 
 void tst_Scheduler::offlineDeviceIsUnknownAndComesBack()
