@@ -374,7 +374,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>nicht gehalten: %1 ist nicht als %2 bestätigt</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+299"/>
+        <location filename="../lib/bus/bus.cpp" line="+300"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
@@ -6166,7 +6166,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RemoteStation</name>
     <message>
-        <location filename="../lib/mqtt/remotestation.cpp" line="+48"/>
+        <location filename="../lib/mqtt/remotestation.cpp" line="+47"/>
         <source>a message of %1 bytes, over the limit of %2</source>
         <translation>eine Nachricht von %1 Byte, über der Grenze von %2</translation>
     </message>
@@ -6186,7 +6186,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>keine Gerätereihenfolge</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+14"/>
         <source>not a line state</source>
         <translation>kein Leitungszustand</translation>
     </message>
@@ -6197,27 +6197,22 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+36"/>
-        <location line="+93"/>
+        <location line="+54"/>
         <source>its info does not name this device</source>
         <translation>ihre Info nennt dieses Gerät nicht</translation>
     </message>
     <message>
-        <location line="-86"/>
-        <source>not in the station&apos;s device list, and too much waiting for it</source>
-        <translation>nicht in der Geräteliste der Station, und zu viel wartet schon darauf</translation>
-    </message>
-    <message>
-        <location line="+43"/>
+        <location line="-48"/>
         <source>more than %1 devices in one station</source>
         <translation>mehr als %1 Geräte in einer Station</translation>
     </message>
     <message>
-        <location line="-33"/>
+        <location line="+13"/>
         <source>no info for this device, and too much waiting for one</source>
         <translation>keine Info für dieses Gerät, und zu viel wartet auf eine</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+47"/>
         <source>not a device condition</source>
         <translation>kein Gerätezustand</translation>
     </message>

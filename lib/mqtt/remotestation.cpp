@@ -8,7 +8,6 @@
 #include <QLoggingCategory>
 #include <QTimer>
 
-#include <algorithm>
 #include <atomic>
 #include <chrono>
 
@@ -363,12 +362,6 @@ void RemoteStation::onMessage(const QString &topicText, const QByteArray &payloa
             refuse(topicText, tr("not a device order"));
             return;
         }
-        for (const QString &listed : std::as_const(s->state.order)) {
-            const QString line = listed.section(QLatin1Char('/'), 0, 0);
-            const QString device = listed.section(QLatin1Char('/'), 1);
-            if (!m_deviceByKey.contains(keyOf(topic->station, line, device)))
-                admitWaiting(*s, topic->station, line, device);
-        }
         emit orderChanged(topic->station);
         return;
     }
@@ -423,62 +416,23 @@ void RemoteStation::onDeviceMessage(Station &s, const TopicScheme::Topic &topic,
             refuse(what, tr("its info does not name this device"));
             return;
         }
-        // A device is the station's when its order lists it too: on a broker that lets
-        // anyone publish, an info alone is anyone's. Kept until the order lists it.
-        if (!s.state.order.contains(waitingKey)) {
-            if (!s.waiting.keep(waitingKey, Kind::DeviceInfo, {}, payload))
-                refuse(what, tr("not in the station's device list, and too much waiting for it"));
+        const auto onStation = std::count_if(m_devices.cbegin(), m_devices.cend(),
+                                             [&](const RemoteDevice &d) { return d.station == topic.station; });
+        if (onStation >= maxDevicesPerStation) {
+            refuse(what, tr("more than %1 devices in one station").arg(maxDevicesPerStation));
             return;
         }
-        admitDevice(s, topic.station, topic.line, topic.device, *info);
+        const DeviceId id = addDevice(topic.station, topic.line, topic.device, *info, m_registry.family(spec->family));
+        for (const WaitingMessages::Message &w : s.waiting.take(waitingKey)) {
+            if (m_devices.contains(id))
+                applyDeviceMessage(id, w.kind, w.entry, w.payload);
+        }
         return;
     }
     // A value or condition of a device whose info has not come (yet): kept while it may
-    // still come in the broker's retained burst, within bounds, and while the device waits
-    // for the station's order; other live ones make nothing.
-    if ((retained || s.waiting.holds(waitingKey)) && !s.waiting.keep(waitingKey, topic.kind, topic.entry, payload))
+    // still come in the broker's retained burst, within bounds; live ones make nothing.
+    if (retained && !s.waiting.keep(waitingKey, topic.kind, topic.entry, payload))
         refuse(what, tr("no info for this device, and too much waiting for one"));
-}
-
-void RemoteStation::admitWaiting(Station &s, const QString &station, const QString &line, const QString &device)
-{
-    const QString waitingKey = line + QLatin1Char('/') + device;
-    const QList<WaitingMessages::Message> messages = s.waiting.take(waitingKey);
-    const auto info = std::find_if(messages.cbegin(), messages.cend(), [](const WaitingMessages::Message &m) {
-        return m.kind == TopicScheme::Kind::DeviceInfo;
-    });
-    if (info == messages.cend()) {
-        for (const WaitingMessages::Message &m : messages)
-            s.waiting.keep(waitingKey, m.kind, m.entry, m.payload);
-        return;
-    }
-    // Checked before it was kept.
-    const std::optional<DeviceInfoMessage> parsed = TopicScheme::parseDeviceInfo(info->payload);
-    if (!parsed)
-        return;
-    for (const WaitingMessages::Message &m : messages) {
-        if (m.kind != TopicScheme::Kind::DeviceInfo)
-            s.waiting.keep(waitingKey, m.kind, m.entry, m.payload);
-    }
-    admitDevice(s, station, line, device, *parsed);
-}
-
-void RemoteStation::admitDevice(Station &s, const QString &station, const QString &line, const QString &device,
-                                const DeviceInfoMessage &info)
-{
-    const QString what = keyOf(station, line, device);
-    const auto onStation = std::count_if(m_devices.cbegin(), m_devices.cend(),
-                                         [&](const RemoteDevice &d) { return d.station == station; });
-    if (onStation >= maxDevicesPerStation) {
-        refuse(what, tr("more than %1 devices in one station").arg(maxDevicesPerStation));
-        return;
-    }
-    const QString waitingKey = line + QLatin1Char('/') + device;
-    const DeviceId id = addDevice(station, line, device, info, m_registry.family(info.family));
-    for (const WaitingMessages::Message &w : s.waiting.take(waitingKey)) {
-        if (m_devices.contains(id))
-            applyDeviceMessage(id, w.kind, w.entry, w.payload);
-    }
 }
 
 DeviceId RemoteStation::addDevice(const QString &station, const QString &line, const QString &name,

@@ -188,11 +188,6 @@ private:
     // never heard alive); null if not.
     Station *admit(const QString &name, bool alive);
     void forget(const QString &name);
-    // The device, if the station's order lists it and it has its info among the waiting
-    // messages; the rest of its waiting messages with it.
-    void admitWaiting(Station &station, const QString &stationName, const QString &line, const QString &device);
-    void admitDevice(Station &station, const QString &stationName, const QString &line, const QString &device,
-                     const DeviceInfoMessage &info);
     DeviceId addDevice(const QString &station, const QString &line, const QString &device,
                        const DeviceInfoMessage &info, std::shared_ptr<const RegisterMap> map);
     void removeDevice(DeviceId id);

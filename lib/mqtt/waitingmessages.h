@@ -1,6 +1,6 @@
-// Messages of devices not made yet: a broker sends a station's retained topics in an
-// order of its own, so a device's values may come before the info that makes the device,
-// and its info before the station's order that lists it. Kept per device until the info comes or the message is cleared,
+// Retained messages of devices whose info has not come yet: a broker sends a station's
+// retained topics in an order of its own, so a device's values may come before the info
+// that makes the device. Kept per device until the info comes or the message is cleared,
 // within bounds: a flood of values of devices nobody announced cannot fill the viewer.
 #pragma once
 
@@ -29,7 +29,6 @@ public:
     // The device's messages, in the order they came; none are kept for it afterwards.
     QList<Message> take(const QString &device);
 
-    bool holds(const QString &device) const { return m_byDevice.contains(device); }
     int messages() const { return m_messages; }
     qint64 bytes() const { return m_bytes; }
 
