@@ -233,7 +233,9 @@ PollChoice DevicePoll::choose(qint64 now, bool polling, PollChoice::Tier from) c
         } else if (forced(b)) {
             const qint64 askedMs = std::max(m_forcedMs[classIndex(b.pollClass)], m_requestedMs);
             here.tier = b.pollClass == PollClass::Alarm ? PollChoice::AlarmDue : PollChoice::Due;
-            here.overdueMs = std::max<qint64>(0, now - askedMs);
+            // Asked for at once (after a write, a reconnect, an identity check): ahead of
+            // whatever is merely late in its tier, such as the shown values of a full line.
+            here.overdueMs = settingTargetMs + std::max<qint64>(0, now - askedMs);
         } else if (!polling) {
             continue;
         } else if (age >= target && !filler) {
