@@ -70,6 +70,17 @@ QList<QPair<QString, int>> fullLine(const QStringList &families)
     return devices;
 }
 
+// Adds the devices, every faceplate shown by the view as on the HMI's overview.
+QList<DeviceId> addShowingFaceplates(Line &line, const QList<QPair<QString, int>> &devices, QObject &view)
+{
+    QList<DeviceId> ids;
+    for (const auto &[family, address] : devices) {
+        ids << line.bus->addDevice(families().family(family), quint8(address));
+        line.bus->shownEntries()->setShown(&view, ids.last(), line.bus->deviceMap(ids.last())->faceplateEntries(false));
+    }
+    return ids;
+}
+
 } // namespace
 
 class tst_Scheduler : public QObject
@@ -364,13 +375,7 @@ void tst_Scheduler::settingsAreReadSoonAfterAWriteOnAFullLine()
     Line line(devices, 38400);
     QVERIFY(line.bus->open());
     QObject overview;
-    DeviceId ipc = 0;
-    for (const auto &[family, address] : devices) {
-        const DeviceId id = line.bus->addDevice(families().family(family), quint8(address));
-        line.bus->shownEntries()->setShown(&overview, id, line.bus->deviceMap(id)->faceplateEntries(false));
-        if (family == "ipc300" && !ipc)
-            ipc = id;
-    }
+    const DeviceId ipc = addShowingFaceplates(line, devices, overview).constFirst();   // ipc300@1
     line.run(70000);
     QSignalSpy finished(line.bus.get(), &Bus::writeFinished);
     line.bus->write(ipc, "input_setpoint", "12");
@@ -590,13 +595,7 @@ void tst_Scheduler::shownValuesTurnStaleSoonOnAFullLine()
     Line line(devices, 38400);
     QVERIFY(line.bus->open());
     QObject overview;
-    DeviceId ipc = 0;
-    for (const auto &[family, address] : devices) {
-        const DeviceId id = line.bus->addDevice(families().family(family), quint8(address));
-        line.bus->shownEntries()->setShown(&overview, id, line.bus->deviceMap(id)->faceplateEntries(false));
-        if (family == "ipc300" && !ipc)
-            ipc = id;
-    }
+    const DeviceId ipc = addShowingFaceplates(line, devices, overview).constFirst();   // ipc300@1
     const QStringList faceplate = line.bus->deviceMap(ipc)->faceplateEntries(false);
     QVERIFY(faceplate.contains("load_voltage") && !faceplate.contains("controller_output_level"));
     QCOMPARE(line.bus->pollClass(ipc, "controller_output_level"), PollClass::Live);
