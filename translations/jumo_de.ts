@@ -374,7 +374,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>nicht gehalten: %1 ist nicht als %2 bestätigt</translation>
     </message>
     <message>
-        <location filename="../lib/bus/bus.cpp" line="+300"/>
+        <location filename="../lib/bus/bus.cpp" line="+314"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
@@ -395,7 +395,7 @@ Handbuch %6: &quot;%7&quot;</translation>
         <translation>%1 ist nicht als %2 bestätigt (es wird erneut geprüft, sobald es antwortet); setzen Sie das Halten erneut, sobald es bestätigt ist</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+99"/>
         <source>exception %1, %2</source>
         <translation>Exception %1, %2</translation>
     </message>
@@ -2312,12 +2312,12 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
     <message>
         <location line="+0"/>
         <location line="+2"/>
-        <location line="+771"/>
+        <location line="+814"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-771"/>
+        <location line="-814"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
@@ -2328,12 +2328,12 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
     </message>
     <message>
         <location line="+0"/>
-        <location line="+771"/>
+        <location line="+814"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-768"/>
+        <location line="-811"/>
         <source>Never write to any line (control-room mode; the system configuration can set it for everyone, a station file for one line).</source>
         <translation>Auf keine Leitung schreiben (Leitwarten-Modus; die Systemkonfiguration kann ihn für alle festlegen, eine Stationsdatei für eine Leitung).</translation>
     </message>
@@ -2501,12 +2501,25 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>Letzte Adresse (Standard 247).</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+2"/>
+        <source>Probe every address at the full timeout (the slowest family&apos;s worst case), twice where silent. Slow; the default quick scan probes again at the full timeout wherever it heard anything.</source>
+        <translation>Jede Adresse mit der vollen Zeitüberschreitung abfragen (dem ungünstigsten Fall der langsamsten Familie), zweimal, wo sie still bleibt. Langsam; die voreingestellte schnelle Suche fragt überall dort erneut mit der vollen Zeitüberschreitung ab, wo sie etwas gehört hat.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>--from and --to must be addresses 1..255, from &lt;= to</source>
         <translation>--from und --to müssen Adressen 1..255 sein, from &lt;= to</translation>
     </message>
+    <message numerus="yes">
+        <location line="+16"/>
+        <source>address %1 (%2 of %3), about %n s left</source>
+        <translation>
+            <numerusform>Adresse %1 (%2 von %3), noch etwa %n s</numerusform>
+            <numerusform>Adresse %1 (%2 von %3), noch etwa %n s</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+21"/>
+        <location line="+8"/>
         <source>address %1 answers as %2, which every %2 does whatever its own address: not listed</source>
         <translation>Adresse %1 antwortet als %2, wie es jeder %2 unabhängig von seiner eigenen Adresse tut: nicht aufgeführt</translation>
     </message>
@@ -2515,8 +2528,57 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <source>address %1 answers, but matches no known family</source>
         <translation>Adresse %1 antwortet, passt aber zu keiner bekannten Gerätefamilie</translation>
     </message>
+    <message>
+        <location line="+16"/>
+        <source>quick scan of addresses %1..%2: each probed once at %3 ms, again at the full %4 ms where anything was heard (--thorough probes every address at the full timeout)</source>
+        <translation>schnelle Suche der Adressen %1..%2: jede einmal mit %3 ms abgefragt, erneut mit den vollen %4 ms, wo etwas gehört wurde (--thorough fragt jede Adresse mit der vollen Zeitüberschreitung ab)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>as asked</source>
+        <translation>wie verlangt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a Modbus TCP gateway answers every request itself, at its own timeout</source>
+        <translation>ein Modbus-TCP-Gateway beantwortet jede Anfrage selbst, nach seiner eigenen Zeitüberschreitung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the range is too short to listen for late answers after a quick pass</source>
+        <translation>der Bereich ist zu kurz, um nach einem schnellen Durchgang auf späte Antworten zu hören</translation>
+    </message>
     <message numerus="yes">
-        <location line="+43"/>
+        <location line="+1"/>
+        <source>thorough scan of addresses %1..%2 (%3): a silent address costs two probes at %4 ms, each followed by as long a quiet time; up to %n s</source>
+        <translation>
+            <numerusform>gründliche Suche der Adressen %1..%2 (%3): eine stille Adresse kostet zwei Abfragen mit %4 ms, nach jeder eine ebenso lange Ruhezeit; bis zu %n s</numerusform>
+            <numerusform>gründliche Suche der Adressen %1..%2 (%3): eine stille Adresse kostet zwei Abfragen mit %4 ms, nach jeder eine ebenso lange Ruhezeit; bis zu %n s</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+32"/>
+        <source>%n device(s) found in %1 s</source>
+        <translation>
+            <numerusform>%n Gerät in %1 s gefunden</numerusform>
+            <numerusform>%n Geräte in %1 s gefunden</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n address(es) probed again at the full timeout</source>
+        <translation>
+            <numerusform>%n Adresse erneut mit der vollen Zeitüberschreitung abgefragt</numerusform>
+            <numerusform>%n Adressen erneut mit der vollen Zeitüberschreitung abgefragt</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+12"/>
         <source>%n device(s) found</source>
         <translation>
             <numerusform>%n Gerät gefunden</numerusform>
@@ -2672,7 +2734,7 @@ das nicht antwortet; 4 eine andere Familie an der Adresse.</translation>
         <translation>Name</translation>
     </message>
     <message>
-        <location line="-1205"/>
+        <location line="-1248"/>
         <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
         <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
     </message>
@@ -2697,25 +2759,12 @@ das nicht antwortet; 4 eine andere Familie an der Adresse.</translation>
         <translation>Sucht Geräte an der Leitung und benennt ihre Gerätefamilie; bei mehreren Leitungen (--line, --station) an allen Leitungen gleichzeitig.</translation>
     </message>
     <message>
-        <location line="+25"/>
-        <source>address %1 (%2 of %3)</source>
-        <translation>Adresse %1 (%2 von %3)</translation>
-    </message>
-    <message>
-        <location line="+40"/>
+        <location line="+101"/>
         <source>scanning %1</source>
         <translation>Suche %1</translation>
     </message>
-    <message numerus="yes">
-        <location line="+17"/>
-        <source>%1: %n device(s) found</source>
-        <translation>
-            <numerusform>%1: %n Gerät gefunden</numerusform>
-            <numerusform>%1: %n Geräte gefunden</numerusform>
-        </translation>
-    </message>
     <message>
-        <location line="+63"/>
+        <location line="+87"/>
         <location line="+542"/>
         <location line="+172"/>
         <source>FAMILY@ADDRESS, e.g. ipc300@1; LINE/FAMILY@ADDRESS where there are several lines.</source>
@@ -6558,7 +6607,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::ScanDialog</name>
     <message>
-        <location filename="../ui/scandialog.cpp" line="+21"/>
+        <location filename="../ui/scandialog.cpp" line="+23"/>
         <source>Scan</source>
         <translation>Suchen</translation>
     </message>
@@ -6568,17 +6617,30 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Suche abbrechen</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
+        <source>&amp;Thorough: every address at the full timeout (slow)</source>
+        <translation>&amp;Gründlich: jede Adresse mit der vollen Zeitüberschreitung (langsam)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Scan the line</source>
         <translation>Leitung durchsuchen</translation>
     </message>
     <message>
+        <location line="+7"/>
+        <source>A quick scan gives each address a short timeout and probes again at the full timeout wherever it heard anything, which finds devices that answer late too. A thorough scan probes every address twice at the full timeout: minutes for the whole range.</source>
+        <translation>Eine schnelle Suche gibt jeder Adresse eine kurze Zeitüberschreitung und fragt überall dort erneut mit der vollen ab, wo sie etwas gehört hat; so findet sie auch Geräte, die spät antworten. Eine gründliche Suche fragt jede Adresse zweimal mit der vollen Zeitüberschreitung ab: Minuten für den ganzen Bereich.</translation>
+    </message>
+    <message numerus="yes">
         <location line="+16"/>
-        <source>address %1</source>
-        <translation>Adresse %1</translation>
+        <source>address %1, about %n s left</source>
+        <translation>
+            <numerusform>Adresse %1, noch etwa %n s</numerusform>
+            <numerusform>Adresse %1, noch etwa %n s</numerusform>
+        </translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
         <source>Address %1 answers as %2, as every %2 does whatever its own address: not a device of its own</source>
         <translation>Adresse %1 antwortet als %2, wie jedes %2 unabhängig von seiner eigenen Adresse: kein eigenes Gerät</translation>
     </message>
@@ -6604,14 +6666,27 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message numerus="yes">
         <location line="+3"/>
-        <source>%n device(s) found</source>
+        <source>%n device(s) found in %1 s</source>
         <translation>
-            <numerusform>%n Gerät gefunden</numerusform>
-            <numerusform>%n Geräte gefunden</numerusform>
+            <numerusform>%n Gerät in %1 s gefunden</numerusform>
+            <numerusform>%n Geräte in %1 s gefunden</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+41"/>
+        <source>Each address is probed once at %1 ms, again at the full %2 ms where anything was heard.</source>
+        <translation>Jede Adresse wird einmal mit %1 ms abgefragt, erneut mit den vollen %2 ms, wo etwas gehört wurde.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>Every address is probed at the full timeout of %1 ms: up to %n s.</source>
+        <translation>
+            <numerusform>Jede Adresse wird mit der vollen Zeitüberschreitung von %1 ms abgefragt: bis zu %n s.</numerusform>
+            <numerusform>Jede Adresse wird mit der vollen Zeitüberschreitung von %1 ms abgefragt: bis zu %n s.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="-41"/>
         <source>From address</source>
         <translation>Von Adresse</translation>
     </message>

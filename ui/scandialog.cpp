@@ -1,8 +1,10 @@
 #include "scandialog.h"
 
+#include "bus/bus.h"
 #include "bus/devicescanner.h"
 #include "protocol/familyregistry.h"
 
+#include <QCheckBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -16,9 +18,11 @@
 namespace jumo {
 
 ScanDialog::ScanDialog(Bus *bus, const FamilyRegistry &registry, QWidget *parent)
-    : QDialog(parent), m_scanner(new DeviceScanner(*bus, registry.families(), this)), m_from(new QSpinBox(this)),
+    : QDialog(parent), m_bus(bus), m_scanner(new DeviceScanner(*bus, registry.families(), this)), m_from(new QSpinBox(this)),
       m_to(new QSpinBox(this)), m_progress(new QProgressBar(this)), m_found(new QListWidget(this)),
-      m_startButton(new QPushButton(tr("Scan"), this)), m_cancelButton(new QPushButton(tr("Cancel scan"), this))
+      m_startButton(new QPushButton(tr("Scan"), this)), m_cancelButton(new QPushButton(tr("Cancel scan"), this)),
+      m_thorough(new QCheckBox(tr("&Thorough: every address at the full timeout (slow)"), this)),
+      m_plan(new QLabel(this))
 {
     setWindowTitle(tr("Scan the line"));
     m_from->setObjectName(QStringLiteral("fromBox"));
@@ -26,6 +30,12 @@ ScanDialog::ScanDialog(Bus *bus, const FamilyRegistry &registry, QWidget *parent
     m_found->setObjectName(QStringLiteral("foundList"));
     m_startButton->setObjectName(QStringLiteral("startScan"));
     m_progress->setObjectName(QStringLiteral("scanProgress"));
+    m_thorough->setObjectName(QStringLiteral("thoroughScan"));
+    m_thorough->setToolTip(tr("A quick scan gives each address a short timeout and probes again at the full timeout "
+                              "wherever it heard anything, which finds devices that answer late too. A thorough scan "
+                              "probes every address twice at the full timeout: minutes for the whole range."));
+    m_plan->setObjectName(QStringLiteral("scanPlan"));
+    m_plan->setWordWrap(true);
     m_from->setRange(1, 255);
     m_to->setRange(1, 255);
     m_from->setValue(1);
@@ -36,8 +46,12 @@ ScanDialog::ScanDialog(Bus *bus, const FamilyRegistry &registry, QWidget *parent
     connect(m_scanner, &DeviceScanner::progress, this, [this](int address, int done, int total) {
         m_progress->setRange(0, total);
         m_progress->setValue(done);
-        m_progress->setFormat(tr("address %1").arg(address));
+        const int left = int((m_scanner->remainingMs() + 999) / 1000);
+        m_progress->setFormat(tr("address %1, about %n s left", nullptr, left).arg(address));
     });
+    connect(m_from, &QSpinBox::valueChanged, this, &ScanDialog::updatePlan);
+    connect(m_to, &QSpinBox::valueChanged, this, &ScanDialog::updatePlan);
+    connect(m_thorough, &QCheckBox::toggled, this, &ScanDialog::updatePlan);
     connect(m_scanner, &DeviceScanner::found, this, [this](int address, std::shared_ptr<const RegisterMap> map) {
         if (address == map->protocol.alwaysAnswersAddress) {
             // Every device of the family answers there, whatever its own address: not a device.
@@ -62,6 +76,8 @@ ScanDialog::ScanDialog(Bus *bus, const FamilyRegistry &registry, QWidget *parent
     connect(m_scanner, &Job::finished, this, [this] {
         m_startButton->setEnabled(true);
         m_cancelButton->setEnabled(false);
+        for (QWidget *w : std::initializer_list<QWidget *>{m_from, m_to, m_thorough})
+            w->setEnabled(true);
         m_progress->setValue(m_progress->maximum());
         switch (m_scanner->result()) {
         case Job::Result::Cancelled:
@@ -71,7 +87,8 @@ ScanDialog::ScanDialog(Bus *bus, const FamilyRegistry &registry, QWidget *parent
             m_progress->setFormat(tr("stopped: %1").arg(m_scanner->errorText()));
             break;
         default:
-            m_progress->setFormat(tr("%n device(s) found", nullptr, int(m_results.size())));
+            m_progress->setFormat(tr("%n device(s) found in %1 s", nullptr, int(m_results.size()))
+                                          .arg(double(m_bus->clockMs() - m_startedMs) / 1000.0, 0, 'f', 1));
             break;
         }
     });
@@ -93,10 +110,32 @@ ScanDialog::ScanDialog(Bus *bus, const FamilyRegistry &registry, QWidget *parent
     });
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(range);
+    layout->addWidget(m_thorough);
+    layout->addWidget(m_plan);
     layout->addWidget(m_progress);
     layout->addWidget(m_found);
     layout->addWidget(buttons);
-    resize(480, 360);
+    resize(520, 380);
+    updatePlan();
+}
+
+void ScanDialog::updatePlan()
+{
+    if (m_scanner->isRunning())
+        return;
+    m_scanner->setMode(m_thorough->isChecked() ? DeviceScanner::Mode::Thorough : DeviceScanner::Mode::Quick);
+    const int from = m_from->value();
+    const int to = std::max(from, m_to->value());
+    const int full = m_scanner->fullTimeoutMs();
+    if (m_scanner->effectiveMode(from, to) == DeviceScanner::Mode::Quick) {
+        m_plan->setText(tr("Each address is probed once at %1 ms, again at the full %2 ms where anything was heard.")
+                                .arg(m_scanner->quickTimeoutMs())
+                                .arg(full));
+        return;
+    }
+    // A silent address: two probes, each followed by a quiet time as long as its timeout.
+    const int worst = int((qint64(to - from + 1) * 4 * full + 999) / 1000);
+    m_plan->setText(tr("Every address is probed at the full timeout of %1 ms: up to %n s.", nullptr, worst).arg(full));
 }
 
 void ScanDialog::start()
@@ -107,6 +146,10 @@ void ScanDialog::start()
     m_results.clear();
     m_startButton->setEnabled(false);
     m_cancelButton->setEnabled(true);
+    updatePlan();
+    for (QWidget *w : std::initializer_list<QWidget *>{m_from, m_to, m_thorough})
+        w->setEnabled(false);   // what the scan does was said, and stays so
+    m_startedMs = m_bus->clockMs();
     m_scanner->start(m_from->value(), std::max(m_from->value(), m_to->value()));
 }
 

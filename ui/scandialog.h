@@ -8,6 +8,8 @@
 
 #include <memory>
 
+class QCheckBox;
+class QLabel;
 class QListWidget;
 class QProgressBar;
 class QPushButton;
@@ -32,6 +34,10 @@ public:
     QList<QPair<std::shared_ptr<const RegisterMap>, quint8>> chosen() const;
 
 private:
+    // What a scan of the chosen range costs, said before it starts.
+    void updatePlan();
+
+    Bus *m_bus;
     DeviceScanner *m_scanner;
     QSpinBox *m_from;
     QSpinBox *m_to;
@@ -39,6 +45,9 @@ private:
     QListWidget *m_found;
     QPushButton *m_startButton;
     QPushButton *m_cancelButton;
+    QCheckBox *m_thorough;
+    QLabel *m_plan;
+    qint64 m_startedMs = 0;
     QList<QPair<std::shared_ptr<const RegisterMap>, quint8>> m_results;
 };
 

@@ -530,8 +530,13 @@ std::optional<int> LineCommands::scan(const QStringList &arguments)
     addLineOptions(parser, false);
     parser.addOption({QStringLiteral("from"), tr("First address (default 1)."), tr("address"), QStringLiteral("1")});
     parser.addOption({QStringLiteral("to"), tr("Last address (default 247)."), tr("address"), QStringLiteral("247")});
+    parser.addOption({QStringLiteral("thorough"),
+                      tr("Probe every address at the full timeout (the slowest family's worst case), twice where "
+                         "silent. Slow; the default quick scan probes again at the full timeout wherever it heard "
+                         "anything.")});
     if (const auto stop = parser.parseArguments(arguments, m_out, m_err, 0, 0))
         return stop;
+    const bool thorough = parser.isSet(QStringLiteral("thorough"));
     bool okFrom = false;
     bool okTo = false;
     const int from = parser.value(QStringLiteral("from")).toInt(&okFrom);
@@ -549,8 +554,11 @@ std::optional<int> LineCommands::scan(const QStringList &arguments)
     for (qsizetype i = 0; i < m_station.lines.size(); ++i) {
         Line &line = *m_lines[size_t(i)];
         line.scanner = std::make_unique<DeviceScanner>(*line.bus, m_registry.families());
+        line.scanner->setMode(thorough ? DeviceScanner::Mode::Thorough : DeviceScanner::Mode::Quick);
         connect(line.scanner.get(), &DeviceScanner::progress, this, [this, i](int address, int done, int total) {
-            m_lines[size_t(i)]->progress = tr("address %1 (%2 of %3)").arg(address).arg(done + 1).arg(total);
+            const qint64 left = (m_lines[size_t(i)]->scanner->remainingMs() + 999) / 1000;
+            m_lines[size_t(i)]->progress =
+                    tr("address %1 (%2 of %3), about %n s left", nullptr, int(left)).arg(address).arg(done + 1).arg(total);
             showScanProgress();
         });
         connect(line.scanner.get(), &DeviceScanner::found, this,
@@ -578,9 +586,37 @@ std::optional<int> LineCommands::scan(const QStringList &arguments)
                   << Qt::endl;
         });
         connect(line.scanner.get(), &Job::finished, this, [this, i] { scanFinished(i); });
+        m_err << lineMessage(i, scanPlan(*line.scanner, *line.bus, from, to)) << Qt::endl;
+        line.scanStartedMs = line.bus->clockMs();
         line.scanner->start(from, to);
     }
     return std::nullopt;
+}
+
+QString LineCommands::scanPlan(const DeviceScanner &scanner, const Bus &bus, int from, int to) const
+{
+    const int count = to - from + 1;
+    const int full = scanner.fullTimeoutMs();
+    if (scanner.effectiveMode(from, to) == DeviceScanner::Mode::Quick)
+        return tr("quick scan of addresses %1..%2: each probed once at %3 ms, again at the full %4 ms where "
+                  "anything was heard (--thorough probes every address at the full timeout)")
+                .arg(from)
+                .arg(to)
+                .arg(scanner.quickTimeoutMs())
+                .arg(full);
+    // A silent address: two probes, each followed by a quiet time as long as its timeout.
+    const qint64 worst = (qint64(count) * 4 * full + 999) / 1000;
+    const QString why = scanner.mode() == DeviceScanner::Mode::Thorough
+            ? tr("as asked")
+            : bus.lineKind() == LineAddress::Kind::ModbusTcp
+            ? tr("a Modbus TCP gateway answers every request itself, at its own timeout")
+            : tr("the range is too short to listen for late answers after a quick pass");
+    return tr("thorough scan of addresses %1..%2 (%3): a silent address costs two probes at %4 ms, each followed "
+              "by as long a quiet time; up to %n s", nullptr, int(worst))
+            .arg(from)
+            .arg(to)
+            .arg(why)
+            .arg(full);
 }
 
 void LineCommands::showScanProgress()
@@ -606,8 +642,14 @@ void LineCommands::scanFinished(qsizetype index)
     Line &line = *m_lines[size_t(index)];
     line.scanDone = true;
     clearScanProgress();
+    const double seconds = double(line.bus->clockMs() - line.scanStartedMs) / 1000.0;
+    QString summary = tr("%n device(s) found in %1 s", nullptr, line.found).arg(seconds, 0, 'f', 1);
+    if (line.scanner->reprobed() > 0)
+        summary += QLatin1String("; ")
+                + tr("%n address(es) probed again at the full timeout", nullptr, line.scanner->reprobed());
     if (m_lines.size() > 1)
-        m_err << tr("%1: %n device(s) found", nullptr, line.found).arg(line.name) << Qt::endl;
+        summary = tr("%1: %2").arg(line.name, summary);
+    m_err << summary << Qt::endl;
     if (!std::all_of(m_lines.cbegin(), m_lines.cend(), [](const std::unique_ptr<Line> &l) { return l->scanDone; }))
         return;
     // A line without a device is worth a look (a wrong baud rate, a loose wire): a failure.
@@ -617,7 +659,8 @@ void LineCommands::scanFinished(qsizetype index)
         empty = empty || l->found == 0;
         found += l->found;
     }
-    m_err << tr("%n device(s) found", nullptr, found) << Qt::endl;
+    if (m_lines.size() > 1)
+        m_err << tr("%n device(s) found", nullptr, found) << Qt::endl;
     finish(empty || m_failed ? exitcode::Failed : exitcode::Ok);
 }
 

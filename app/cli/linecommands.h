@@ -71,6 +71,7 @@ private:
         std::unique_ptr<DeviceScanner> scanner;
         int found = 0;            // scan
         QString progress;         // scan: "address 5 (5 of 247)"
+        qint64 scanStartedMs = 0; // scan: the bus's clock at its start
         bool scanDone = false;
         bool lost = false;        // the line is lost now (it may come back)
     };
@@ -100,6 +101,8 @@ private:
     // As the command line names it: "LINE/FAMILY@ADDRESS" when there are several lines.
     QString targetName(const Target &target) const;
     void scanFinished(qsizetype index);
+    // What the scan will do and cost, said before it starts.
+    QString scanPlan(const DeviceScanner &scanner, const Bus &bus, int from, int to) const;
     void showScanProgress();
     void clearScanProgress();
     std::optional<int> scan(const QStringList &arguments);

@@ -361,6 +361,15 @@ int Bus::requestTimeoutMs(const ProtocolInfo &protocol, int requestBytes, int re
             + margin;
 }
 
+int Bus::quickProbeTimeoutMs(const ProtocolInfo &protocol, int requestBytes, int replyBytes) const
+{
+    const int margin = m_lineKind == LineAddress::Kind::Serial ? 0 : LineTiming::networkMarginMs;
+    const int quick = LineTiming::timeoutMs(m_settings.format, requestBytes, replyBytes, LineTiming::quickTiming(protocol),
+                                            m_settings.minimumResponseTimeMs)
+            + margin;
+    return std::min(quick, requestTimeoutMs(protocol, requestBytes, replyBytes));
+}
+
 void Bus::finishLater(int ticket, const WriteOutcome &outcome)
 {
     m_clock->callSoon(this, [this, ticket, outcome] { emit writeFinished(ticket, outcome); });
@@ -396,7 +405,12 @@ QString Bus::setHold(DeviceId id, const QString &entryId, const QString &value, 
 
 int Bus::probe(quint8 slave, quint16 address, quint16 count, const ProtocolInfo &timing)
 {
-    return m_requests.probe(slave, address, count, timing);
+    return m_requests.probe(slave, address, count, timing, false);
+}
+
+int Bus::quickProbe(quint8 slave, quint16 address, quint16 count, const ProtocolInfo &timing)
+{
+    return m_requests.probe(slave, address, count, timing, true);
 }
 
 int Bus::readEntries(DeviceId id, const QStringList &entryIds)
@@ -459,7 +473,9 @@ void Bus::dispatch()
         schedule(t);
         return;
     }
-    turn.request.timeoutMs = requestTimeoutMs(turn.timing, turn.request.requestBytes(), turn.request.replyBytes());
+    const bool quick = turn.transaction && turn.transaction->isQuickProbe();
+    turn.request.timeoutMs = quick ? quickProbeTimeoutMs(turn.timing, turn.request.requestBytes(), turn.request.replyBytes())
+                                   : requestTimeoutMs(turn.timing, turn.request.requestBytes(), turn.request.replyBytes());
     if (DeviceStatistics *s = m_store.statistics(turn.device))
         ++s->requests;
     m_scheduler.sent(turn.request, t);
@@ -476,6 +492,9 @@ void Bus::onResult(const ModbusResult &result)
     const qint64 t = now();
     const double roundTrip = double(t - flight.sentMs);
     m_store.count(flight.turn.device, result, roundTrip);
+    m_strayReplies += quint64(std::max(0, result.crcErrors) + std::max(0, result.mismatches)
+                              + std::max(0, result.unframedReceptions))
+            + (result.status == ModbusResult::Status::BadReply ? 1 : 0);
     recordTraffic(flight, result, roundTrip);
     setQuietAfter(flight, result, t);
     m_scheduler.charge(flight.turn, std::max(t, m_scheduler.quietUntil()) - flight.sentMs);
@@ -555,8 +574,12 @@ void Bus::recordTraffic(const InFlight &flight, const ModbusResult &result, doub
 
 void Bus::setQuietAfter(const InFlight &flight, const ModbusResult &result, qint64 now)
 {
+    const bool quick = flight.turn.kind == Scheduler::Turn::Kind::Transaction && flight.turn.transaction
+            && flight.turn.transaction->isQuickProbe();
     m_scheduler.setQuietUntil(now + LineTiming::quietAfterMs(m_settings.format, flight.turn.request, result,
-                                                             flight.turn.timing, m_settings.minimumResponseTimeMs));
+                                                             flight.turn.timing, m_settings.minimumResponseTimeMs,
+                                                             quick ? LineTiming::LateAnswer::Harmless
+                                                                   : LineTiming::LateAnswer::Guarded));
 }
 
 void Bus::applyPoll(const Scheduler::Turn &turn, const ModbusResult &result, qint64 now)

@@ -125,6 +125,13 @@ public:
     // Reads a raw block outside any poll plan (scan probes) in the job lane, repeated
     // once when unanswered: probeFinished follows.
     int probe(quint8 slave, quint16 address, quint16 count, const ProtocolInfo &timing);
+    // The same once, at the short timeout of a quick scan (quickProbeTimeoutMs) and with no
+    // quiet time after a lost answer: never to an address asked again within the full
+    // timeout. A late answer shows as a stray reply (strayReplies()).
+    int quickProbe(quint8 slave, quint16 address, quint16 count, const ProtocolInfo &timing);
+    // Replies heard that fitted no request (a bad CRC, another address's answer, a reply of
+    // the wrong size) since the bus was made, on any request: a scan hears late answers so.
+    quint64 strayReplies() const { return m_strayReplies; }
     // Reads these entries of a device now, in the job lane (a backup, a report): the
     // values go to the store as polls do; entriesRead follows with those that failed.
     int readEntries(DeviceId id, const QStringList &entryIds);
@@ -134,6 +141,8 @@ public:
     void cancel(int ticket);
 
     int requestTimeoutMs(const ProtocolInfo &protocol, int requestBytes, int replyBytes) const;
+    // A quick probe's: the device given quickAnswerMs, never above requestTimeoutMs.
+    int quickProbeTimeoutMs(const ProtocolInfo &protocol, int requestBytes, int replyBytes) const;
     double interFrameDelayMs() const;
     // The monotonic clock of EntryState times and TrafficRecord times.
     qint64 clockMs() const override { return m_clock->nowMs(); }
@@ -192,6 +201,7 @@ private:
     Clock *m_clock;
     BusSettings m_settings;
     LineAddress::Kind m_lineKind = LineAddress::Kind::Serial;
+    quint64 m_strayReplies = 0;
     LineConnection m_line;
     Scheduler m_scheduler;
     ValueStore m_store;

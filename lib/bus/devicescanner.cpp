@@ -1,6 +1,7 @@
 #include "bus/devicescanner.h"
 
 #include "bus/bus.h"
+#include "bus/linetiming.h"
 
 #include <algorithm>
 
@@ -33,11 +34,67 @@ DeviceScanner::DeviceScanner(Bus &bus, QList<std::shared_ptr<const RegisterMap>>
     connect(&m_bus, &Bus::probeFinished, this, &DeviceScanner::onProbeFinished);
 }
 
+DeviceScanner::Mode DeviceScanner::effectiveMode(int firstAddress, int lastAddress) const
+{
+    if (m_mode == Mode::Thorough || m_bus.lineKind() == LineAddress::Kind::ModbusTcp)
+        return Mode::Thorough;
+    // The listener after the quick pass must be an address that went quiet longer ago than
+    // a late answer may take; a short range has none.
+    const qint64 quickPass = qint64(lastAddress - firstAddress + 1) * quickTimeoutMs();
+    return quickPass * 5 >= qint64(heardWindowMs()) * 6 ? Mode::Quick : Mode::Thorough;
+}
+
+int DeviceScanner::probeWords() const
+{
+    int words = 1;
+    for (const auto &f : std::as_const(m_families)) {
+        for (const IdentifyProbe &probe : f->identify)
+            words = std::max(words, probe.words);
+    }
+    return words;
+}
+
+int DeviceScanner::fullTimeoutMs() const
+{
+    return m_bus.requestTimeoutMs(m_slowest, LineTiming::readRequestBytes, LineTiming::readReplyBytes(probeWords()));
+}
+
+int DeviceScanner::quickTimeoutMs() const
+{
+    return m_bus.quickProbeTimeoutMs(m_slowest, LineTiming::readRequestBytes, LineTiming::readReplyBytes(probeWords()));
+}
+
+qint64 DeviceScanner::remainingMs() const
+{
+    if (!m_running)
+        return 0;
+    const qint64 quickEach = m_quickDone > 0 ? m_quickCostMs / m_quickDone : quickTimeoutMs();
+    const qint64 thoroughEach = m_thoroughDone > 0 ? m_thoroughCostMs / m_thoroughDone : 4 * qint64(fullTimeoutMs());
+    const qint64 quickLeft = m_quickPass ? m_last - m_address : 0;
+    return quickLeft * quickEach + qint64(m_thorough.size()) * thoroughEach;
+}
+
 void DeviceScanner::start(int firstAddress, int lastAddress)
 {
     m_first = std::clamp(firstAddress, 1, 255);
     m_last = std::clamp(lastAddress, m_first, 255);
     m_address = m_first - 1;
+    m_quickPass = effectiveMode(m_first, m_last) == Mode::Quick;
+    m_thorough.clear();
+    m_queued.clear();
+    if (!m_quickPass) {
+        for (int a = m_first; a <= m_last; ++a)
+            m_thorough << a;
+    }
+    m_silentAt.clear();
+    m_strays = m_bus.strayReplies();
+    m_straysSeenMs = m_bus.clockMs();
+    m_done = 0;
+    m_total = m_last - m_first + 1;
+    m_reprobed = 0;
+    m_quickCostMs = m_thoroughCostMs = 0;
+    m_quickDone = m_thoroughDone = 0;
+    m_addressStartedMs = -1;
     m_running = true;
     begin();
     nextAddress();
@@ -45,15 +102,87 @@ void DeviceScanner::start(int firstAddress, int lastAddress)
 
 void DeviceScanner::nextAddress()
 {
-    if (isCancelled() || m_address >= m_last) {
+    const qint64 now = m_bus.clockMs();
+    if (m_addressStartedMs >= 0) {
+        // What the address cost, with whatever the line did meanwhile: the estimate's base.
+        (m_addressWasQuick ? m_quickCostMs : m_thoroughCostMs) += now - m_addressStartedMs;
+        ++(m_addressWasQuick ? m_quickDone : m_thoroughDone);
+    }
+    if (isCancelled()) {
         m_running = false;
-        finish(isCancelled() ? Result::Cancelled : Result::Succeeded);
+        finish(Result::Cancelled);
         return;
     }
-    ++m_address;
+    if (m_quickPass && m_address >= m_last) {
+        m_quickPass = false;
+        beginThoroughPass(now);
+    }
+    if (!m_quickPass && m_thorough.isEmpty()) {
+        m_running = false;
+        finish(Result::Succeeded);
+        return;
+    }
+    m_address = m_quickPass ? m_address + 1 : m_thorough.takeFirst();
+    m_addressWasQuick = m_quickPass;
+    m_addressStartedMs = now;
     m_cache.clear();
-    emit progress(m_address, m_address - m_first, m_last - m_first + 1);
+    emit progress(m_address, m_done, m_total);
+    ++m_done;
+    const auto silent = m_silentAt.constFind(m_address);
+    if (!m_quickPass && silent != m_silentAt.cend() && now < *silent + fullTimeoutMs()) {
+        // Its answer to the quick probe may still come, and would be taken for this
+        // address's next probe of another register: wait it out.
+        m_bus.clock()->callAt(*silent + fullTimeoutMs(), this, [this] { evaluate(); });
+        return;
+    }
     evaluate();
+}
+
+void DeviceScanner::suspectRecentSilence(qint64 heardSince)
+{
+    // What was heard came after heardSince; an answer comes within the full timeout of its
+    // request, so its request went out after heardSince - fullTimeoutMs(), and its quick
+    // probe ended later still.
+    QList<int> recent;
+    for (auto it = m_silentAt.cbegin(); it != m_silentAt.cend(); ++it) {
+        if (*it >= heardSince - heardWindowMs() && !m_queued.contains(it.key()))
+            recent << it.key();
+    }
+    std::sort(recent.begin(), recent.end());
+    for (int address : std::as_const(recent)) {
+        m_queued.insert(address);
+        m_thorough << address;
+        ++m_reprobed;
+        ++m_total;
+    }
+}
+
+void DeviceScanner::beginThoroughPass(qint64 now)
+{
+    const bool stillListening = std::any_of(m_silentAt.cbegin(), m_silentAt.cend(),
+                                            [&](qint64 at) { return now - at <= heardWindowMs(); });
+    if (!stillListening)
+        return;
+    // Late answers to the last quick probes may still be on their way, and nothing hears
+    // them while no request is out: an address that went quiet long before is probed
+    // thoroughly first, and listens meanwhile.
+    int listener = -1;
+    for (auto it = m_silentAt.cbegin(); it != m_silentAt.cend(); ++it) {
+        if (now - *it > heardWindowMs() && (listener < 0 || it.key() < listener))
+            listener = it.key();
+    }
+    if (listener < 0) {
+        suspectRecentSilence(now);
+        return;
+    }
+    if (m_queued.contains(listener)) {
+        m_thorough.removeOne(listener);
+    } else {
+        m_queued.insert(listener);
+        ++m_reprobed;
+        ++m_total;
+    }
+    m_thorough.prepend(listener);
 }
 
 bool DeviceScanner::passes(const IdentifyProbe &probe, const ProbeResult &result)
@@ -92,7 +221,10 @@ void DeviceScanner::evaluate()
             const auto it = m_cache.constFind(cacheKey(probe));
             if (it == m_cache.cend()) {
                 m_pendingKey = cacheKey(probe);
-                m_pendingTicket = m_bus.probe(quint8(m_address), probe.address, quint16(probe.words), m_slowest);
+                m_pendingQuick = m_quickPass && m_cache.isEmpty() && quickFirstProbe();
+                m_pendingTicket = m_pendingQuick
+                        ? m_bus.quickProbe(quint8(m_address), probe.address, quint16(probe.words), m_slowest)
+                        : m_bus.probe(quint8(m_address), probe.address, quint16(probe.words), m_slowest);
                 return;
             }
             if (it->timedOut) {
@@ -130,8 +262,30 @@ void DeviceScanner::onProbeFinished(int ticket, const QList<quint16> &words, boo
     if (ticket != m_pendingTicket || !m_running)
         return;
     m_pendingTicket = -1;
+    const qint64 now = m_bus.clockMs();
     m_cache.insert(m_pendingKey, ProbeResult{timedOut, exceptionCode, words});
+    if (m_pendingQuick && timedOut)
+        m_silentAt.insert(m_address, now);
+    const quint64 strays = m_bus.strayReplies();
+    if (strays != m_strays) {
+        // Somebody answered what was not asked of them (or garbled an answer) since the
+        // last look: a late answer, perhaps, to a quick probe that counted as silence.
+        m_strays = strays;
+        suspectRecentSilence(m_straysSeenMs);
+    }
+    m_straysSeenMs = now;
     evaluate();
+}
+
+bool DeviceScanner::quickFirstProbe() const
+{
+    // A device on the bus is polled: a poll of it right after a lost quick probe could
+    // take the probe's late answer for its own.
+    for (DeviceId id : m_bus.devices()) {
+        if (m_bus.deviceAddress(id) == m_address)
+            return false;
+    }
+    return true;
 }
 
 } // namespace jumo

@@ -1,12 +1,22 @@
 // Finds devices on a line and names their family, with each family's identify probes
 // from its map. Probe answers are shared between families, so an address costs one
-// request per distinct probe, and a silent address one timeout.
+// request per distinct probe.
+//
+// A thorough scan gives a silent address the full timeout (the slowest family's worst
+// case) twice, each followed by as long a quiet time: about 1.5 s at 38400 baud. A quick
+// scan probes every address once at a short timeout (a device given quickAnswerMs) with
+// no quiet time, and listens meanwhile: a late answer carries its own address, so it is
+// never taken for the next probe's (which goes elsewhere) but heard as a stray reply. Where
+// anything was heard (a stray reply, a bad CRC, a reply that fits nothing) the addresses
+// probed within the time a late answer could take are probed again thoroughly, after one
+// thorough probe of an address probed long before, which listens for the last ones.
 #pragma once
 
 #include "bus/job.h"
 #include "protocol/registermap.h"
 
 #include <QHash>
+#include <QSet>
 
 #include <memory>
 
@@ -19,7 +29,24 @@ class DeviceScanner : public Job
     Q_OBJECT
 
 public:
+    enum class Mode { Thorough, Quick };
+
     DeviceScanner(Bus &bus, QList<std::shared_ptr<const RegisterMap>> families, QObject *parent = nullptr);
+
+    // Thorough unless set (identity checks and broadcast clearances stay so); before start().
+    void setMode(Mode mode) { m_mode = mode; }
+    Mode mode() const { return m_mode; }
+    // What a scan of these addresses on this line does: Quick is thorough over a Modbus TCP
+    // gateway (which answers every request itself, at its own timeout) and on a range too
+    // short to listen for late answers after its quick pass.
+    Mode effectiveMode(int firstAddress, int lastAddress) const;
+    // A silent address's probe: at the full timeout, and at a quick scan's.
+    int fullTimeoutMs() const;
+    int quickTimeoutMs() const;
+    // About how long the rest of the scan takes, from what it cost so far.
+    qint64 remainingMs() const;
+    // Addresses a quick scan probed again thoroughly because something was heard.
+    int reprobed() const { return m_reprobed; }
 
     // Probes the addresses in the job lane of the bus: devices being monitored keep their
     // polls and keepalives meanwhile. Ends Succeeded, Cancelled, or Failed when the line
@@ -47,6 +74,15 @@ private:
     void evaluate();
     void onProbeFinished(int ticket, const QList<quint16> &words, bool timedOut, int exceptionCode);
     static bool passes(const IdentifyProbe &probe, const ProbeResult &result);
+    // The addresses that stayed silent in the quick pass recently enough that what was
+    // heard after heardSince may have been their late answer: probed again thoroughly.
+    void suspectRecentSilence(qint64 heardSince);
+    // After the quick pass: the thorough probes, the listener first.
+    void beginThoroughPass(qint64 now);
+    // A device answers within the full timeout of its request, or not at all.
+    int heardWindowMs() const { return fullTimeoutMs(); }
+    bool quickFirstProbe() const;
+    int probeWords() const;
 
     Bus &m_bus;
     QList<std::shared_ptr<const RegisterMap>> m_families;   // in scan order
@@ -57,7 +93,25 @@ private:
     int m_first = 0;
     int m_pendingTicket = -1;
     quint64 m_pendingKey = 0;
+    bool m_pendingQuick = false;
     bool m_running = false;
+
+    Mode m_mode = Mode::Thorough;
+    bool m_quickPass = false;                 // in the quick pass of a quick scan
+    QList<int> m_thorough;                    // addresses left to probe thoroughly
+    QSet<int> m_queued;                       // quick pass: addresses put into m_thorough
+    QHash<int, qint64> m_silentAt;            // quick pass: silent address -> when it ended
+    quint64 m_strays = 0;                     // the bus's stray replies when last looked
+    qint64 m_straysSeenMs = 0;                // and when
+    int m_done = 0;
+    int m_total = 0;
+    int m_reprobed = 0;
+    qint64 m_quickCostMs = 0;                 // line time the addresses of each pass took
+    qint64 m_thoroughCostMs = 0;
+    int m_quickDone = 0;
+    int m_thoroughDone = 0;
+    qint64 m_addressStartedMs = -1;
+    bool m_addressWasQuick = false;
 };
 
 } // namespace jumo

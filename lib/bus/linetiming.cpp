@@ -39,15 +39,23 @@ int bridgeableGapWords(const LineFormat &format, const ProtocolInfo &protocol)
     return int(request / format.wireTimeMs(2));
 }
 
+ProtocolInfo quickTiming(const ProtocolInfo &protocol)
+{
+    ProtocolInfo quick = protocol;
+    quick.processingTimeMaxMs = std::min(protocol.processingTimeMaxMs, quickAnswerMs);
+    return quick;
+}
+
 qint64 quietAfterMs(const LineFormat &format, const ModbusRequest &request, const ModbusResult &result,
-                    const ProtocolInfo &protocol, int minimumResponseTimeMs)
+                    const ProtocolInfo &protocol, int minimumResponseTimeMs, LateAnswer late)
 {
     if (request.isBroadcast() && result.status == ModbusResult::Status::Ok) {
         // Qt calls a broadcast done when its bytes reach the driver, not the wire.
         const double wire = format.wireTimeMs(request.requestBytes());
         return qint64(wire + std::max(100.0, protocol.processingTimeMaxMs + minimumResponseTimeMs));
     }
-    if (result.status == ModbusResult::Status::Timeout || result.status == ModbusResult::Status::BadReply)
+    const bool lost = result.status == ModbusResult::Status::Timeout || result.status == ModbusResult::Status::BadReply;
+    if (lost && late == LateAnswer::Guarded)
         return std::max(request.timeoutMs, timeoutMs(format, request.requestBytes(), request.replyBytes(), protocol,
                                                      minimumResponseTimeMs));
     return qint64(std::max(0.0, protocol.turnaroundMs - interFrameDelayMs(format)) + 0.5);

@@ -36,11 +36,25 @@ double interFrameDelayMs(const LineFormat &format);
 // wire time than one more request (its framing, two frame gaps, the device's typical
 // processing time, the client's gap before a request).
 int bridgeableGapWords(const LineFormat &format, const ProtocolInfo &protocol);
+// What a quick scan allows a device to answer in: real devices and our peers answer within
+// a few ms; one slower than this is heard answering later and probed again at the full
+// timeout.
+constexpr double quickAnswerMs = 20.0;
+// The family timing a quick scan probes with: the device's time cut to quickAnswerMs.
+ProtocolInfo quickTiming(const ProtocolInfo &protocol);
+
+// Whether a lost answer may still come and be taken for the next request's.
+enum class LateAnswer {
+    Guarded,    // the next request may go to the same address: wait it out
+    Harmless,   // a quick scan's probe: nothing goes to that address soon, and an answer
+                // from it later carries its address and is heard as a mismatch
+};
 // How long nobody may talk after a request ended so: after a lost or garbled reply as
 // long again as the timeout, so a late answer cannot be taken for the next request's (Qt
 // clears its buffer right before each send); after a reply the family's turnaround; after
 // a broadcast the devices' time to carry it out.
 qint64 quietAfterMs(const LineFormat &format, const ModbusRequest &request, const ModbusResult &result,
-                    const ProtocolInfo &protocol, int minimumResponseTimeMs);
+                    const ProtocolInfo &protocol, int minimumResponseTimeMs,
+                    LateAnswer late = LateAnswer::Guarded);
 
 } // namespace jumo::LineTiming

@@ -47,6 +47,10 @@ struct ModbusResult
     int exceptionCode = 0;
     int crcErrors = 0;          // replies discarded for a bad CRC on the way
     int mismatches = 0;         // replies discarded that belonged to another request
+    // Bytes heard that made no reply the client could frame: while no request was out (a
+    // late answer between two requests, lost), or during this one when it got none (the
+    // tail of a late answer, noise). A scan hears late answers by them as by mismatches.
+    int unframedReceptions = 0;
     QByteArray replyFrame;      // the whole RTU frame as received (reconstructed), empty if none
     QString errorText;          // empty when the status is Ok
 

@@ -26,6 +26,8 @@ public:
         return isFinished() ? std::nullopt : std::optional<ModbusRequest>(m_request);
     }
     ProtocolInfo timing() const override { return m_timing; }
+    bool isQuickProbe() const override { return m_quick; }
+    void setQuickProbe() { m_quick = true; m_maxAttempts = 1; }
 
     Next onResult(const ModbusResult &result, int) override
     {
@@ -64,6 +66,7 @@ private:
     ProtocolInfo m_timing;
     int m_maxAttempts;
     int m_attempts = 0;
+    bool m_quick = false;
     Finished m_finished;
 };
 

@@ -204,7 +204,7 @@ QString RequestDesk::setHold(DeviceId id, const QString &entryId, const QString 
     return {};
 }
 
-int RequestDesk::probe(quint8 slave, quint16 address, quint16 count, const ProtocolInfo &timing)
+int RequestDesk::probe(quint8 slave, quint16 address, quint16 count, const ProtocolInfo &timing, bool quick)
 {
     const int ticket = m_bus.nextTicket();
     auto report = [this, ticket](const ModbusResult &r) {
@@ -216,9 +216,13 @@ int RequestDesk::probe(quint8 slave, quint16 address, quint16 count, const Proto
         report(ModbusResult{});
         return ticket;
     }
-    // Repeated once: a single lost reply must not hide a device.
-    m_bus.m_scheduler.enqueue(std::make_unique<ReadTransaction>(ticket, Transaction::Lane::Job, -1, ModbusRequest::read(slave, address, count),
-                                                          timing, 2, report));
+    // Repeated once: a single lost reply must not hide a device. A quick probe is not: a
+    // late answer is heard, and the scan probes that address again at the full timeout.
+    auto read = std::make_unique<ReadTransaction>(ticket, Transaction::Lane::Job, -1,
+                                                  ModbusRequest::read(slave, address, count), timing, 2, report);
+    if (quick)
+        read->setQuickProbe();
+    m_bus.m_scheduler.enqueue(std::move(read));
     m_bus.schedule(m_bus.now());
     return ticket;
 }

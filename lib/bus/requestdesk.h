@@ -24,7 +24,7 @@ public:
     int writeBits(DeviceId id, const QString &entryId, const QHash<QString, bool> &bits, Transaction::Lane lane);
     int writeBroadcast(const QString &family, const QString &entryId, const QString &value);
     QString setHold(DeviceId id, const QString &entryId, const QString &value, int intervalMs);
-    int probe(quint8 slave, quint16 address, quint16 count, const ProtocolInfo &timing);
+    int probe(quint8 slave, quint16 address, quint16 count, const ProtocolInfo &timing, bool quick);
     int readEntries(DeviceId id, const QStringList &entryIds);
 
 private:

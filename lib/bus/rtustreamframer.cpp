@@ -9,7 +9,10 @@ QByteArray RtuStreamFramer::frame(const ModbusRequest &request, qint64 nowMs)
 {
     holdUntil(request, nowMs);   // forgets what is no longer owed
     // Whatever came before answers nothing that is asked now.
+    if (m_buffer.size() > m_heardBytes)
+        ++m_unframed;
     m_buffer.clear();
+    m_heardBytes = 0;
     if (request.isBroadcast())
         m_request.reset();   // nobody answers address 0
     else
@@ -21,8 +24,11 @@ std::optional<ModbusResult> RtuStreamFramer::received(QByteArrayView bytes, qint
 {
     Q_UNUSED(nowMs)
     m_buffer.append(bytes.data(), bytes.size());
-    if (m_buffer.size() > 2 * keptBytes)
-        m_buffer.remove(0, m_buffer.size() - keptBytes);
+    if (m_buffer.size() > 2 * keptBytes) {
+        const qsizetype dropped = m_buffer.size() - keptBytes;
+        m_buffer.remove(0, dropped);
+        m_heardBytes = std::max<qsizetype>(0, m_heardBytes - dropped);
+    }
     settleOwed();
     if (!m_request)
         return std::nullopt;
@@ -35,7 +41,9 @@ std::optional<ModbusResult> RtuStreamFramer::received(QByteArrayView bytes, qint
     ModbusResult result = resultOfFrame(*m_request, QByteArrayView(m_buffer).sliced(skipped, *length));
     result.crcErrors = crcErrors;
     result.mismatches = mismatches + m_lateReplies.take(m_request->slave);
+    result.unframedReceptions = std::exchange(m_unframed, 0);
     m_buffer.remove(0, skipped + *length);
+    m_heardBytes = std::max<qsizetype>(0, m_heardBytes - (skipped + *length));
     m_request.reset();
     return result;
 }
@@ -49,6 +57,9 @@ ModbusResult RtuStreamFramer::timedOut(qint64 nowMs)
     qsizetype skipped = 0;
     findReply(*m_request, m_buffer, &skipped, &result.crcErrors, &result.mismatches);
     result.mismatches += m_lateReplies.take(m_request->slave);
+    result.unframedReceptions = std::exchange(m_unframed, 0)
+            + (!m_buffer.isEmpty() && result.mismatches == 0 && result.crcErrors == 0 ? 1 : 0);
+    m_heardBytes = m_buffer.size();
     if (m_buffer.isEmpty() && result.mismatches == 0)
         result.errorText = tr("no reply within %1 ms").arg(m_request->timeoutMs);
     else if (result.mismatches > 0)
@@ -84,6 +95,8 @@ void RtuStreamFramer::reset()
     m_buffer.clear();
     m_owed.clear();
     m_lateReplies.clear();
+    m_unframed = 0;
+    m_heardBytes = 0;
 }
 
 void RtuStreamFramer::settleOwed()

@@ -72,6 +72,8 @@ private:
     QByteArray m_buffer;
     QList<Owed> m_owed;
     QHash<quint8, int> m_lateReplies;   // owed replies that came, per device: its next result's mismatches
+    int m_unframed = 0;                 // bytes dropped unread at a request: the next result's
+    qsizetype m_heardBytes = 0;         // bytes in front of m_buffer already counted so
 };
 
 } // namespace jumo

@@ -31,6 +31,13 @@ ClientTransport::Link RtuTransport::openLink(QString *error)
     if (!m_client) {
         m_client = new QModbusRtuSerialClient(this);
         connect(m_client, &QModbusDevice::errorOccurred, this, &RtuTransport::onErrorOccurred);
+        // Connected after the client's own handler, which reads every byte first: this
+        // only learns that bytes came.
+        if (QIODevice *port = m_client->device())
+            connect(port, &QIODevice::readyRead, this, [this] {
+                if (!std::exchange(m_replyReading, false))
+                    ++m_receptions;
+            });
     }
     // A by-id link is followed at every open, so a re-plugged adapter is found as the
     // ttyUSBn it is now; the device's own name keeps Qt's lock file (LCK..ttyUSB0) the
@@ -79,6 +86,7 @@ double RtuTransport::interFrameDelayMs() const
 
 void RtuTransport::transmit(const ModbusRequest &request)
 {
+    m_receptionsAtSend = m_receptions;
     m_client->setTimeout(request.timeoutMs);
     QModbusReply *reply = nullptr;
     if (request.isWrite())
@@ -111,6 +119,18 @@ void RtuTransport::onReplyFinished(QModbusReply *reply, const ModbusRequest &req
     const QList<QModbusDevice::IntermediateError> intermediate = reply->intermediateErrors();
     result.crcErrors = int(intermediate.count(QModbusDevice::ResponseCrcError));
     result.mismatches = int(intermediate.count(QModbusDevice::ResponseRequestMismatch));
+    result.unframedReceptions = int(m_receptionsAtSend - m_receptionsAtFinish);   // while nothing was out
+    if (result.status == ModbusResult::Status::Timeout && result.crcErrors == 0 && result.mismatches == 0
+        && m_receptions > m_receptionsAtSend)
+        ++result.unframedReceptions;   // bytes came, and made nothing
+    m_receptionsAtFinish = m_receptions;
+    if (!request.isBroadcast() && result.status != ModbusResult::Status::Timeout
+        && result.status != ModbusResult::Status::LineDown) {
+        // Qt finishes a reply inside its handler of the reading that completed it: that
+        // reading is the reply's, not one to count after it.
+        m_replyReading = true;
+        QMetaObject::invokeMethod(this, [this] { m_replyReading = false; }, Qt::QueuedConnection);
+    }
     complete(result);
 }
 

@@ -54,6 +54,13 @@ private:
     LineFormat m_format;
     QModbusRtuSerialClient *m_client = nullptr;
     QPointer<QModbusReply> m_pending;
+    // Readings of the port (its readyRead, after Qt's client has taken the bytes): when
+    // the last request finished and when this one went out. Qt drops bytes that come
+    // while no request is out, and one stray byte in front of a reply hides it.
+    quint64 m_receptions = 0;
+    quint64 m_receptionsAtFinish = 0;
+    quint64 m_receptionsAtSend = 0;
+    bool m_replyReading = false;   // the reading under way completed a reply
 };
 
 } // namespace jumo

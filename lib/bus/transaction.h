@@ -39,6 +39,10 @@ public:
     // The next request must follow the last one at once, with nothing in between
     // (read-modify-write).
     virtual bool holdsLine() const { return false; }
+    // A quick scan's probe: a short timeout, one attempt, and no quiet time after a lost
+    // answer (nothing goes to its address soon; an answer from it later is heard as a
+    // reply that fits no request).
+    virtual bool isQuickProbe() const { return false; }
     // The answer to the request last handed out.
     virtual Next onResult(const ModbusResult &result, int maxRetries) = 0;
     // The transaction ends before its next request is sent: the line went down or was

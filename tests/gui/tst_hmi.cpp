@@ -45,6 +45,7 @@
 #include <QComboBox>
 #include <QTabWidget>
 #include <QCheckBox>
+#include <QProgressBar>
 #include <QElapsedTimer>
 #include <QFileDialog>
 #include <QFile>
@@ -336,9 +337,28 @@ void tst_Hmi::connectScanAndSeeLiveValuesMove()
     QVERIFY(dialog);
     dialog->findChild<QSpinBox *>("fromBox")->setValue(1);
     dialog->findChild<QSpinBox *>("toBox")->setValue(6);
+    // The dialog says what the scan will do before it starts: quick unless asked.
+    auto *plan = dialog->findChild<QLabel *>("scanPlan");
+    auto *thorough = dialog->findChild<QCheckBox *>("thoroughScan");
+    QVERIFY(plan && thorough && !thorough->isChecked());
+    QVERIFY2(plan->text().startsWith("Each address is probed once at "), qPrintable(plan->text()));
+    thorough->setChecked(true);
+    QVERIFY2(plan->text().startsWith("Every address is probed at the full timeout of "), qPrintable(plan->text()));
+    thorough->setChecked(false);
     QTest::mouseClick(dialog->findChild<QPushButton *>("startScan"), Qt::LeftButton);
+    QVERIFY(!thorough->isEnabled());
     auto *found = dialog->findChild<QListWidget *>("foundList");
+    auto *progress = dialog->findChild<QProgressBar *>("scanProgress");
+    const QString screenshots = qEnvironmentVariable("JUMO_SCREENSHOT_DIR");
+    if (!screenshots.isEmpty()) {
+        QTRY_VERIFY_WITH_TIMEOUT(progress->format().contains("left"), 10000);
+        dialog->grab().save(screenshots + QStringLiteral("/scan-under-way.png"));
+    }
     QTRY_VERIFY_WITH_TIMEOUT(!dialog->isScanning() && found->count() == 4, 30000);
+    QVERIFY2(progress->format().startsWith("4 device(s) found in "), qPrintable(progress->format()));
+    if (!screenshots.isEmpty())
+        dialog->grab().save(screenshots + QStringLiteral("/scan-done.png"));
+    QVERIFY(thorough->isEnabled());
     dialog->accept();
     for (const auto &[family, address] : QList<QPair<QString, int>>{{"ipc300", 1}, {"tya200", 2}, {"quantrol", 3}, {"dtron300", 4}})
         QVERIFY2(window.devicePage(family, quint8(address)), qPrintable(family));

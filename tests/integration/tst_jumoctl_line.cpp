@@ -26,6 +26,8 @@ class tst_JumoctlLine : public QObject
 private slots:
     void initTestCase();
     void scanFindsEveryFamily();
+    void quickScanFindsLateDevices();
+    void thoroughScanSaysWhatItCosts();
     void dumpJsonContract();
     void writeIsConfirmed();
     void readOnlyWriteSendsNothing();
@@ -115,6 +117,36 @@ void tst_JumoctlLine::scanFindsEveryFamily()
     QVERIFY(lines[2].startsWith("quantrol@3\t"));
     QVERIFY(lines[3].startsWith("dtron300@4\t"));
     QVERIFY2(r.err.contains("4 device(s) found"), qPrintable(r.err));   // progress goes to stderr
+}
+
+void tst_JumoctlLine::quickScanFindsLateDevices()
+{
+    // Every device answers 200 ms late: after the quick probe's timeout, while the next
+    // addresses are probed. Their answers are heard, and taken for nothing else.
+    m_sim.line().setProcessingDelayMs(200);
+    const auto restoreDelay = qScopeGuard([&] { m_sim.line().setProcessingDelayMs(2); });
+    const Run r = run(QStringList{"scan"} + port() + QStringList{"--from", "1", "--to", "30"});
+    QCOMPARE(r.code, 0);
+    const QStringList lines = r.out.split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), 4);
+    for (const char *device : {"ipc300@1\t", "tya200@2\t", "quantrol@3\t", "dtron300@4\t"})
+        QVERIFY2(r.out.contains(device), qPrintable(r.out));
+    QVERIFY2(r.err.contains("quick scan of addresses 1..30: each probed once at "), qPrintable(r.err));
+    static const QRegularExpression summary("4 device\\(s\\) found in [0-9.]+ s; ([0-9]+) address\\(es\\) probed again");
+    const QRegularExpressionMatch m = summary.match(r.err);
+    QVERIFY2(m.hasMatch(), qPrintable(r.err));
+    QVERIFY(m.captured(1).toInt() >= 4);
+}
+
+void tst_JumoctlLine::thoroughScanSaysWhatItCosts()
+{
+    const Run r = run(QStringList{"scan", "--thorough"} + port() + QStringList{"--from", "3", "--to", "6"});
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.out.split('\n', Qt::SkipEmptyParts).size(), 2);
+    QVERIFY2(r.err.contains("thorough scan of addresses 3..6 (as asked): a silent address costs two probes at "),
+             qPrintable(r.err));
+    QVERIFY2(r.err.contains("2 device(s) found in "), qPrintable(r.err));
+    QVERIFY2(!r.err.contains("probed again"), qPrintable(r.err));
 }
 
 void tst_JumoctlLine::dumpJsonContract()

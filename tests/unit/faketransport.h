@@ -34,7 +34,17 @@ public:
     // Requests for which this returns true are executed and answered with a reply that
     // does not fit them (another echo): what RtuTransport calls BadReply.
     std::function<bool(const ModbusRequest &)> misfit;
+    // Extra time a slave takes before it answers (its processing time beyond the usual
+    // few ms). An answer that comes after its request's timeout is a late answer: heard
+    // as a mismatch by the request under way when it arrives, or by nobody.
+    QHash<quint8, int> answerDelayMs;
     QList<Sent> sent;
+    // Late answers that came while a request of the same slave and function was under
+    // way: the real client would take them for that request's answer (wrong data).
+    int lateAnswersTakenAsOwn = 0;
+    // Late answers heard, and those that came while no request was out (lost unheard).
+    int lateAnswersHeard = 0;
+    int lateAnswersUnheard = 0;
 
     bool open(QString *) override
     {
@@ -65,14 +75,26 @@ public:
                                                  result.status == ModbusResult::Status::Exception
                                                          ? LineTiming::exceptionReplyBytes
                                                          : request.replyBytes(),
-                                                 3.0);
+                                                 3.0 + answerDelayMs.value(request.slave));
+        if (!request.isBroadcast() && result.status != ModbusResult::Status::Timeout
+            && duration > request.timeoutMs) {
+            // The answer comes, but after the timeout: whoever is asked then hears it.
+            const qint64 arrives = m_clock->nowMs() + qint64(std::ceil(duration));
+            m_clock->callAt(arrives, this, [this, request] { lateAnswer(request); });
+            result = ModbusResult{};
+            duration = request.timeoutMs;
+        }
         const quint64 id = ++m_sequence;
         m_pending = id;
+        m_pendingRequest = request;
+        m_pendingMismatches = 0;
         m_clock->callAt(m_clock->nowMs() + qint64(std::ceil(duration)), this, [this, id, result] {
             if (m_pending != id)
                 return;
             m_pending = 0;
-            emit finished(result);
+            ModbusResult r = result;
+            r.mismatches += m_pendingMismatches;
+            emit finished(r);
         });
     }
 
@@ -97,6 +119,18 @@ public:
     }
 
 private:
+    void lateAnswer(const ModbusRequest &late)
+    {
+        if (!m_pending) {
+            ++lateAnswersUnheard;
+            return;
+        }
+        if (m_pendingRequest.slave == late.slave && m_pendingRequest.function == late.function)
+            ++lateAnswersTakenAsOwn;
+        ++lateAnswersHeard;
+        ++m_pendingMismatches;
+    }
+
     void abortPending()
     {
         if (!m_pending)
@@ -149,6 +183,8 @@ private:
     bool m_open = false;
     quint64 m_sequence = 0;
     quint64 m_pending = 0;
+    ModbusRequest m_pendingRequest;
+    int m_pendingMismatches = 0;
 };
 
 } // namespace jumo::test

@@ -154,6 +154,16 @@ void tst_RtuTcpTransport::bytesBeforeTheRequestAnswerNothing()
     const std::optional<ModbusResult> result = framer.received(readReply, 12);
     QVERIFY(result);
     QCOMPARE(result->status, ModbusResult::Status::Ok);
+    // But it was heard (a scan learns so of late answers), once.
+    QCOMPARE(result->unframedReceptions, 1);
+    QCOMPARE(framer.frame(loadCurrentRead(), 20), readRequestFrame);
+    QCOMPARE(framer.received(readReply, 21)->unframedReceptions, 0);
+    // Bytes that make no frame during a request that gets no reply: heard too.
+    framer.frame(loadCurrentRead(), 30);
+    QVERIFY(!framer.received(readReply.right(3), 31));
+    QCOMPARE(framer.timedOut(600).unframedReceptions, 1);
+    framer.frame(loadCurrentRead(), 1700);
+    QCOMPARE(framer.timedOut(2300).unframedReceptions, 0);
 }
 
 void tst_RtuTcpTransport::lateReplyHoldsTheNextRequestOfItsDevice()
