@@ -133,8 +133,7 @@ void ScanDialog::updatePlan()
                                 .arg(full));
         return;
     }
-    // A silent address: two probes, each followed by a quiet time as long as its timeout.
-    const int worst = int((qint64(to - from + 1) * 4 * full + 999) / 1000);
+    const int worst = int((m_scanner->thoroughWorstMs(from, to) + 999) / 1000);
     m_plan->setText(tr("Every address is probed at the full timeout of %1 ms: up to %n s.", nullptr, worst).arg(full));
 }
 

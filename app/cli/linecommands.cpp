@@ -595,7 +595,6 @@ std::optional<int> LineCommands::scan(const QStringList &arguments)
 
 QString LineCommands::scanPlan(const DeviceScanner &scanner, const Bus &bus, int from, int to) const
 {
-    const int count = to - from + 1;
     const int full = scanner.fullTimeoutMs();
     if (scanner.effectiveMode(from, to) == DeviceScanner::Mode::Quick)
         return tr("quick scan of addresses %1..%2: each probed once at %3 ms, again at the full %4 ms where "
@@ -604,8 +603,7 @@ QString LineCommands::scanPlan(const DeviceScanner &scanner, const Bus &bus, int
                 .arg(to)
                 .arg(scanner.quickTimeoutMs())
                 .arg(full);
-    // A silent address: two probes, each followed by a quiet time as long as its timeout.
-    const qint64 worst = (qint64(count) * 4 * full + 999) / 1000;
+    const qint64 worst = (scanner.thoroughWorstMs(from, to) + 999) / 1000;
     const QString why = scanner.mode() == DeviceScanner::Mode::Thorough
             ? tr("as asked")
             : bus.lineKind() == LineAddress::Kind::ModbusTcp

@@ -473,8 +473,7 @@ void Bus::dispatch()
         schedule(t);
         return;
     }
-    const bool quick = turn.transaction && turn.transaction->isQuickProbe();
-    turn.request.timeoutMs = quick ? quickProbeTimeoutMs(turn.timing, turn.request.requestBytes(), turn.request.replyBytes())
+    turn.request.timeoutMs = isQuickProbe(turn) ? quickProbeTimeoutMs(turn.timing, turn.request.requestBytes(), turn.request.replyBytes())
                                    : requestTimeoutMs(turn.timing, turn.request.requestBytes(), turn.request.replyBytes());
     if (DeviceStatistics *s = m_store.statistics(turn.device))
         ++s->requests;
@@ -574,11 +573,9 @@ void Bus::recordTraffic(const InFlight &flight, const ModbusResult &result, doub
 
 void Bus::setQuietAfter(const InFlight &flight, const ModbusResult &result, qint64 now)
 {
-    const bool quick = flight.turn.kind == Scheduler::Turn::Kind::Transaction && flight.turn.transaction
-            && flight.turn.transaction->isQuickProbe();
     m_scheduler.setQuietUntil(now + LineTiming::quietAfterMs(m_settings.format, flight.turn.request, result,
                                                              flight.turn.timing, m_settings.minimumResponseTimeMs,
-                                                             quick ? LineTiming::LateAnswer::Harmless
+                                                             isQuickProbe(flight.turn) ? LineTiming::LateAnswer::Harmless
                                                                    : LineTiming::LateAnswer::Guarded));
 }
 

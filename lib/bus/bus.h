@@ -130,7 +130,8 @@ public:
     // timeout. A late answer shows as a stray reply (strayReplies()).
     int quickProbe(quint8 slave, quint16 address, quint16 count, const ProtocolInfo &timing);
     // Replies heard that fitted no request (a bad CRC, another address's answer, a reply of
-    // the wrong size) since the bus was made, on any request: a scan hears late answers so.
+    // the wrong size, bytes that made no frame) since the bus was made, on any request: a
+    // scan hears late answers so.
     quint64 strayReplies() const { return m_strayReplies; }
     // Reads these entries of a device now, in the job lane (a backup, a report): the
     // values go to the store as polls do; entriesRead follows with those that failed.
@@ -186,6 +187,10 @@ private:
     void refreshSettingsAfterWrite(const Scheduler::Turn &turn);
     void recordTraffic(const InFlight &flight, const ModbusResult &result, double roundTripMs);
     void setQuietAfter(const InFlight &flight, const ModbusResult &result, qint64 now);
+    static bool isQuickProbe(const Scheduler::Turn &turn)
+    {
+        return turn.kind == Scheduler::Turn::Kind::Transaction && turn.transaction && turn.transaction->isQuickProbe();
+    }
     void invalidateAll(ReadError reason);
     void abortQueued(const QString &reason);
     void setOnline(DeviceId id, bool online);

@@ -64,12 +64,17 @@ int DeviceScanner::quickTimeoutMs() const
     return m_bus.quickProbeTimeoutMs(m_slowest, LineTiming::readRequestBytes, LineTiming::readReplyBytes(probeWords()));
 }
 
+qint64 DeviceScanner::thoroughWorstMs(int firstAddress, int lastAddress) const
+{
+    return qint64(lastAddress - firstAddress + 1) * 4 * fullTimeoutMs();
+}
+
 qint64 DeviceScanner::remainingMs() const
 {
     if (!m_running)
         return 0;
     const qint64 quickEach = m_quickDone > 0 ? m_quickCostMs / m_quickDone : quickTimeoutMs();
-    const qint64 thoroughEach = m_thoroughDone > 0 ? m_thoroughCostMs / m_thoroughDone : 4 * qint64(fullTimeoutMs());
+    const qint64 thoroughEach = m_thoroughDone > 0 ? m_thoroughCostMs / m_thoroughDone : thoroughWorstMs(1, 1);
     const qint64 quickLeft = m_quickPass ? m_last - m_address : 0;
     return quickLeft * quickEach + qint64(m_thorough.size()) * thoroughEach;
 }

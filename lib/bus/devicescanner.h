@@ -43,6 +43,9 @@ public:
     // A silent address's probe: at the full timeout, and at a quick scan's.
     int fullTimeoutMs() const;
     int quickTimeoutMs() const;
+    // What a thorough scan of these addresses costs at most: each silent address two
+    // probes at the full timeout, each followed by as long a quiet time.
+    qint64 thoroughWorstMs(int firstAddress, int lastAddress) const;
     // About how long the rest of the scan takes, from what it cost so far.
     qint64 remainingMs() const;
     // Addresses a quick scan probed again thoroughly because something was heard.

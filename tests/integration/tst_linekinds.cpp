@@ -2,7 +2,7 @@
 // serial device server (rtu+tcp://), each against our simulator and against the
 // independent libmodbus peer. Reads, writes verified by read-back, the gateway's own
 // exceptions, a gateway that goes away and comes back, stray bytes and late replies on a
-// device server, broadcasts, jumoctl reading from each kind and over IPv6, and a gateway
+// device server, broadcasts, jumoctl reading and scanning each kind and over IPv6, and a gateway
 // that lies: another unit's reply, changed ids, junk and wrong lengths.
 #include "bus/bus.h"
 #include "bus/linetiming.h"
@@ -573,6 +573,16 @@ void tst_LineKinds::jumoctlReadsEachKind()
     const Run two = run(QStringList{"read"} + line + QStringList{"tya200@2", "setpoint"});
     QVERIFY2(two.code == 0, qPrintable(two.err));
     QVERIFY2(two.out.contains("setpoint = "), qPrintable(two.out));
+    // A scan: quick behind a device server, thorough through a gateway (which answers each
+    // request itself, at its own timeout), and it says which before it starts.
+    const Run scan = run(QStringList{"scan"} + line + QStringList{"--from", "1", "--to", "12"});
+    QVERIFY2(scan.code == 0, qPrintable(scan.err));
+    QVERIFY2(scan.out.contains("ipc300@1\t") && scan.out.contains("tya200@2\t"), qPrintable(scan.out));
+    QCOMPARE(scan.out.split('\n', Qt::SkipEmptyParts).size(), 2);
+    const QString plan = kind == "tcp" ? "thorough scan of addresses 1..12 (a Modbus TCP gateway answers every request "
+                                         "itself, at its own timeout)"
+                                       : "quick scan of addresses 1..12: each probed once at ";
+    QVERIFY2(scan.err.contains(plan), qPrintable(scan.err));
 }
 
 void tst_LineKinds::simulatedGatewayEchoesTransactionIds()
