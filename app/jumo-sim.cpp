@@ -176,6 +176,12 @@ int main(int argc, char *argv[])
         out << QCoreApplication::translate("main", "connect to %1").arg(url) << Qt::endl;
     } else if (parser.isSet(QStringLiteral("pty"))) {
         QObject::connect(&pty, &jumo::PtyPair::ready, &app, [&] {
+            // The devices answer only a client at the line's own settings, as real ones do.
+            QString error;
+            if (!line.watchClientEnd(pty.masterEnd(), &error))
+                err << QCoreApplication::translate("main", "warning: the devices answer at any settings: cannot watch %1: %2")
+                                .arg(pty.masterEnd(), error)
+                    << Qt::endl;
             serve(pty.deviceEnd());
             out << QCoreApplication::translate("main", "connect to %1").arg(pty.masterEnd()) << Qt::endl;
         });

@@ -406,6 +406,14 @@ Handbuch %6: &quot;%7&quot;</translation>
     </message>
 </context>
 <context>
+    <name>jumo::ClientEnd</name>
+    <message>
+        <location filename="../lib/sim/clientend.cpp" line="+54"/>
+        <source>not a terminal</source>
+        <translation>kein Terminal</translation>
+    </message>
+</context>
+<context>
     <name>jumo::ClientTransport</name>
     <message>
         <location filename="../lib/bus/clienttransport.cpp" line="+45"/>
@@ -431,7 +439,7 @@ Handbuch %6: &quot;%7&quot;</translation>
 <context>
     <name>jumo::CommandLineTool</name>
     <message>
-        <location filename="../app/cli/commandlinetool.cpp" line="+26"/>
+        <location filename="../app/cli/commandlinetool.cpp" line="+27"/>
         <source>Usage: jumoctl COMMAND [options] [arguments]
 
 Commissioning and monitoring of JUMO power and process controllers over Modbus RTU.
@@ -444,6 +452,9 @@ Commands on the register maps:
 
 The serial ports of this machine:
   ports [--json]           list them: stable by-id names, adapters, access
+  find --port PATH [--from A --to B] [--baud LIST] [--format LIST]
+                           find devices whose baud rate, format and address
+                           nobody knows: every setting the families support
 
 Stations of several lines:
   station FILE [--check|--json]
@@ -492,6 +503,9 @@ Befehle auf den Registertabellen:
 
 Die seriellen Schnittstellen dieses Rechners:
   ports [--json]           auflisten: stabile by-id-Namen, Adapter, Zugriff
+  find --port PATH [--from A --to B] [--baud LIST] [--format LIST]
+                           Geräte suchen, deren Baudrate, Format und Adresse
+                           niemand kennt: jede Einstellung, die die Familien kennen
 
 Stationen mit mehreren Leitungen:
   station FILE [--check|--json]
@@ -530,7 +544,7 @@ Leitungen auf stderr sagt, was er erledigt hat.
 </translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+75"/>
         <source>jumoctl: the output could not be written: %1</source>
         <translation>jumoctl: die Ausgabe konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -545,7 +559,7 @@ Leitungen auf stderr sagt, was er erledigt hat.
         <translation>Warnung: Map-Datei abgelehnt: %1</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+22"/>
         <source>jumoctl: unknown command &apos;%1&apos;</source>
         <translation>jumoctl: unbekannter Befehl &apos;%1&apos;</translation>
     </message>
@@ -1329,7 +1343,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>der Simulator kann %1 nicht öffnen: %2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>no temporary folder for the demo line</source>
         <translation>kein temporärer Ordner für die Demo-Leitung</translation>
     </message>
@@ -1734,9 +1748,339 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
     </message>
 </context>
 <context>
+    <name>jumo::FindCommand</name>
+    <message>
+        <location filename="../app/cli/findcommand.cpp" line="+61"/>
+        <source>Finds devices on a serial line whose settings nobody knows: tries every baud rate and data format the families support, first address 255 (where every IPC 300 and TYA 200 answers whatever its own address), then a quick scan of the address range, and says what answers where.</source>
+        <translation>Sucht Geräte an einer seriellen Leitung, deren Einstellungen niemand kennt: probiert jede Baudrate und jedes Datenformat, das die Familien kennen, zuerst Adresse 255 (dort antwortet jeder IPC 300 und TYA 200, welche Adresse er auch hat), dann einen schnellen Scan des Adressbereichs, und sagt, was wo antwortet.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The serial port (its /dev/serial/by-id name, which &apos;jumoctl ports&apos; lists, or /dev/ttyUSB0, say).</source>
+        <translation>Die serielle Schnittstelle (ihr /dev/serial/by-id-Name, den &apos;jumoctl ports&apos; auflistet, oder etwa /dev/ttyUSB0).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>path</source>
+        <translation>Pfad</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Try only these baud rates (a list: 9600,19200; default every rate a family supports).</source>
+        <translation>Nur diese Baudraten probieren (eine Liste: 9600,19200; Standard: jede Rate, die eine Familie kennt).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rates</source>
+        <translation>Raten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Try only these data formats (a list: 8N1,8E1; default every format a family supports).</source>
+        <translation>Nur diese Datenformate probieren (eine Liste: 8N1,8E1; Standard: jedes Format, das eine Familie kennt).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>formats</source>
+        <translation>Formate</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>First address of the range (default 1).</source>
+        <translation>Erste Adresse des Bereichs (Standard 1).</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+4"/>
+        <source>address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <location line="-2"/>
+        <source>Last address of the range (default 31, the most an RS-485 line carries).</source>
+        <translation>Letzte Adresse des Bereichs (Standard 31, so viele trägt eine RS-485-Leitung höchstens).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Minimum response time the devices may be set to, in ms (default 0).</source>
+        <translation>Mindestantwortzeit, auf die die Geräte eingestellt sein können, in ms (Standard 0).</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
+        <translation>Qts Modbus-Meldungen (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr zeigen.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>give the serial port: --port PATH (&apos;jumoctl ports&apos; lists them)</source>
+        <translation>die serielle Schnittstelle angeben: --port PATH (&apos;jumoctl ports&apos; listet sie auf)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>find tries the baud rates and formats of a serial port; behind a gateway or a device server they are its own settings: set them there, then use &apos;jumoctl scan --port %1&apos;</source>
+        <translation>find probiert die Baudraten und Formate einer seriellen Schnittstelle; hinter einem Gateway oder Geräteserver sind das dessen eigene Einstellungen: dort einstellen, dann &apos;jumoctl scan --port %1&apos; verwenden</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>--from and --to must be addresses 1..255, from &lt;= to</source>
+        <translation>--from und --to müssen Adressen 1..255 sein, from &lt;= to</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>--baud takes rates the families know: 4800, 9600, 19200, 38400</source>
+        <translation>--baud nimmt Raten, die die Familien kennen: 4800, 9600, 19200, 38400</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>--format takes 8N1, 8E1, 8O1 and 8N2, not %1</source>
+        <translation>--format nimmt 8N1, 8E1, 8O1 und 8N2, nicht %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>--min-response must be 0..500 ms</source>
+        <translation>--min-response muss 0..500 ms sein</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>no family supports these settings: %1 %2</source>
+        <translation>keine Familie kennt diese Einstellungen: %1 %2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>address 255 at %1 (%2 of %3)</source>
+        <translation>Adresse 255 bei %1 (%2 von %3)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (%2 of %3)</source>
+        <translation>%1 (%2 von %3)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%1: address %2, about %n s left</source>
+        <translation>
+            <numerusform>%1: Adresse %2, noch etwa %n s</numerusform>
+            <numerusform>%1: Adresse %2, noch etwa %n s</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+14"/>
+        <source>searching %n setting(s) (%1 baud; %2) for addresses %3..%4 and 255: about %5 s where nothing answers late</source>
+        <translation>
+            <numerusform>suche an %n Einstellung (%1 Baud; %2) nach den Adressen %3..%4 und 255: etwa %5 s, wo nichts spät antwortet</numerusform>
+            <numerusform>suche an %n Einstellungen (%1 Baud; %2) nach den Adressen %3..%4 und 255: etwa %5 s, wo nichts spät antwortet</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>trying %1</source>
+        <translation>probiere %1</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>at %1: address %2 answers, but matches no known family</source>
+        <translation>bei %1: Adresse %2 antwortet, passt aber zu keiner bekannten Familie</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>at %1: %2 at address %3 (%4)</source>
+        <translation>bei %1: %2 an Adresse %3 (%4)</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>at %1: a %2 answers at address %3, as every one does whatever its own address, which is outside %4..%5 (--from and --to look further)</source>
+        <translation>bei %1: ein %2 antwortet an Adresse %3, wie jeder, welche Adresse er auch hat; seine eigene liegt außerhalb von %4..%5 (--from und --to suchen weiter)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1 at address %2 answers at %3 baud in %4: the device or the adapter takes one for the other (a pseudo-terminal does not carry even parity; many UARTs take 8N2 for 8N1); its own is in its interface settings</source>
+        <translation>%1 an Adresse %2 antwortet bei %3 Baud in %4: das Gerät oder der Adapter hält das eine für das andere (ein Pseudo-Terminal überträgt keine gerade Parität; viele UARTs nehmen 8N2 für 8N1); seine eigene Einstellung steht in seinen Schnittstelleneinstellungen</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>find: %1</source>
+        <translation>find: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>%n device(s) found before the search stopped</source>
+        <translation>
+            <numerusform>%n Gerät gefunden, bevor die Suche endete</numerusform>
+            <numerusform>%n Geräte gefunden, bevor die Suche endete</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n device(s) found in %1 s</source>
+        <translation>
+            <numerusform>%n Gerät gefunden in %1 s</numerusform>
+            <numerusform>%n Geräte gefunden in %1 s</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the devices answer at different baud rates: a line needs one, so set them alike</source>
+        <translation>die Geräte antworten bei verschiedenen Baudraten: eine Leitung braucht eine, also alle gleich einstellen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the line&apos;s settings where the most answered: --baud %1 --format %2</source>
+        <translation>die Einstellungen der Leitung, bei denen die meisten antworteten: --baud %1 --format %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>nothing answered: check the wiring (A/B swapped?), the termination and the adapter, or a minimum response time set in the devices (--min-response)</source>
+        <translation>nichts hat geantwortet: Verdrahtung (A/B vertauscht?), Abschluss und Adapter prüfen, oder eine in den Geräten eingestellte Mindestantwortzeit (--min-response)</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::FindDialog</name>
+    <message>
+        <location filename="../ui/finddialog.cpp" line="+31"/>
+        <source>&amp;Search</source>
+        <translation>&amp;Suchen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel search</source>
+        <translation>Suche abbrechen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Find devices on an unknown line</source>
+        <translation>Geräte an einer unbekannten Leitung finden</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>An RS-485 line carries at most 31 devices; they are most often given the first addresses.</source>
+        <translation>Eine RS-485-Leitung trägt höchstens 31 Geräte; meist bekommen sie die ersten Adressen.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>not started</source>
+        <translation>nicht gestartet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Answers at</source>
+        <translation>Antwortet bei</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>(nothing answered yet)</source>
+        <translation>(noch keine Antwort)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Addresses</source>
+        <translation>Adressen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>to</source>
+        <translation>bis</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Port: %1. Every baud rate and data format the device families support is tried, address 255 first (every IPC 300 and TYA 200 answers there), then a quick scan of the addresses.</source>
+        <translation>Schnittstelle: %1. Jede Baudrate und jedes Datenformat, das die Gerätefamilien kennen, wird probiert, zuerst Adresse 255 (dort antwortet jeder IPC 300 und TYA 200), dann ein schneller Scan der Adressen.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Line settings to use:</source>
+        <translation>Einstellungen für die Leitung:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Use these settings and add the checked devices</source>
+        <translation>Diese Einstellungen &amp;übernehmen und die markierten Geräte hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>address 255 at %1</source>
+        <translation>Adresse 255 bei %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+6"/>
+        <source>%1, address %2: about %n s left</source>
+        <translation>
+            <numerusform>%1, Adresse %2: noch etwa %n s</numerusform>
+            <numerusform>%1, Adresse %2: noch etwa %n s</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1 baud %2</source>
+        <translation>%1 Baud %2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>%n setting(s) to try: about %1 s where nothing answers late.</source>
+        <translation>
+            <numerusform>%n Einstellung zu probieren: etwa %1 s, wo nichts spät antwortet.</numerusform>
+            <numerusform>%n Einstellungen zu probieren: etwa %1 s, wo nichts spät antwortet.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>answers, but matches no known family</source>
+        <translation>antwortet, passt aber zu keiner bekannten Familie</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1 answers here, as every one does; its own address is outside %2..%3</source>
+        <translation>%1 antwortet hier, wie jeder; seine eigene Adresse liegt außerhalb von %2..%3</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>cancelled after %1 s</source>
+        <translation>abgebrochen nach %1 s</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>stopped: %1</source>
+        <translation>beendet: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>nothing answered (in %1 s): check the wiring, the termination and the adapter</source>
+        <translation>nichts hat geantwortet (in %1 s): Verdrahtung, Abschluss und Adapter prüfen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>done in %1 s</source>
+        <translation>fertig in %1 s</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 at address %2</source>
+        <translation>%1 an Adresse %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 answered at more than one data format of a baud rate: the device or the adapter takes one for the other (a pseudo-terminal does not carry even parity; many UARTs take 8N2 for 8N1). The device&apos;s own setting is in its interface menu.</source>
+        <translation>%1 antwortete bei mehr als einem Datenformat einer Baudrate: das Gerät oder der Adapter hält das eine für das andere (ein Pseudo-Terminal überträgt keine gerade Parität; viele UARTs nehmen 8N2 für 8N1). Die eigene Einstellung des Geräts steht in seinem Schnittstellenmenü.</translation>
+    </message>
+</context>
+<context>
     <name>jumo::HistoryCommands</name>
     <message>
-        <location filename="../app/cli/historycommands.cpp" line="+119"/>
+        <location filename="../app/cli/historycommands.cpp" line="+115"/>
         <source>Prints the recorded values of a device&apos;s entries from FROM to TO with their state and validity: every sample kept, and one-minute rows (minimum, mean, maximum) where the samples are thinned out. Reads the station&apos;s history (--station FILE: its file in the log folder) or the database given by --db; no line is opened.</source>
         <translation>Gibt die aufgezeichneten Werte der Einträge eines Geräts von FROM bis TO mit Zustand und Gültigkeit aus: jeden aufbewahrten Messwert und Minutenzeilen (Minimum, Mittelwert, Maximum), wo die Messwerte ausgedünnt sind. Liest die Historie der Station (--station FILE: ihre Datei im Protokollordner) oder die mit --db angegebene Datenbank; es wird keine Leitung geöffnet.</translation>
     </message>
@@ -1801,7 +2145,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>jumoctl history: %1</translation>
     </message>
     <message>
-        <location line="-116"/>
+        <location line="-112"/>
         <source>&apos;%1&apos; is no time</source>
         <translation>&apos;%1&apos; ist keine Zeit</translation>
     </message>
@@ -1816,27 +2160,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>%1 gibt es in Ortszeit (%2) zweimal, die Uhren werden zurückgestellt: genommen wird die erste, %3; die zweite ist %4</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>terminated: %1</source>
-        <translation>beendet: %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>hangup: %1</source>
-        <translation>Verbindung beendet (SIGHUP): %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>output closed: %1</source>
-        <translation>Ausgabe geschlossen: %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>interrupted: %1</source>
-        <translation>abgebrochen: %1</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location line="+26"/>
         <source>Start: an ISO 8601 time (local unless it names its offset), &apos;now&apos;, or a time before now such as -90s, -15m, -2h, -7d. Default: -1h. A local time the clocks skip is refused; of one they show twice, the first is taken.</source>
         <translation>Beginn: eine Zeit nach ISO 8601 (Ortszeit, wenn sie keinen Zeitzonenversatz nennt), &apos;now&apos; oder eine Zeit vor jetzt wie -90s, -15m, -2h, -7d. Vorgabe: -1h. Eine Ortszeit, die die Uhren überspringen, wird abgelehnt; von einer, die sie zweimal zeigen, wird die erste genommen.</translation>
     </message>
@@ -2270,7 +2594,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+112"/>
+        <location filename="../app/cli/linecommands.cpp" line="+113"/>
         <source>the audit log did not take a record: %1</source>
         <translation>das Audit-Protokoll hat einen Eintrag nicht aufgenommen: %1</translation>
     </message>
@@ -2312,12 +2636,12 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
     <message>
         <location line="+0"/>
         <location line="+2"/>
-        <location line="+814"/>
+        <location line="+808"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-814"/>
+        <location line="-808"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
@@ -2328,12 +2652,12 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
     </message>
     <message>
         <location line="+0"/>
-        <location line="+814"/>
+        <location line="+808"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-811"/>
+        <location line="-805"/>
         <source>Never write to any line (control-room mode; the system configuration can set it for everyone, a station file for one line).</source>
         <translation>Auf keine Leitung schreiben (Leitwarten-Modus; die Systemkonfiguration kann ihn für alle festlegen, eine Stationsdatei für eine Leitung).</translation>
     </message>
@@ -2464,33 +2788,13 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>kein Bericht geschrieben</translation>
     </message>
     <message>
-        <location line="+21"/>
-        <source>terminated: %1</source>
-        <translation>beendet: %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>hangup: %1</source>
-        <translation>Verbindung beendet (SIGHUP): %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>output closed: %1</source>
-        <translation>Ausgabe geschlossen: %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>interrupted: %1</source>
-        <translation>abgebrochen: %1</translation>
-    </message>
-    <message>
-        <location line="+27"/>
+        <location line="+47"/>
         <source>First address (default 1).</source>
         <translation>Erste Adresse (Standard 1).</translation>
     </message>
     <message>
-        <location line="-378"/>
-        <location line="+378"/>
+        <location line="-374"/>
+        <location line="+374"/>
         <location line="+1"/>
         <source>address</source>
         <translation>Adresse</translation>
@@ -2529,12 +2833,12 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>Adresse %1 antwortet, passt aber zu keiner bekannten Gerätefamilie</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
         <source>quick scan of addresses %1..%2: each probed once at %3 ms, again at the full %4 ms where anything was heard (--thorough probes every address at the full timeout)</source>
         <translation>schnelle Suche der Adressen %1..%2: jede einmal mit %3 ms abgefragt, erneut mit den vollen %4 ms, wo etwas gehört wurde (--thorough fragt jede Adresse mit der vollen Zeitüberschreitung ab)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>as asked</source>
         <translation>wie verlangt</translation>
     </message>
@@ -2734,7 +3038,7 @@ das nicht antwortet; 4 eine andere Familie an der Adresse.</translation>
         <translation>Name</translation>
     </message>
     <message>
-        <location line="-1248"/>
+        <location line="-1242"/>
         <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
         <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
     </message>
@@ -2754,12 +3058,12 @@ das nicht antwortet; 4 eine andere Familie an der Adresse.</translation>
         <translation>Baudrate: 4800, 9600, 19200 oder 38400 (Standard 9600); hinter einem Gateway die seiner seriellen Seite (sie bestimmt das Zeitverhalten).</translation>
     </message>
     <message>
-        <location line="+365"/>
+        <location line="+361"/>
         <source>Finds devices on the line and names their family; with several lines (--line, --station), on every line at once.</source>
         <translation>Sucht Geräte an der Leitung und benennt ihre Gerätefamilie; bei mehreren Leitungen (--line, --station) an allen Leitungen gleichzeitig.</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location line="+99"/>
         <source>scanning %1</source>
         <translation>Suche %1</translation>
     </message>
@@ -3185,7 +3489,7 @@ andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal
 <context>
     <name>jumo::MainWindow</name>
     <message>
-        <location filename="../ui/mainwindow.cpp" line="+90"/>
+        <location filename="../ui/mainwindow.cpp" line="+91"/>
         <location line="+4"/>
         <source>Time</source>
         <translation>Zeit</translation>
@@ -3258,12 +3562,12 @@ andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal
     </message>
     <message>
         <location line="+0"/>
-        <location line="+1148"/>
+        <location line="+1198"/>
         <source>JUMO HMI</source>
         <translation>JUMO HMI</translation>
     </message>
     <message>
-        <location line="-1146"/>
+        <location line="-1196"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
@@ -3314,6 +3618,11 @@ andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal
     </message>
     <message>
         <location line="+3"/>
+        <source>&amp;Find on an unknown line...</source>
+        <translation>An unbekannter Leitung &amp;finden...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>&amp;Remove the shown device...</source>
         <translation>Angezeigtes Gerät &amp;entfernen...</translation>
     </message>
@@ -3405,7 +3714,7 @@ andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location line="-650"/>
+        <location line="-652"/>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
@@ -3445,7 +3754,7 @@ andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal
         <translation>NUR LESEN</translation>
     </message>
     <message>
-        <location line="+315"/>
+        <location line="+317"/>
         <source>Address %1 on line %2 is taken by %3: a line has one device per address.</source>
         <translation>Adresse %1 an Leitung %2 ist durch %3 belegt: eine Leitung hat ein Gerät je Adresse.</translation>
     </message>
@@ -3576,17 +3885,44 @@ andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal
         <translation>Leitung %1 durchsuchen</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+18"/>
+        <location line="+4"/>
+        <location line="+8"/>
+        <source>Find devices</source>
+        <translation>Geräte finden</translation>
+    </message>
+    <message>
+        <location line="-12"/>
+        <source>Choose the line&apos;s serial port first.</source>
+        <translation>Zuerst die serielle Schnittstelle der Leitung wählen.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Line %1 is reached through a gateway or a device server, whose serial settings are its own: set them there, then scan the line.</source>
+        <translation>Leitung %1 wird über ein Gateway oder einen Geräteserver erreicht, dessen serielle Einstellungen seine eigenen sind: dort einstellen, dann die Leitung scannen.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The search needs the port of line %1 for itself and tries other settings on it: disconnect the line now? Its devices are not polled while the search runs.</source>
+        <translation>Die Suche braucht die Schnittstelle von Leitung %1 für sich und probiert andere Einstellungen darauf: die Leitung jetzt trennen? Solange die Suche läuft, werden ihre Geräte nicht abgefragt.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Find devices on line %1</source>
+        <translation>Geräte an Leitung %1 finden</translation>
+    </message>
+    <message>
+        <location line="+97"/>
         <source>Data logging of %1 stopped: %2</source>
         <translation>Datenaufzeichnung von %1 angehalten: %2</translation>
     </message>
     <message>
-        <location line="-688"/>
+        <location line="-736"/>
         <source>address %1: %2</source>
         <translation>Adresse %1: %2</translation>
     </message>
     <message>
-        <location line="-324"/>
+        <location line="-326"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -3606,7 +3942,7 @@ andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal
         <translation>Leitung durch&amp;suchen...</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>&amp;Parameters: back up, compare, restore...</source>
         <translation>&amp;Parameter: sichern, vergleichen, wiederherstellen...</translation>
     </message>
@@ -3639,7 +3975,7 @@ andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal
         <translation>Zuerst die Seite eines Geräts öffnen.</translation>
     </message>
     <message numerus="yes">
-        <location line="-116"/>
+        <location line="-118"/>
         <source>Not logged (%n record(s) so far): %1</source>
         <translation>
             <numerusform>Nicht protokolliert (bisher %n Eintrag): %1</numerusform>
@@ -3647,7 +3983,7 @@ andere Familie und es wurde nie bestätigt; 129, 130, 141, 143 nach einem Signal
         </translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+138"/>
         <source>Commissioning report</source>
         <translation>Inbetriebnahmebericht</translation>
     </message>
@@ -3767,7 +4103,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Zuerst mit einer Leitung verbinden.</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+126"/>
         <source>Commissioning report of %1</source>
         <translation>Inbetriebnahmebericht von %1</translation>
     </message>
@@ -6537,7 +6873,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::RtuStreamFramer</name>
     <message>
-        <location filename="../lib/bus/rtustreamframer.cpp" line="+53"/>
+        <location filename="../lib/bus/rtustreamframer.cpp" line="+64"/>
         <source>no reply within %1 ms</source>
         <translation>keine Antwort innerhalb von %1 ms</translation>
     </message>
@@ -6579,7 +6915,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>die Schnittstelle %1</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+128"/>
         <source>reply with function code %1 to a request with %2</source>
         <translation>Antwort mit Funktionscode %1 auf eine Anfrage mit %2</translation>
     </message>
@@ -6655,7 +6991,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Unbekanntes Gerät an Adresse %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
@@ -6678,7 +7014,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Jede Adresse wird einmal mit %1 ms abgefragt, erneut mit den vollen %2 ms, wo etwas gehört wurde.</translation>
     </message>
     <message numerus="yes">
-        <location line="+7"/>
+        <location line="+6"/>
         <source>Every address is probed at the full timeout of %1 ms: up to %n s.</source>
         <translation>
             <numerusform>Jede Adresse wird mit der vollen Zeitüberschreitung von %1 ms abgefragt: bis zu %n s.</numerusform>
@@ -6686,7 +7022,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="-41"/>
+        <location line="-40"/>
         <source>From address</source>
         <translation>Von Adresse</translation>
     </message>
@@ -6712,6 +7048,29 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <location line="+3"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>jumo::Signals</name>
+    <message>
+        <location filename="../app/cli/quitonsignal.cpp" line="+74"/>
+        <source>terminated: %1</source>
+        <translation>beendet: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>hangup: %1</source>
+        <translation>Verbindung beendet (SIGHUP): %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>output closed: %1</source>
+        <translation>Ausgabe geschlossen: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: %1</source>
+        <translation>abgebrochen: %1</translation>
     </message>
 </context>
 <context>
@@ -11166,7 +11525,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/jumo-hmi.cpp" line="+134"/>
+        <location filename="../app/jumo-hmi.cpp" line="+135"/>
         <source>JUMO commissioning and monitoring HMI.</source>
         <translation>JUMO-HMI für Inbetriebnahme und Überwachung.</translation>
     </message>
@@ -11286,7 +11645,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>Auf stderr ausgeben, wann der erste Live-Wert eintrifft.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
+        <source>For benchmarks: print on stderr every second how many faceplates are on screen and how old the values they show are.</source>
+        <translation>Für Benchmarks: jede Sekunde auf stderr ausgeben, wie viele Faceplates zu sehen sind und wie alt die gezeigten Werte sind.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
         <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
     </message>
@@ -11446,9 +11810,14 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message>
         <location line="+12"/>
-        <location line="+4"/>
+        <location line="+10"/>
         <source>connect to %1</source>
         <translation>verbinden mit %1</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>warning: the devices answer at any settings: cannot watch %1: %2</source>
+        <translation>Warnung: die Geräte antworten bei jeder Einstellung: %1 kann nicht beobachtet werden: %2</translation>
     </message>
 </context>
 </TS>

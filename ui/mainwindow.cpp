@@ -28,6 +28,7 @@
 #include "overviewpage.h"
 #include "parametersdialog.h"
 #include "scandialog.h"
+#include "finddialog.h"
 #include "theme.h"
 #include "trafficview.h"
 #include "jumoversion.h"
@@ -285,6 +286,8 @@ void MainWindow::buildMenus()
     devices->addAction(tr("&Add a device..."), QKeySequence::New, this, &MainWindow::addDeviceInteractively);
     devices->addAction(tr("&Scan the line..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), this,
                        &MainWindow::openScanDialog);
+    devices->addAction(tr("&Find on an unknown line..."), this, &MainWindow::openFindDialog)
+            ->setObjectName(QStringLiteral("findDevices"));
     devices->addAction(tr("&Remove the shown device..."), QKeySequence(Qt::CTRL | Qt::Key_Delete), this,
                        &MainWindow::removeCurrentDeviceInteractively);
     devices->addSeparator();
@@ -1191,6 +1194,54 @@ void MainWindow::openScanDialog()
             return;
         for (const auto &[map, address] : dialog->chosen())
             addDevice(line, map, address);
+    });
+    dialog->show();
+}
+
+void MainWindow::openFindDialog()
+{
+    StationLine *line = m_currentLine;
+    if (!line)
+        return;
+    takeSettingsFromBar();
+    if (line->settings().portName.isEmpty()) {
+        QMessageBox::information(this, tr("Find devices"), tr("Choose the line's serial port first."));
+        return;
+    }
+    if (line->bus()->lineKind() != LineAddress::Kind::Serial) {
+        QMessageBox::information(this, tr("Find devices"),
+                                 tr("Line %1 is reached through a gateway or a device server, whose serial settings "
+                                    "are its own: set them there, then scan the line.")
+                                         .arg(line->name()));
+        return;
+    }
+    if (line->state() != LineState::Disconnected) {
+        const auto answer = QMessageBox::question(
+                this, tr("Find devices"),
+                tr("The search needs the port of line %1 for itself and tries other settings on it: disconnect the "
+                   "line now? Its devices are not polled while the search runs.")
+                        .arg(line->name()));
+        if (answer != QMessageBox::Yes)
+            return;
+        line->close();
+    }
+    auto *dialog = new FindDialog(line->settings(), m_registry, this);
+    dialog->setObjectName(QStringLiteral("findDialog"));
+    if (m_lines.size() > 1)
+        dialog->setWindowTitle(tr("Find devices on line %1").arg(line->name()));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog, line = QPointer<StationLine>(line)] {
+        const std::optional<LineFormat> format = dialog->chosenFormat();
+        if (!line || !format || line->state() != LineState::Disconnected)
+            return;
+        BusSettings s = line->settings();
+        s.format = *format;
+        line->setSettings(s);
+        if (line == m_currentLine)
+            showLineInBar();
+        for (const auto &[map, address] : dialog->chosen())
+            addDevice(line, map, address);
+        connectLine(line);
     });
     dialog->show();
 }

@@ -112,6 +112,7 @@ public:
     void showDevice(const QString &family, quint8 address);
     void showOverview();
     void openScanDialog();
+    void openFindDialog();
     // The commissioning report of a device, with the writes since this window opened.
     bool writeReport(const QString &family, quint8 address, const QString &path, const ReportTitle &title,
                      QString *error);

@@ -1,6 +1,7 @@
 #include "commandlinetool.h"
 
 #include "exitcodes.h"
+#include "findcommand.h"
 #include "historycommands.h"
 #include "protocol/familyregistry.h"
 #include "linecommands.h"
@@ -35,6 +36,9 @@ QString CommandLineTool::usage() const
               "\n"
               "The serial ports of this machine:\n"
               "  ports [--json]           list them: stable by-id names, adapters, access\n"
+              "  find --port PATH [--from A --to B] [--baud LIST] [--format LIST]\n"
+              "                           find devices whose baud rate, format and address\n"
+              "                           nobody knows: every setting the families support\n"
               "\n"
               "Stations of several lines:\n"
               "  station FILE [--check|--json]\n"
@@ -76,6 +80,8 @@ void CommandLineTool::interrupt(int signal)
 {
     if (m_lineCommands)
         m_lineCommands->interrupt(signal);
+    else if (m_find)
+        m_find->interrupt(signal);
     else
         emit finished(128 + signal);
 }
@@ -140,6 +146,11 @@ std::optional<int> CommandLineTool::runCommand(const QStringList &arguments)
         return StationCommands(registry, m_out, m_err).station(rest);
     if (command == QLatin1String("history"))
         return HistoryCommands(registry, m_out, m_err).history(rest);
+    if (command == QLatin1String("find")) {
+        m_find = std::make_unique<FindCommand>(registry, m_out, m_err);
+        connect(m_find.get(), &FindCommand::finished, this, [this](int code) { emit finished(checkOutput(code)); });
+        return m_find->run(rest);
+    }
     if (LineCommands::commands().contains(command)) {
         m_lineCommands = std::make_unique<LineCommands>(registry, m_out, m_err);
         connect(m_lineCommands.get(), &LineCommands::finished, this, [this](int code) { emit finished(checkOutput(code)); });

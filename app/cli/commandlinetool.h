@@ -13,6 +13,7 @@
 namespace jumo {
 
 class FamilyRegistry;
+class FindCommand;
 class LineCommands;
 
 class CommandLineTool : public QObject
@@ -43,6 +44,7 @@ private:
     QTextStream &m_err;
     std::unique_ptr<FamilyRegistry> m_registry;
     std::unique_ptr<LineCommands> m_lineCommands;
+    std::unique_ptr<FindCommand> m_find;
 };
 
 } // namespace jumo

@@ -106,11 +106,7 @@ std::optional<QDateTime> HistoryCommands::parseTime(const QString &text, const Q
 
 QString HistoryCommands::signalSummary(int signal, const QString &done)
 {
-    const QString summary = signal == SIGTERM  ? tr("terminated: %1")
-            : signal == SIGHUP                 ? tr("hangup: %1")
-            : signal == SIGPIPE                ? tr("output closed: %1")
-                                               : tr("interrupted: %1");
-    return tr("jumoctl history: %1").arg(summary.arg(done));
+    return tr("jumoctl history: %1").arg(jumo::signalSummary(signal, done));
 }
 
 int HistoryCommands::history(const QStringList &arguments)

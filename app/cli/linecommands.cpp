@@ -8,6 +8,7 @@
 #include "broadcastgate.h"
 #include "commandparser.h"
 #include "prompt.h"
+#include "quitonsignal.h"
 #include "exitcodes.h"
 #include "identitygate.h"
 #include "commissioning/commissioningreport.h"
@@ -86,15 +87,6 @@ QString conditionName(DeviceCondition::State state)
         return QStringLiteral("wrong_device");
     }
     return QStringLiteral("disconnected");
-}
-
-// A path is a path: Qt would put /dev/ in front of a relative one ("line/master"). A URL
-// (a gateway) stays as it is.
-QString absolutePort(const QString &port, const QString &folder)
-{
-    if (port.contains(QLatin1String("://")) || !port.contains(QLatin1Char('/')) || port.startsWith(QLatin1Char('/')))
-        return port;
-    return QDir::cleanPath(QDir(folder).absoluteFilePath(port));
 }
 
 } // namespace
@@ -246,7 +238,7 @@ std::optional<int> LineCommands::readStation(const CommandParser &parser)
         }
         // A relative path in the file is meant from where the file is.
         for (LineConfig &line : station->lines)
-            line.settings.portName = absolutePort(line.settings.portName, QFileInfo(path).absolutePath());
+            line.settings.portName = LineAddress::absolutePort(line.settings.portName, QFileInfo(path).absolutePath());
         m_station = std::move(*station);
     } else {
         const std::optional<BusSettings> defaults = lineDefaults(parser);
@@ -256,7 +248,7 @@ std::optional<int> LineCommands::readStation(const CommandParser &parser)
         if (port) {
             LineConfig line;
             line.settings = *defaults;
-            line.settings.portName = absolutePort(parser.value(QStringLiteral("port")), QDir::currentPath());
+            line.settings.portName = LineAddress::absolutePort(parser.value(QStringLiteral("port")), QDir::currentPath());
             lines << line;
         }
         for (const QString &spec : specs) {
@@ -265,7 +257,7 @@ std::optional<int> LineCommands::readStation(const CommandParser &parser)
                 m_err << error << Qt::endl;
                 return exitcode::Usage;
             }
-            line->settings.portName = absolutePort(line->settings.portName, QDir::currentPath());
+            line->settings.portName = LineAddress::absolutePort(line->settings.portName, QDir::currentPath());
             lines << *line;
         }
         if (lines.isEmpty() || lines.constFirst().settings.portName.isEmpty()) {
@@ -278,7 +270,7 @@ std::optional<int> LineCommands::readStation(const CommandParser &parser)
             return exitcode::Usage;
         }
         for (LineConfig &line : station->lines)
-            line.settings.portName = absolutePort(line.settings.portName, QDir::currentPath());
+            line.settings.portName = LineAddress::absolutePort(line.settings.portName, QDir::currentPath());
         m_station = std::move(*station);
     }
     // As in the HMI: the system configuration can make every tool read-only; --read-only
@@ -498,12 +490,8 @@ void LineCommands::finish(int code)
     m_finished = true;
     if (m_interruptCode) {
         code = m_interruptCode;
-        const QString summary = code == exitcode::Terminated ? tr("terminated: %1")
-                : code == exitcode::HungUp                    ? tr("hangup: %1")
-                : code == exitcode::OutputClosed              ? tr("output closed: %1")
-                                                              : tr("interrupted: %1");
         m_err << '\n'   // after a prompt or a progress line
-              << summary.arg(m_interruptSummary) << Qt::endl;
+              << signalSummary(code - 128, m_interruptSummary) << Qt::endl;
     }
     if (m_auditFailed && code == exitcode::Ok)
         code = exitcode::Failed;

@@ -69,6 +69,15 @@ int pendingTerminationSignal()
     return pendingSignal;
 }
 
+QString signalSummary(int signal, const QString &done)
+{
+    const char *const text = signal == SIGTERM ? QT_TRANSLATE_NOOP("jumo::Signals", "terminated: %1")
+            : signal == SIGHUP                 ? QT_TRANSLATE_NOOP("jumo::Signals", "hangup: %1")
+            : signal == SIGPIPE                ? QT_TRANSLATE_NOOP("jumo::Signals", "output closed: %1")
+                                               : QT_TRANSLATE_NOOP("jumo::Signals", "interrupted: %1");
+    return QCoreApplication::translate("jumo::Signals", text).arg(done);
+}
+
 EndAtOnceOnSignals::EndAtOnceOnSignals(const std::function<QString(int)> &message)
 {
     if (signalPipe[0] < 0)

@@ -22,6 +22,10 @@ void onTerminationSignals(const std::function<void(int signal)> &handler);
 // outside the event loop (jumoctl history): it stops before its next record.
 int pendingTerminationSignal();
 
+// What a command says when a signal stopped it: "interrupted: DONE", "terminated: DONE",
+// "hangup: DONE", "output closed: DONE".
+QString signalSummary(int signal, const QString &done);
+
 // For the life of this object, around a call that blocks, cannot be interrupted and
 // holds nothing to save (a database's connect, SQLite's wait for a lock): SIGINT,
 // SIGTERM and SIGHUP end the program at once with 128 + the number, after the message

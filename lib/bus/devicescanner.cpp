@@ -34,13 +34,13 @@ DeviceScanner::DeviceScanner(Bus &bus, QList<std::shared_ptr<const RegisterMap>>
     connect(&m_bus, &Bus::probeFinished, this, &DeviceScanner::onProbeFinished);
 }
 
-DeviceScanner::Mode DeviceScanner::effectiveMode(int firstAddress, int lastAddress) const
+DeviceScanner::Mode DeviceScanner::effectiveMode(qsizetype addresses) const
 {
     if (m_mode == Mode::Thorough || m_bus.lineKind() == LineAddress::Kind::ModbusTcp)
         return Mode::Thorough;
     // The listener after the quick pass must be an address that went quiet longer ago than
     // a late answer may take; a short range has none.
-    const qint64 quickPass = qint64(lastAddress - firstAddress + 1) * quickTimeoutMs();
+    const qint64 quickPass = qint64(addresses) * quickTimeoutMs();
     return quickPass * 5 >= qint64(heardWindowMs()) * 6 ? Mode::Quick : Mode::Thorough;
 }
 
@@ -64,9 +64,9 @@ int DeviceScanner::quickTimeoutMs() const
     return m_bus.quickProbeTimeoutMs(m_slowest, LineTiming::readRequestBytes, LineTiming::readReplyBytes(probeWords()));
 }
 
-qint64 DeviceScanner::thoroughWorstMs(int firstAddress, int lastAddress) const
+qint64 DeviceScanner::thoroughWorstMs(qsizetype addresses) const
 {
-    return qint64(lastAddress - firstAddress + 1) * 4 * fullTimeoutMs();
+    return qint64(addresses) * 4 * fullTimeoutMs();
 }
 
 qint64 DeviceScanner::remainingMs() const
@@ -74,28 +74,40 @@ qint64 DeviceScanner::remainingMs() const
     if (!m_running)
         return 0;
     const qint64 quickEach = m_quickDone > 0 ? m_quickCostMs / m_quickDone : quickTimeoutMs();
-    const qint64 thoroughEach = m_thoroughDone > 0 ? m_thoroughCostMs / m_thoroughDone : thoroughWorstMs(1, 1);
-    const qint64 quickLeft = m_quickPass ? m_last - m_address : 0;
+    const qint64 thoroughEach = m_thoroughDone > 0 ? m_thoroughCostMs / m_thoroughDone : thoroughWorstMs(1);
+    const qint64 quickLeft = m_quickPass ? m_addresses.size() - m_next : 0;
     return quickLeft * quickEach + qint64(m_thorough.size()) * thoroughEach;
 }
 
 void DeviceScanner::start(int firstAddress, int lastAddress)
 {
-    m_first = std::clamp(firstAddress, 1, 255);
-    m_last = std::clamp(lastAddress, m_first, 255);
-    m_address = m_first - 1;
-    m_quickPass = effectiveMode(m_first, m_last) == Mode::Quick;
+    const int first = std::clamp(firstAddress, 1, 255);
+    const int last = std::clamp(lastAddress, first, 255);
+    QList<int> addresses;
+    for (int a = first; a <= last; ++a)
+        addresses << a;
+    start(addresses);
+}
+
+void DeviceScanner::start(const QList<int> &addresses)
+{
+    m_addresses.clear();
+    for (int a : addresses) {
+        if (a >= 1 && a <= 255 && !m_addresses.contains(a))
+            m_addresses << a;
+    }
+    m_next = 0;
+    m_address = 0;
+    m_quickPass = effectiveMode(m_addresses.size()) == Mode::Quick;
     m_thorough.clear();
     m_queued.clear();
-    if (!m_quickPass) {
-        for (int a = m_first; a <= m_last; ++a)
-            m_thorough << a;
-    }
+    if (!m_quickPass)
+        m_thorough = m_addresses;
     m_silentAt.clear();
     m_strays = m_bus.strayReplies();
     m_straysSeenMs = m_bus.clockMs();
     m_done = 0;
-    m_total = m_last - m_first + 1;
+    m_total = int(m_addresses.size());
     m_reprobed = 0;
     m_quickCostMs = m_thoroughCostMs = 0;
     m_quickDone = m_thoroughDone = 0;
@@ -118,7 +130,7 @@ void DeviceScanner::nextAddress()
         finish(Result::Cancelled);
         return;
     }
-    if (m_quickPass && m_address >= m_last) {
+    if (m_quickPass && m_next >= m_addresses.size()) {
         m_quickPass = false;
         beginThoroughPass(now);
     }
@@ -127,7 +139,7 @@ void DeviceScanner::nextAddress()
         finish(Result::Succeeded);
         return;
     }
-    m_address = m_quickPass ? m_address + 1 : m_thorough.takeFirst();
+    m_address = m_quickPass ? m_addresses.at(m_next++) : m_thorough.takeFirst();
     m_addressWasQuick = m_quickPass;
     m_addressStartedMs = now;
     m_cache.clear();

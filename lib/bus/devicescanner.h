@@ -39,13 +39,15 @@ public:
     // What a scan of these addresses on this line does: Quick is thorough over a Modbus TCP
     // gateway (which answers every request itself, at its own timeout) and on a range too
     // short to listen for late answers after its quick pass.
-    Mode effectiveMode(int firstAddress, int lastAddress) const;
+    Mode effectiveMode(int firstAddress, int lastAddress) const { return effectiveMode(lastAddress - firstAddress + 1); }
+    Mode effectiveMode(qsizetype addresses) const;
     // A silent address's probe: at the full timeout, and at a quick scan's.
     int fullTimeoutMs() const;
     int quickTimeoutMs() const;
     // What a thorough scan of these addresses costs at most: each silent address two
     // probes at the full timeout, each followed by as long a quiet time.
-    qint64 thoroughWorstMs(int firstAddress, int lastAddress) const;
+    qint64 thoroughWorstMs(int firstAddress, int lastAddress) const { return thoroughWorstMs(lastAddress - firstAddress + 1); }
+    qint64 thoroughWorstMs(qsizetype addresses) const;
     // About how long the rest of the scan takes, from what it cost so far.
     qint64 remainingMs() const;
     // Addresses a quick scan probed again thoroughly because something was heard.
@@ -55,6 +57,8 @@ public:
     // polls and keepalives meanwhile. Ends Succeeded, Cancelled, or Failed when the line
     // went away.
     void start(int firstAddress, int lastAddress);
+    // The same for these addresses (1..255), in this order.
+    void start(const QList<int> &addresses);
 
 signals:
     void progress(int address, int done, int total);
@@ -91,9 +95,9 @@ private:
     QList<std::shared_ptr<const RegisterMap>> m_families;   // in scan order
     ProtocolInfo m_slowest;                                   // timing that fits every family
     QHash<quint64, ProbeResult> m_cache;                      // (register, words) -> answer
-    int m_address = 0;
-    int m_last = 0;
-    int m_first = 0;
+    QList<int> m_addresses;   // of the quick pass, in order
+    int m_next = 0;           // quick pass: index of the next address
+    int m_address = 0;        // probed now
     int m_pendingTicket = -1;
     quint64 m_pendingKey = 0;
     bool m_pendingQuick = false;

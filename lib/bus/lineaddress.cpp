@@ -176,4 +176,11 @@ QStringList LineAddress::lookUp(const QString &name)
     return addresses;
 }
 
+QString LineAddress::absolutePort(const QString &port, const QString &folder)
+{
+    if (port.contains(QLatin1String("://")) || !port.contains(QLatin1Char('/')) || port.startsWith(QLatin1Char('/')))
+        return port;
+    return QDir::cleanPath(QDir(folder).absoluteFilePath(port));
+}
+
 } // namespace jumo

@@ -29,6 +29,9 @@ public:
     // Anything that is not a URL ("scheme://") is a serial port path. A URL must name a
     // known scheme, a host and (for rtu+tcp) a port 1..65535, and nothing after it.
     static std::optional<LineAddress> parse(const QString &text, QString *error);
+    // A path is a path: Qt would put /dev/ in front of a relative one ("line/master"), so it
+    // is taken from folder. A bare name (ttyUSB0) and a URL stay as they are.
+    static QString absolutePort(const QString &port, const QString &folder);
     // "rtu", "tcp", "rtu+tcp": the words of station files, JSON and MQTT.
     QString kindName() const;
     bool isNetwork() const { return kind != Kind::Serial; }

@@ -23,6 +23,8 @@ struct LineFormat
     double wireTimeMs(int bytes) const { return 1000.0 * bytes * bitsPerCharacter() / baudRate; }
     // The 3.5-character silence that ends an RTU frame, in milliseconds.
     double frameGapMs() const { return wireTimeMs(1) * 3.5; }
+
+    friend bool operator==(const LineFormat &, const LineFormat &) = default;
 };
 
 } // namespace jumo

@@ -25,6 +25,9 @@ DemoLine::DemoLine(const FamilyRegistry &registry, QObject *parent) : QObject(pa
             emit failed(tr("the simulator cannot open %1: %2").arg(m_pty.deviceEnd(), error));
             return;
         }
+        // As on a real line, the devices answer only at the line's settings (a change in the
+        // connection bar is felt); where the end cannot be watched they answer at any.
+        m_simulator.watchClientEnd(m_pty.masterEnd());
         emit ready(m_pty.masterEnd());
     });
 }

@@ -141,6 +141,12 @@ void SimulatorLine::processBuffer()
 
 void SimulatorLine::handleFrame(const QByteArray &frame)
 {
+    if (m_clientEnd.understands(m_format) == false) {
+        // Sent at another baud rate or format: garbage to every device, which stays silent.
+        ++m_misunderstood;
+        qCDebug(lcSim) << "request at other line settings, not understood:" << RtuFrame::toHex(frame);
+        return;
+    }
     const Answer a = answer(frame);
     if (!a.frame.isEmpty())
         sendLater(&m_port, a.frame, a.delayMs);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "protocol/lineformat.h"
+#include "sim/clientend.h"
 #include "sim/simulateddevice.h"
 
 #include <QElapsedTimer>
@@ -71,11 +72,17 @@ public:
     const LineFormat &format() const { return m_format; }
     // The line's format without a port of its own (served through a SimulatorServer).
     void setFormat(const LineFormat &format) { m_format = format; }
+    // The client's end of the pty pair: a request sent at other settings than the line's
+    // goes unanswered, as on a real line (see ClientEnd for what a pty can tell). Before
+    // the client opens it.
+    bool watchClientEnd(const QString &path, QString *error = nullptr) { return m_clientEnd.open(path, error); }
 
     // What went over the line, for tests: every complete request frame received.
     int requestsReceived() const { return m_requestsReceived; }
     int writeRequestsReceived() const { return m_writeRequestsReceived; }
     int crcErrorsReceived() const { return m_crcErrors; }
+    // Requests sent at settings the devices do not understand (watchClientEnd()).
+    int misunderstoodRequests() const { return m_misunderstood; }
 
 signals:
     void requestReceived(const QByteArray &frame);
@@ -97,6 +104,8 @@ private:
 
     QSerialPort m_port;
     LineFormat m_format;
+    ClientEnd m_clientEnd;
+    int m_misunderstood = 0;
     QList<SimulatedDevice *> m_devices;
     QHash<quint8, Fault> m_faults;
     QByteArray m_buffer;

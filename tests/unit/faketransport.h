@@ -152,6 +152,11 @@ private:
             return result;
         }
         SimulatedDevice *device = m_devices.value(request.slave);
+        for (SimulatedDevice *d : std::as_const(m_devices)) {
+            // IPC 300 and TYA 200 answer address 255 whatever their own.
+            if (!device && d->map().protocol.alwaysAnswersAddress == int(request.slave))
+                device = d;
+        }
         if (!device)
             return result;   // nobody there: a timeout
         const QByteArray reply = device->process(request.pdu(), false);
