@@ -43,6 +43,18 @@ public:
 
 } // namespace
 
+void LiveValuesView::showEvent(QShowEvent *event)
+{
+    QTableView::showEvent(event);
+    m_model->setShown(this, true);
+}
+
+void LiveValuesView::hideEvent(QHideEvent *event)
+{
+    QTableView::hideEvent(event);
+    m_model->setShown(this, false);
+}
+
 LiveValuesView::LiveValuesView(LiveValuesModel *model, QWidget *parent) : QTableView(parent), m_model(model)
 {
     auto *styled = new LiveValuesStyle(this);

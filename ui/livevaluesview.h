@@ -19,6 +19,11 @@ public:
     // The text shown for an entry's value, as a person sees it.
     QString displayedValue(const QString &entryId) const;
 
+protected:
+    // While on screen, its entries are read sooner (LiveValuesModel::setShown).
+    void showEvent(QShowEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
+
 private:
     LiveValuesModel *m_model;
 };

@@ -1,5 +1,7 @@
 #include "trendview.h"
 
+#include <QScopeGuard>
+
 #include "models/livevaluesmodel.h"
 #include "protocol/filesaver.h"
 #include "theme.h"
@@ -18,6 +20,7 @@
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScopeGuard>
 #include <QSplitter>
 #include <QTextStream>
 #include <QValueAxis>
@@ -183,8 +186,29 @@ QStringList TrendView::axisTitles() const
     return out;
 }
 
+void TrendView::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    tellShown();
+}
+
+void TrendView::hideEvent(QHideEvent *event)
+{
+    QWidget::hideEvent(event);
+    m_values->setShown(this, false);
+}
+
+void TrendView::tellShown()
+{
+    const QStringList chosen = selectedEntries();
+    // Nothing chosen is nothing shown (an empty list would mean every row).
+    m_values->setShown(this, isVisible() && !chosen.isEmpty(), chosen);
+}
+
 void TrendView::setSelected(int row, bool on)
 {
+    // What the trend draws is what the line reads sooner while it is on screen.
+    const auto tell = qScopeGuard([this] { tellShown(); });
     if (!on) {
         const Trace trace = m_traces.take(row);
         for (QLineSeries *s : trace.segments) {

@@ -42,7 +42,13 @@ public:
     // Takes the chart colours of the theme now in use.
     void restyle();
 
+protected:
+    // While on screen, the chosen entries are read sooner (LiveValuesModel::setShown).
+    void showEvent(QShowEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
+
 private:
+    void tellShown();
     void onDataChanged(int first, int last);
     void setSelected(int row, bool on);
     void rescale();
