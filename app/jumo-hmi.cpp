@@ -1,4 +1,5 @@
 // jumo-hmi: the desktop HMI. Parses the command line and opens the main window.
+#include "benchreport.h"
 #include "protocol/familyregistry.h"
 #include "bus/stationconfig.h"
 #include "connectionbar.h"
@@ -203,6 +204,13 @@ void addOptions(QCommandLineParser &parser)
                       QStringLiteral("file")});
     parser.addOption({QStringLiteral("report-startup"),
                       QApplication::translate("main", "Print on stderr when the first live value arrives.")});
+    // For the HMI benchmark only (tests/bench/bench_hmi.cpp): hidden from --help.
+    QCommandLineOption faceplateAges(QStringLiteral("report-faceplate-ages"),
+                                     QApplication::translate("main", "For benchmarks: print on stderr every second how "
+                                                                     "many faceplates are on screen and how old the "
+                                                                     "values they show are."));
+    faceplateAges.setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOption(faceplateAges);
     parser.addOption({QStringLiteral("verbose"),
                       QApplication::translate("main", "Show Qt's Modbus messages (CRC errors, timeouts, frames) on stderr.")});
 }
@@ -372,6 +380,8 @@ int main(int argc, char *argv[])
             }
         });
     }
+    if (parser.isSet(QStringLiteral("report-faceplate-ages")))
+        jumo::BenchReport::faceplateAgesEverySecond(window);
     const QString show = parser.value(QStringLiteral("show"));
     auto showPage = [&window, show, tab = parser.value(QStringLiteral("tab")).toInt()] {
         bool ok = false;

@@ -1750,7 +1750,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
 <context>
     <name>jumo::FindCommand</name>
     <message>
-        <location filename="../app/cli/findcommand.cpp" line="+61"/>
+        <location filename="../app/cli/findcommand.cpp" line="+60"/>
         <source>Finds devices on a serial line whose settings nobody knows: tries every baud rate and data format the families support, first address 255 (where every IPC 300 and TYA 200 answers whatever its own address), then a quick scan of the address range, and says what answers where.</source>
         <translation>Sucht Geräte an einer seriellen Leitung, deren Einstellungen niemand kennt: probiert jede Baudrate und jedes Datenformat, das die Familien kennen, zuerst Adresse 255 (dort antwortet jeder IPC 300 und TYA 200, welche Adresse er auch hat), dann einen schnellen Scan des Adressbereichs, und sagt, was wo antwortet.</translation>
     </message>
@@ -1841,7 +1841,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>--format nimmt 8N1, 8E1, 8O1 und 8N2, nicht %1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+9"/>
         <source>--min-response must be 0..500 ms</source>
         <translation>--min-response muss 0..500 ms sein</translation>
     </message>
@@ -1892,9 +1892,9 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>bei %1: %2 an Adresse %3 (%4)</translation>
     </message>
     <message>
-        <location line="+33"/>
-        <source>at %1: a %2 answers at address %3, as every one does whatever its own address, which is outside %4..%5 (--from and --to look further)</source>
-        <translation>bei %1: ein %2 antwortet an Adresse %3, wie jeder, welche Adresse er auch hat; seine eigene liegt außerhalb von %4..%5 (--from und --to suchen weiter)</translation>
+        <location line="+37"/>
+        <source>at %1: address %3 answers as %2, as every %2 does whatever its own address; its own is outside %4..%5 (--from and --to look further)</source>
+        <translation>bei %1: Adresse %3 antwortet als %2, wie jeder %2, welche Adresse er auch hat; seine eigene liegt außerhalb von %4..%5 (--from und --to suchen weiter)</translation>
     </message>
     <message>
         <location line="+22"/>
@@ -1902,12 +1902,20 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>%1 an Adresse %2 antwortet bei %3 Baud in %4: das Gerät oder der Adapter hält das eine für das andere (ein Pseudo-Terminal überträgt keine gerade Parität; viele UARTs nehmen 8N2 für 8N1); seine eigene Einstellung steht in seinen Schnittstelleneinstellungen</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>find: %1</source>
         <translation>find: %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+4"/>
+        <location line="+1"/>
+        <source>the search stopped: %n device(s) found before, the settings after it not tried</source>
+        <translation>
+            <numerusform>die Suche endete: %n Gerät vorher gefunden, die Einstellungen danach nicht probiert</numerusform>
+            <numerusform>die Suche endete: %n Geräte vorher gefunden, die Einstellungen danach nicht probiert</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+6"/>
         <source>%n device(s) found before the search stopped</source>
         <translation>
             <numerusform>%n Gerät gefunden, bevor die Suche endete</numerusform>
@@ -2594,7 +2602,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+113"/>
+        <location filename="../app/cli/linecommands.cpp" line="+104"/>
         <source>the audit log did not take a record: %1</source>
         <translation>das Audit-Protokoll hat einen Eintrag nicht aufgenommen: %1</translation>
     </message>
@@ -7553,7 +7561,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
 <context>
     <name>jumo::TrendView</name>
     <message>
-        <location filename="../ui/trendview.cpp" line="+51"/>
+        <location filename="../ui/trendview.cpp" line="+54"/>
         <source>1 minute</source>
         <translation>1 Minute</translation>
     </message>

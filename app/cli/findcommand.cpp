@@ -233,15 +233,19 @@ void FindCommand::onFinished()
     m_finished = true;
     clearProgress();
     const QList<LineFinder::Finding> findings = m_finder ? m_finder->findings() : QList<LineFinder::Finding>();
-    // A family answering at 255 whose own address the range did not hold.
+    const bool complete = m_finder && m_finder->result() == Job::Result::Succeeded;
+    // A family answering at 255 whose own address the range did not hold (known only when
+    // the whole range was scanned at that setting).
+    int onlyAt255 = 0;
     for (const LineFinder::Finding &f : findings) {
-        if (!f.alwaysAnswered)
+        if (!f.alwaysAnswered || !complete)
             continue;
         const bool ownFound = std::any_of(findings.cbegin(), findings.cend(), [&](const LineFinder::Finding &g) {
             return !g.alwaysAnswered && g.family == f.family && g.format == f.format;
         });
+        onlyAt255 += ownFound ? 0 : 1;
         if (!ownFound)
-            m_out << tr("at %1: a %2 answers at address %3, as every one does whatever its own address, which is "
+            m_out << tr("at %1: address %3 answers as %2, as every %2 does whatever its own address; its own is "
                         "outside %4..%5 (--from and --to look further)")
                              .arg(settingName(f.format), f.family->family)
                              .arg(f.address)
@@ -280,15 +284,19 @@ void FindCommand::onFinished()
         if (!f.alwaysAnswered && !devicesSeen.contains(key))
             devicesSeen << key;
     }
-    const int devices = int(devicesSeen.size());
+    const int devices = int(devicesSeen.size()) + onlyAt255;
     const double took = m_finder ? double(m_finder->elapsedMs()) / 1000.0 : 0.0;
     int code = devices > 0 || std::any_of(findings.cbegin(), findings.cend(),
                                           [](const LineFinder::Finding &f) { return f.alwaysAnswered; })
             ? exitcode::Ok
             : exitcode::Failed;
     if (m_finder && m_finder->result() == Job::Result::Failed) {
-        m_err << tr("find: %1").arg(m_finder->errorText()) << Qt::endl;
-        code = exitcode::Failed;
+        // Not a search that found nothing: one that could not go on.
+        m_err << tr("find: %1").arg(m_finder->errorText()) << Qt::endl
+              << tr("the search stopped: %n device(s) found before, the settings after it not tried", nullptr, devices)
+              << Qt::endl;
+        emit finished(exitcode::Failed);
+        return;
     }
     if (m_interruptCode) {
         m_err << signalSummary(m_interruptCode - 128, tr("%n device(s) found before the search stopped", nullptr, devices))

@@ -100,7 +100,7 @@ qint64 LineFinder::plannedMs(int firstAddress, int lastAddress)
         BusSettings at = m_own;
         at.format = setting.format;
         m_bus.setSettings(at);
-        const DeviceScanner scanner(m_bus, setting.families);
+        const DeviceScanner scanner(m_bus, m_families);
         const QList<int> addresses = addressesOf(setting, firstAddress, lastAddress);
         // Hint, quick pass, the listener after it (a thorough probe of one address).
         total += (setting.alwaysAnswered() ? scanner.quickTimeoutMs() : 0)
@@ -172,6 +172,14 @@ void LineFinder::nextHint()
                 return;
             m_strays = m_bus.strayReplies();
             const IdentifyProbe &probe = family->identify.constFirst();
+            // A late answer may come until the full timeout: it is waited for at this
+            // setting, where it is heard, never read at the next (whose probe asks the same).
+            // (The slowest family's time: a device may be set to answer later than its own.)
+            int quietMs = 0;
+            for (const auto &f : std::as_const(m_families))
+                quietMs = std::max(quietMs, m_bus.requestTimeoutMs(f->protocol, LineTiming::readRequestBytes,
+                                                                  LineTiming::readReplyBytes(probe.words)));
+            m_hintQuietUntilMs = m_bus.clockMs() + quietMs;
             m_hintTicket = m_bus.quickProbe(quint8(*family->protocol.alwaysAnswersAddress), probe.address,
                                             quint16(probe.words), family->protocol);
             return;
@@ -200,7 +208,15 @@ void LineFinder::onHintFinished(int ticket, const QList<quint16> &, bool timedOu
         end(Result::Failed, m_bus.lastError());
         return;
     }
-    nextHint();
+    if (!timedOut || m_bus.clockMs() >= m_hintQuietUntilMs) {
+        nextHint();
+        return;
+    }
+    m_bus.clock()->callAt(m_hintQuietUntilMs, this, [this] {
+        if (m_bus.strayReplies() != m_strays)
+            m_heard[m_index] = true;   // it answered late: scanned early
+        nextHint();
+    });
 }
 
 void LineFinder::nextScan()
@@ -217,7 +233,10 @@ void LineFinder::nextScan()
     emit trying(setting.format, m_order.at(m_index), int(m_settings.size()), false);
     if (!openAt(setting.format))
         return;
-    m_scanner = std::make_unique<DeviceScanner>(m_bus, setting.families);
+    // Every family is asked: a device set to this setting is of one that supports it, but
+    // one that answers here because its UART or the adapter takes this setting for its own
+    // is named all the same, not called unknown.
+    m_scanner = std::make_unique<DeviceScanner>(m_bus, m_families);
     m_scanner->setMode(DeviceScanner::Mode::Quick);
     const LineFormat format = setting.format;
     connect(m_scanner.get(), &DeviceScanner::progress, this, &LineFinder::probing);

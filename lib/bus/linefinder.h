@@ -3,8 +3,7 @@
 //
 // First a hint pass: at each setting one quick probe of address 255, where every IPC 300
 // and TYA 200 answers whatever its own address. Then, the settings where anything was
-// heard first, a quick scan (DeviceScanner) of address 255 and the range at each setting,
-// with the families that support it. A device answers at its own setting only (the
+// heard first, a quick scan (DeviceScanner) of address 255 and the range at each setting. A device answers at its own setting only (the
 // manuals: no response on a baud rate or format mismatch); a lenient UART may accept a
 // neighbouring format (8N1 and 8N2 often look alike), so a device can be found at more
 // than one, and each is reported.
@@ -104,6 +103,7 @@ private:
     int m_index = -1;         // into m_settings (hint pass) or m_order (scan pass)
     bool m_hintPass = false;
     int m_hintTicket = -1;
+    qint64 m_hintQuietUntilMs = 0;   // a lost hint's answer could come until then
     quint64 m_strays = 0;
     std::unique_ptr<DeviceScanner> m_scanner;
     qint64 m_startedMs = 0;

@@ -1,12 +1,13 @@
 // Station scale benchmark (a program, not a test): one station of 8 lines with 31
 // simulated devices each (248 in all, on socat pty pairs, replies paced at the baud rate),
 // published by the jumo-publisher program to Debian's Mosquitto, watched by 10 remote
-// viewers (RemoteStation, each in a process of its own). A bit of one device after
-// another is toggled in the simulator; every viewer reports when it sees it. Prints the
-// station's CPU and memory, the publish rate, the latency from the simulator to the
-// viewers (median, 99th percentile, split into waiting for the poll and the way from the
-// station to the viewer) and what the viewers show while the broker is killed and after
-// it is started again.
+// viewers (RemoteStation, each in a process of its own). An alarm or warning bit of one
+// device after another is toggled (or set, held and cleared: --hold-ms) in the simulator;
+// every viewer reports when it sees it. Prints the station's CPU and memory, the publish
+// rate, the latency from the simulator to the viewers (median, 99th percentile, split into
+// waiting for the poll and the way from the station to the viewer), the longest any entry
+// went unread, and what the viewers show while the broker is killed and after it is
+// started again. --dead N makes N devices of each line that never answer.
 //
 // The same program is the viewer: "--viewer URL" mirrors the station and prints, on
 // stdout, one line per marker bit it sees ("M LINE DEVICE STATE RECEIVED_MS READ_MS") and
@@ -32,7 +33,6 @@
 #include <QJsonObject>
 #include <QLoggingCategory>
 #include <QProcess>
-#include <QRandomGenerator>
 #include <QStandardPaths>
 #include <QTcpServer>
 #include <QTcpSocket>
@@ -52,63 +52,10 @@ namespace {
 
 const QString stationName = QStringLiteral("bench");
 
-// The alarm or warning bit each family's devices toggle. The Quantrol's alarm bits
-// follow its limit monitors, so its threshold is moved with the bit (the simulation
-// would otherwise put the bit back at its next tick).
-struct Marker
-{
-    QString entry;
-    QString bit;
-    QString threshold;
-};
-
-const QHash<QString, Marker> &markers()
-{
-    static const QHash<QString, Marker> m{
-        {QStringLiteral("ipc300"), {QStringLiteral("malfunction_signal_2"), QStringLiteral("inhibit_peak_current"), {}}},
-        {QStringLiteral("tya200"), {QStringLiteral("malfunction_signals_3"), QStringLiteral("wiring_error"), {}}},
-        {QStringLiteral("dtron300"), {QStringLiteral("program_status"), QStringLiteral("tolerance_limit"), {}}},
-        {QStringLiteral("quantrol"),
-         {QStringLiteral("limit_value_monitoring"), QStringLiteral("limit_value_monitoring_2"),
-          QStringLiteral("limit_2_alarm_value")}},
-    };
-    return m;
-}
-
-void setMarker(SimulatedDevice *device, bool on)
-{
-    const Marker &marker = markers().value(device->map().family);
-    if (!marker.threshold.isEmpty())
-        device->setNumber(marker.threshold, on ? -1.0e6 : 1.0e6);
-    device->setFlag(marker.entry + QLatin1Char('.') + marker.bit, on);
-}
-
-qint64 wallMs() { return QDateTime::currentMSecsSinceEpoch(); }
-
 QString findTool(const QString &name)
 {
     const QString found = QStandardPaths::findExecutable(name);
     return found.isEmpty() ? QStandardPaths::findExecutable(name, {QStringLiteral("/usr/sbin")}) : found;
-}
-
-double percentile(QList<double> values, double p)
-{
-    if (values.isEmpty())
-        return -1;
-    std::sort(values.begin(), values.end());
-    const qsizetype index = std::min<qsizetype>(values.size() - 1, qsizetype(p / 100.0 * double(values.size())));
-    return values.at(index);
-}
-
-QString figures(const QList<double> &values)
-{
-    if (values.isEmpty())
-        return QStringLiteral("no samples");
-    return QStringLiteral("median %1 ms, p99 %2 ms, max %3 ms (%4 samples)")
-        .arg(percentile(values, 50), 0, 'f', 0)
-        .arg(percentile(values, 99), 0, 'f', 0)
-        .arg(*std::max_element(values.begin(), values.end()), 0, 'f', 0)
-        .arg(values.size());
 }
 
 // ---- the viewer -------------------------------------------------------------------
@@ -225,13 +172,6 @@ struct Broker
     }
 };
 
-struct Change
-{
-    qint64 t0 = 0;
-    bool state = false;
-    QSet<int> seenBy;
-};
-
 struct Viewer
 {
     std::unique_ptr<QProcess> process;
@@ -265,6 +205,7 @@ int main(int argc, char **argv)
     option("warmup", "Seconds after every device is online before measuring (default 20).", "20");
     option("seconds", "Seconds measured (default 120).", "120");
     option("change-ms", "A marker bit is toggled this often (default 200).", "200");
+    option("dead", "Devices per line that never answer, the highest addresses (default 0).", "0");
     option("hold-ms",
            "A marker bit set is cleared again after this long, seen or not; a state no viewer saw "
            "before it ended counts as missed (default 0: toggled back only once every viewer saw it).",
@@ -290,6 +231,7 @@ int main(int argc, char **argv)
     const int seconds = std::max(5, parser.value(QStringLiteral("seconds")).toInt());
     const int changeMs = std::max(10, parser.value(QStringLiteral("change-ms")).toInt());
     const int holdMs = std::max(0, parser.value(QStringLiteral("hold-ms")).toInt());
+    const int deadPerLine = std::clamp(parser.value(QStringLiteral("dead")).toInt(), 0, devicesPerLine - 1);
     const std::optional<LineFormat> format = LineFormat::parse(baud, QStringLiteral("8N1"));
     if (!format) {
         std::fprintf(stderr, "baud %d is not a line speed\n", baud);
@@ -297,14 +239,21 @@ int main(int argc, char **argv)
     }
     const FamilyRegistry registry = FamilyRegistry::load({}, true);
     // The families whose devices run at this speed (the Quantrol tops out at 19200 baud).
-    QStringList families;
-    for (const QString &family : {QStringLiteral("ipc300"), QStringLiteral("tya200"), QStringLiteral("dtron300"),
-                                  QStringLiteral("quantrol")}) {
-        if (registry.family(family)->protocol.baudRates.contains(baud))
-            families << family;
+    const QStringList families = familiesAt(registry, baud);
+    if (families.isEmpty()) {
+        std::fprintf(stderr, "no family runs at %d baud\n", baud);
+        return 2;
     }
-    std::printf("station: %d lines x %d devices (%s) at %d baud, %d viewers\n", lineCount, devicesPerLine,
-                qPrintable(families.join(QLatin1Char('/'))), baud, viewerCount);
+    if (const QString wrong = checkMarkers(registry, families); !wrong.isEmpty()) {
+        std::fprintf(stderr, "marker bits: %s\n", qPrintable(wrong));
+        return 1;
+    }
+    std::printf("station: %d lines x %d devices (%s) at %d baud, %d of them per line dead, %d viewers\n", lineCount,
+                devicesPerLine, qPrintable(families.join(QLatin1Char('/'))), baud, deadPerLine, viewerCount);
+    std::printf("marker bits (alarm or warning bits of alarm words):");
+    for (const QString &family : families)
+        std::printf(" %s %s", qPrintable(family), qPrintable(markers().value(family).reference()));
+    std::printf("\nload average at the start: %s\n", qPrintable(loadAverage()));
 
     Broker broker;
     if (!broker.start()) {
@@ -318,7 +267,9 @@ int main(int argc, char **argv)
     QTemporaryDir dir;
     std::vector<std::unique_ptr<PtyPair>> ptys;
     std::vector<std::unique_ptr<SimulatorLine>> sims;
-    QHash<QString, SimulatedDevice *> simulated;   // "LINE FAMILY@ADDRESS"
+    QHash<QString, SimulatedDevice *> simulated;   // "LINE FAMILY@ADDRESS", the live ones
+    QSet<QString> deadNames;                       // "LINE/FAMILY@ADDRESS", as the topics name them
+    ReadAges readAges;
     QJsonArray lineArray;
     for (int l = 0; l < lineCount; ++l) {
         auto pty = std::make_unique<PtyPair>();
@@ -334,13 +285,21 @@ int main(int argc, char **argv)
         sim->setTickInterval(500);
         const QString lineName = QStringLiteral("line%1").arg(l + 1);
         QJsonArray devices;
+        QList<SimulatedDevice *> live;
         for (int a = 1; a <= devicesPerLine; ++a) {
             const QString family = families.at((a + l - 1) % families.size());
             SimulatedDevice *device = sim->addDevice(registry.family(family), quint8(a));
             setMarker(device, false);
-            simulated.insert(lineName + QLatin1Char(' ') + family + QLatin1Char('@') + QString::number(a), device);
             devices.append(family + QLatin1Char('@') + QString::number(a));
+            if (a > devicesPerLine - deadPerLine) {
+                sim->setFault(quint8(a), Fault{FaultMode::Dead, -1, 0, 0});
+                deadNames.insert(lineName + QLatin1Char('/') + family + QLatin1Char('@') + QString::number(a));
+                continue;
+            }
+            simulated.insert(lineName + QLatin1Char(' ') + family + QLatin1Char('@') + QString::number(a), device);
+            live << device;
         }
+        readAges.watch(sim.get(), lineName, live);
         if (!sim->open(pty->deviceEnd(), *format))
             return 1;
         lineArray.append(QJsonObject{{QStringLiteral("name"), lineName},
@@ -368,6 +327,7 @@ int main(int argc, char **argv)
     qint64 bytes = 0;
     QSet<QString> devicesOnline;
     int conditionLosses = 0;   // a device that was online said otherwise
+    QHash<QString, qint64> deadOffline;   // "LINE/FAMILY@ADDRESS" of a dead device -> first said offline
     QObject::connect(&counter, &MqttClient::connected,
                      [&] { counter.subscribe(QStringLiteral("jumo/%1/#").arg(stationName)); });
     QObject::connect(&counter, &MqttClient::messageReceived, [&](const QString &topic, const QByteArray &payload, bool) {
@@ -380,6 +340,8 @@ int main(int argc, char **argv)
             } else if (devicesOnline.remove(device)) {
                 ++conditionLosses;
             }
+            if (payload.contains("\"offline\"") && deadNames.contains(device) && !deadOffline.contains(device))
+                deadOffline.insert(device, wallMs());
         }
     });
     counter.connectToBroker();
@@ -402,18 +364,31 @@ int main(int argc, char **argv)
         return 1;
     }
     const qint64 publisherPid = publisher.processId();
+    const qint64 publisherStartMs = wallMs();
     const int deviceCount = lineCount * devicesPerLine;
+    const int liveCount = int(simulated.size());
     QElapsedTimer startup;
     startup.start();
-    if (!waitUntil([&] { return devicesOnline.size() == deviceCount; }, 300000)) {
-        std::fprintf(stderr, "only %lld of %d devices came online\n", qint64(devicesOnline.size()), deviceCount);
+    if (!waitUntil([&] { return devicesOnline.size() == liveCount; }, 300000)) {
+        std::fprintf(stderr, "only %lld of %d devices came online\n", qint64(devicesOnline.size()), liveCount);
         return 1;
     }
-    std::printf("every device online after %.1f s\n", double(startup.elapsed()) / 1000.0);
+    std::printf("every live device online after %.1f s\n", double(startup.elapsed()) / 1000.0);
+    // A line with a dead device is measured once the station has given up on it (it is
+    // probed with back-off from then on); how long that took is a figure of its own.
+    if (!waitUntil([&] { return deadOffline.size() == deadNames.size(); }, 600000)) {
+        std::fprintf(stderr, "the station never said the dead devices are offline\n");
+        return 1;
+    }
+    if (!deadNames.isEmpty())
+        std::printf("every dead device offline %.1f s after the publisher's start\n",
+                    double(*std::max_element(deadOffline.cbegin(), deadOffline.cend()) - publisherStartMs) / 1000.0);
 
     // The viewers.
     std::vector<Viewer> viewers(static_cast<size_t>(viewerCount));
-    QHash<QString, Change> changes;   // "LINE DEVICE"
+    AlarmChanges alarms(simulated, viewerCount, changeMs, holdMs);   // keys "LINE DEVICE"
+    // The station publishes what changed: the clear of a set state it never read is no news.
+    alarms.setClearsAfterUnseenSet(false);
     QList<double> total;              // simulator -> viewer
     QList<double> polled;             // simulator -> read by the station
     QList<double> delivered;          // read by the station -> viewer
@@ -427,21 +402,16 @@ int main(int argc, char **argv)
             viewer.current = f.at(4).toInt();
             viewer.summaries.append({f.at(1).toLongLong(), viewer.live, viewer.devices, viewer.current});
         } else if (f.value(0) == "M" && f.size() == 6) {
-            const QString key = QString::fromUtf8(f.at(1) + ' ' + f.at(2));
-            const auto change = changes.find(key);
-            if (change == changes.end() || (f.at(3) == "1") != change->state || change->seenBy.contains(v))
+            const std::optional<AlarmChanges::Change> change =
+                    alarms.observe(QString::fromUtf8(f.at(1) + ' ' + f.at(2)), f.at(3) == "1", v);
+            if (!change || !measuring)
                 return;
-            change->seenBy.insert(v);
             const qint64 received = f.at(4).toLongLong();
             const qint64 read = f.at(5).toLongLong();
-            if (measuring) {
-                total << double(received - change->t0);
-                delivered << double(received - read);
-                if (change->seenBy.size() == 1)
-                    polled << double(read - change->t0);
-            }
-            if (change->seenBy.size() == viewerCount)
-                changes.erase(change);
+            total << double(received - change->t0);
+            delivered << double(received - read);
+            if (change->seenBy.size() == 1)
+                polled << double(read - change->t0);
         }
     };
     for (int v = 0; v < viewerCount; ++v) {
@@ -475,60 +445,7 @@ int main(int argc, char **argv)
     std::printf("warm-up %d s\n", warmupS);
     spin(warmupS * 1000);
 
-    // Measured: a marker bit toggled every changeMs on a device with no change under way.
-    QRandomGenerator random(20261202);
-    const QStringList keys = simulated.keys();
-    int changesMade = 0;
-    int changesLost = 0;
-    int statesMissed = 0;             // ended (with --hold-ms) before a viewer saw them
-    QHash<QString, qint64> heldUntil;  // "LINE DEVICE" -> no new change before then
-    QTimer changeTimer;
-    QObject::connect(&changeTimer, &QTimer::timeout, [&] {
-        // A change no viewer reported within 30 s counts as lost.
-        const qint64 now = wallMs();
-        for (auto it = changes.begin(); it != changes.end();) {
-            if (now - it->t0 > 30000) {
-                ++changesLost;
-                it = changes.erase(it);
-            } else {
-                ++it;
-            }
-        }
-        for (int attempt = 0; attempt < 20; ++attempt) {
-            const QString key = keys.at(int(random.bounded(keys.size())));
-            if (changes.contains(key) || heldUntil.value(key) > now)
-                continue;
-            SimulatedDevice *device = simulated.value(key);
-            const Marker &marker = markers().value(device->map().family);
-            const QString reference = marker.entry + QLatin1Char('.') + marker.bit;
-            Change change;
-            change.state = !device->flag(reference);
-            change.t0 = wallMs();
-            setMarker(device, change.state);
-            changes.insert(key, change);
-            ++changesMade;
-            if (holdMs > 0) {
-                // Set, held, cleared: the device rests as long again before its next alarm.
-                heldUntil.insert(key, change.t0 + 2 * holdMs);
-                QTimer::singleShot(holdMs, device, [&, key, device, t0 = change.t0] {
-                    const auto held = changes.find(key);
-                    if (held != changes.end() && held->t0 == t0) {
-                        statesMissed += held->seenBy.size() < viewerCount ? 1 : 0;
-                        changes.erase(held);
-                    }
-                    if (!measuring)
-                        return;
-                    Change back;
-                    back.state = false;
-                    back.t0 = wallMs();
-                    setMarker(device, false);
-                    changes.insert(key, back);
-                    ++changesMade;
-                });
-            }
-            return;
-        }
-    });
+    // Measured: a marker bit changed every changeMs on a device with no change under way.
     measuring = true;
     const qint64 messagesBefore = messages;
     const int lossesBefore = conditionLosses;
@@ -542,9 +459,12 @@ int main(int argc, char **argv)
         requestsBefore << sim->requestsReceived();
     QElapsedTimer window;
     window.start();
-    changeTimer.start(changeMs);
+    readAges.start();
+    alarms.start();
     spin(seconds * 1000);
-    changeTimer.stop();
+    alarms.stopChanging();
+    const ReadAges::Longest unread = readAges.stop();
+    const QString loadAtEnd = loadAverage();
     const double elapsedS = double(window.elapsed()) / 1000.0;
     const double cpu = cpuSeconds(publisherPid) - cpuBefore;
     double viewerCpu = 0;
@@ -556,9 +476,10 @@ int main(int argc, char **argv)
     for (size_t l = 0; l < sims.size(); ++l)
         requests += sims[l]->requestsReceived() - requestsBefore.at(int(l));
     // The last changes get their time to arrive.
-    waitUntil([&] { return changes.isEmpty(); }, 30000 + holdMs);
+    waitUntil([&] { return alarms.idle(); }, 30000 + holdMs);
     measuring = false;
-    changesLost += int(changes.size());
+    alarms.finish();
+    alarms.giveUp();
 
     std::printf("\n| figure | measured |\n| --- | --- |\n");
     std::printf("| station CPU (jumo-publisher, %.0f s) | %.1f s = %.1f %% of one core |\n", elapsedS, cpu,
@@ -569,9 +490,13 @@ int main(int argc, char **argv)
                 double(requests) / elapsedS / lineCount);
     std::printf("| published (as a subscriber receives it) | %.0f messages/s, %.0f KiB/s |\n",
                 double(published) / elapsedS, double(publishedBytes) / elapsedS / 1024.0);
-    std::printf("| marker changes / not seen by every viewer | %d / %d |\n", changesMade, changesLost + statesMissed);
+    std::printf("| marker changes / not seen by every viewer | %d / %d |\n", alarms.made(),
+                alarms.lost() + alarms.missed());
     if (holdMs > 0)
-        std::printf("| alarm states held %d ms that ended before every viewer saw them | %d |\n", holdMs, statesMissed);
+        std::printf("| alarm states held %d ms that ended before every viewer saw them | %d of %d |\n", holdMs,
+                    alarms.missed(), alarms.setStates());
+    std::printf("| longest an entry of a live device went unread (requests at the simulator) | %.1f s (%s) |\n",
+                double(unread.ms) / 1000.0, qPrintable(unread.where));
     std::printf("| devices that stopped answering for a while (timeouts under load) | %d |\n",
                 conditionLosses - lossesBefore);
     std::printf("| simulator -> viewer | %s |\n", qPrintable(figures(total)));
@@ -579,6 +504,7 @@ int main(int argc, char **argv)
     std::printf("| read by the station -> viewer | %s |\n", qPrintable(figures(delivered)));
     std::printf("| viewer CPU (RemoteStation, each, mean) | %.1f %% of one core |\n",
                 100.0 * viewerCpu / double(viewerCount) / elapsedS);
+    std::printf("| load average at the end of the measurement (1, 5, 15 min) | %s |\n", qPrintable(loadAtEnd));
 
     // The broker killed (no goodbye to anyone) and started again 5 s later.
     QList<int> currentBefore;

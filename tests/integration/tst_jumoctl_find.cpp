@@ -24,6 +24,7 @@ private slots:
     void networkLinesAndBadListsAreRefused_data();
     void networkLinesAndBadListsAreRefused();
     void interruptSaysWhatWasFound();
+    void lateAnswerIsNotTakenAtTheNextSetting();
 
 private:
     struct Sim
@@ -188,6 +189,26 @@ void tst_JumoctlFind::interruptSaysWhatWasFound()
     const QString err = QString::fromUtf8(p.readAllStandardError());
     QCOMPARE(p.exitCode(), 130);
     QVERIFY2(err.contains("interrupted: 1 device(s) found before the search stopped"), qPrintable(err));
+}
+
+void tst_JumoctlFind::lateAnswerIsNotTakenAtTheNextSetting()
+{
+    // A TYA 200 set to answer 150 ms late (its own processing is 6 ms at most), outside the
+    // range: its late answer to a probe of 255 at 8N2 must not be read at 8N1, the next
+    // setting, whose probe asks the same. It failed so before the wait after a lost hint.
+    Sim late;
+    QVERIFY(startSim(late, {"--baud", "9600", "--format", "8N2", "--min-response", "150", "tya200@100"}));
+    QProcess p;
+    p.start(QStringLiteral(JUMOCTL_PATH), {"find", "--port", late.master(), "--baud", "9600"});
+    QVERIFY(p.waitForFinished(120000));
+    const QString out = QString::fromUtf8(p.readAllStandardOutput());
+    const QString err = QString::fromUtf8(p.readAllStandardError());
+    late.process.terminate();
+    late.process.waitForFinished(5000);
+    QCOMPARE(p.exitCode(), 0);
+    QCOMPARE(out.trimmed(), QStringLiteral("at 9600 8N2: address 255 answers as tya200, as every tya200 does whatever its "
+                                           "own address; its own is outside 1..31 (--from and --to look further)"));
+    QVERIFY2(err.contains("the line's settings where the most answered: --baud 9600 --format 8N2"), qPrintable(err));
 }
 
 QTEST_GUILESS_MAIN(tst_JumoctlFind)
