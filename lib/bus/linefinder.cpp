@@ -102,8 +102,9 @@ qint64 LineFinder::plannedMs(int firstAddress, int lastAddress)
         m_bus.setSettings(at);
         const DeviceScanner scanner(m_bus, m_families);
         const QList<int> addresses = addressesOf(setting, firstAddress, lastAddress);
-        // Hint, quick pass, the listener after it (a thorough probe of one address).
-        total += (setting.alwaysAnswered() ? scanner.quickTimeoutMs() : 0)
+        // Hint (waited out to the full timeout), quick pass, the listener after it (a
+        // thorough probe of one address).
+        total += (setting.alwaysAnswered() ? scanner.fullTimeoutMs() : 0)
                 + qint64(addresses.size()) * scanner.quickTimeoutMs() + scanner.thoroughWorstMs(1);
     }
     m_bus.setSettings(m_own);
