@@ -610,7 +610,10 @@ void Bus::applyPoll(const Scheduler::Turn &turn, const ModbusResult &result, qin
     }
     if (out.online)
         setOnline(turn.device, *out.online);
-    if (isOnline(turn.device))
+    // Heard: it answered (a timeout or a gateway's exception is no sign of the device).
+    const bool answered = result.status == ModbusResult::Status::Ok
+            || (result.status == ModbusResult::Status::Exception && !result.isGatewayException());
+    if (answered && isOnline(turn.device))
         m_identities.heard(turn.device);
     if (out.cycleMs) {
         if (DeviceStatistics *s = m_store.statistics(turn.device)) {

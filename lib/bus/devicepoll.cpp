@@ -214,23 +214,31 @@ PollChoice DevicePoll::choose(qint64 now, bool polling, PollChoice::Tier from) c
     // stopped answering gets at most half of the line, whatever its blocks' deadlines.
     if (now < m_pausedUntilMs)
         return best;
+    const auto ownTier = [this](const ReadBlock &b) {
+        // Live values are read whenever nothing else is due, unless the device has an
+        // interval: then they are due at it, like any deadline.
+        return b.pollClass == PollClass::Alarm                                ? PollChoice::AlarmDue
+                : b.pollClass == PollClass::Live && m_info.intervalMs <= 0 ? PollChoice::Filler
+                                                                           : PollChoice::Due;
+    };
+    // A block whose answer was lost is asked again before anything else of the device,
+    // so a device that stopped answering is called offline after its retries, not once
+    // each of its blocks has timed out (a minute for a dTRON at 19200).
+    for (int i = 0; i < m_attempts.size(); ++i) {
+        if (m_attempts.at(i) > 0) {
+            const PollChoice retry{i, ownTier(m_info.plan.blocks.at(i)), now - m_pausedUntilMs};
+            return retry.tier >= from ? retry : best;
+        }
+    }
     const int ceiling = targetMs(PollClass::Setting);
     for (int i = 0; i < m_info.plan.blocks.size(); ++i) {
         const ReadBlock &b = m_info.plan.blocks.at(i);
         const qint64 done = doneMs(b);
         const qint64 age = now - done;
         const int target = targetMs(b.pollClass);
-        // Live values are read whenever nothing else is due, unless the device has an
-        // interval: then they are due at it, like any deadline.
-        const bool filler = b.pollClass == PollClass::Live && m_info.intervalMs <= 0;
-        const PollChoice::Tier ownTier = b.pollClass == PollClass::Alarm ? PollChoice::AlarmDue
-                : !filler                                             ? PollChoice::Due
-                                                                      : PollChoice::Filler;
+        const bool filler = ownTier(b) == PollChoice::Filler;
         PollChoice here{i, PollChoice::None, 0};
-        if (m_attempts.at(i) > 0) {
-            here.tier = ownTier;
-            here.overdueMs = now - m_pausedUntilMs;
-        } else if (forced(b)) {
+        if (forced(b)) {
             const qint64 askedMs = std::max(m_forcedMs[classIndex(b.pollClass)], m_requestedMs);
             here.tier = b.pollClass == PollClass::Alarm ? PollChoice::AlarmDue : PollChoice::Due;
             // Asked for at once (after a write, a reconnect, an identity check): ahead of
@@ -239,7 +247,7 @@ PollChoice DevicePoll::choose(qint64 now, bool polling, PollChoice::Tier from) c
         } else if (!polling) {
             continue;
         } else if (age >= target && !filler) {
-            here.tier = ownTier;
+            here.tier = ownTier(b);
             here.overdueMs = age - target;
         } else if (b.shown && filler && age >= shownTargetMs) {
             here.tier = PollChoice::Due;
@@ -250,7 +258,7 @@ PollChoice DevicePoll::choose(qint64 now, bool polling, PollChoice::Tier from) c
         } else if (age >= target) {
             // Live values a view shows count as twice as old: read more often than the
             // others, without starving them (a tier of their own would).
-            here.tier = ownTier;
+            here.tier = ownTier(b);
             here.overdueMs = (b.shown && filler ? 2 : 1) * (age - target);
         } else {
             continue;
@@ -397,7 +405,8 @@ void DevicePoll::checkCycle(qint64 now, PollOutcome &outcome, bool polling)
         const qint64 done = doneMs(b);
         if (forced(b))
             return;
-        if (done >= m_cycleStartMs)
+        // (The block that ended the last cycle was read at its start: not in this one.)
+        if (done > m_cycleStartMs)
             continue;
         if (!polling || b.pollClass == PollClass::Live || now - done >= targetMs(b.pollClass))
             return;

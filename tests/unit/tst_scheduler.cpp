@@ -105,6 +105,8 @@ private slots:
     void valuesTurnStaleWhenNotRead();
     void shownValuesTurnStaleSoonOnAFullLine();
     void offlineDeviceIsUnknownAndComesBack();
+    void deviceThatNeverAnswersIsOfflineAfterItsRetries();
+    void aCycleReadsEveryBlock();
     void bitChangeKeepsTheOtherBits_data();
     void bitChangeKeepsTheOtherBits();
     void bitChangeRefusedWhereStateIsUnreported();
@@ -638,6 +640,51 @@ void tst_Scheduler::offlineDeviceIsUnknownAndComesBack()
     QVERIFY(line.runUntil([&] { return line.bus->isOnline(quantrol); }, 60000));
     line.run(3000);
     QCOMPARE(line.bus->entryState(quantrol, "controller_setpoint")->validity, Validity::Current);
+}
+
+void tst_Scheduler::deviceThatNeverAnswersIsOfflineAfterItsRetries()
+{
+    // A dTRON (16 blocks) that is not there from the start, identities checked: the block
+    // whose answer was lost is asked again first, so the device is offline after two
+    // blocks have failed with their retries, not once each of its blocks has timed out;
+    // and a timeout is no reason to check what the device is.
+    Line line({{"ipc300", 1}}, 19200);
+    line.bus->setIdentityCheck({families().family("ipc300"), families().family("dtron300")});
+    QVERIFY(line.bus->open());
+    line.transport->drop = [](const ModbusRequest &r) { return r.slave == 7; };
+    line.bus->addDevice(families().family("ipc300"), 1);
+    const DeviceId dtron = line.bus->addDevice(families().family("dtron300"), 7);
+    QVERIFY(line.runUntil([&] { return line.bus->condition(dtron).state == DeviceCondition::State::Offline; }, 120000));
+    QList<quint16> asked;
+    for (const auto &sent : line.transport->sent) {
+        if (sent.request.slave == 7)
+            asked << sent.request.start;
+    }
+    const int attempts = DevicePoll::failuresBeforeOffline * (BusSettings().retries + 1);
+    QVERIFY2(asked.size() == attempts, qPrintable(QStringLiteral("%1 requests before offline after %2 ms")
+                                                           .arg(asked.size())
+                                                           .arg(line.clock.nowMs())));
+    // Each block with its retries in a row.
+    for (int i = 0; i < asked.size(); ++i)
+        QCOMPARE(asked[i], asked[i - i % (BusSettings().retries + 1)]);
+    QVERIFY2(line.clock.nowMs() < 15000, qPrintable(QString::number(line.clock.nowMs())));
+}
+
+void tst_Scheduler::aCycleReadsEveryBlock()
+{
+    // A selection in three blocks (jumoctl monitor): each cycle it reports is three reads,
+    // the block that ended one cycle not counted for the next.
+    Line line({{"ipc300", 1}}, 38400);
+    QVERIFY(line.bus->open());
+    const DeviceId id = line.bus->addDevice(families().family("ipc300"), 1);
+    line.bus->setPollEntries(id, {"software_version", "load_voltage", "min_alarm"});
+    QList<qsizetype> ends;
+    QObject::connect(line.bus.get(), &Bus::pollCycleFinished, line.bus.get(),
+                     [&] { ends << line.transport->sent.size(); });
+    line.run(3000);
+    QVERIFY(ends.size() >= 5);
+    for (int i = 1; i < ends.size(); ++i)
+        QCOMPARE(ends[i] - ends[i - 1], qsizetype(3));
 }
 
 void tst_Scheduler::bitChangeKeepsTheOtherBits_data()
