@@ -16,7 +16,8 @@ namespace jumo::BenchReport {
 // AGE_MS...": the faceplates with a part of them on screen, the faceplates, the devices
 // online, the faceplate values never read, the oldest value ("ipc300@1/load_current", "-"
 // for none), the values of devices online never read (comma-separated, "-" for none),
-// and for every other faceplate value of every device the time since its value was read
+// and for every other faceplate value of every device (not the settings its bars are scaled
+// by, which are read as settings) the time since its value was read
 // (the value the faceplate shows, repainted at most DeviceTile's 100 ms later), in the
 // bus's own clock.
 inline void faceplateAgesEverySecond(MainWindow &window)
@@ -43,7 +44,7 @@ inline void faceplateAgesEverySecond(MainWindow &window)
                 const std::shared_ptr<const RegisterMap> map = source->deviceMap(id);
                 if (!map)
                     continue;
-                for (const QString &entry : map->faceplateEntries()) {
+                for (const QString &entry : map->faceplateEntries(false)) {
                     const EntryState *state = source->entryState(id, entry);
                     if (!state || !state->hasValue()) {
                         ++neverRead;

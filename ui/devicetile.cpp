@@ -790,7 +790,9 @@ void DeviceTile::keyPressEvent(QKeyEvent *event)
 void DeviceTile::showEvent(QShowEvent *event)
 {
     QWidget::showEvent(event);
-    m_values->setShown(this, true, m_map.faceplateEntries());
+    // Its values, not the settings its bars are scaled by (read every minute and at once
+    // after a write, as every setting).
+    m_values->setShown(this, true, m_map.faceplateEntries(false));
     if (m_dirty)
         refresh();
 }

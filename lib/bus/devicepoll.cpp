@@ -177,8 +177,8 @@ bool DevicePoll::requestCycle(qint64 now)
 {
     if (m_info.plan.blocks.isEmpty())
         return false;
-    if (m_requestedMs < 0)
-        m_requestedMs = now;
+    // From now: a block read before this request, in a cycle still under way, is read again.
+    m_requestedMs = now;
     if (m_readsThisCycle == 0)
         m_cycleStartMs = now;
     return true;
@@ -231,6 +231,7 @@ PollChoice DevicePoll::choose(qint64 now, bool polling, PollChoice::Tier from) c
         }
     }
     const int ceiling = targetMs(PollClass::Setting);
+    const qint64 deadline = ceiling + (maximumAgeMs - settingTargetMs);
     for (int i = 0; i < m_info.plan.blocks.size(); ++i) {
         const ReadBlock &b = m_info.plan.blocks.at(i);
         const qint64 done = doneMs(b);
@@ -243,23 +244,35 @@ PollChoice DevicePoll::choose(qint64 now, bool polling, PollChoice::Tier from) c
             here.tier = b.pollClass == PollClass::Alarm ? PollChoice::AlarmDue : PollChoice::Due;
             // Asked for at once (after a write, a reconnect, an identity check): ahead of
             // whatever is merely late in its tier, such as the shown values of a full line.
-            here.overdueMs = settingTargetMs + std::max<qint64>(0, now - askedMs);
+            here.overdueMs = maximumAgeMs + std::max<qint64>(0, now - askedMs);
         } else if (!polling) {
             continue;
-        } else if (age >= target && !filler) {
-            here.tier = ownTier(b);
+        } else if (b.pollClass == PollClass::Alarm) {
+            if (age < target)
+                continue;
+            here.tier = PollChoice::AlarmDue;
             here.overdueMs = age - target;
+        } else if (age >= ceiling) {
+            // Due, the most overdue first: ranked by the time left to its deadline, the
+            // minute every entry is read within. (Below: the same for each kind.)
+            here.tier = PollChoice::Due;
+            here.overdueMs = age - deadline;
         } else if (b.shown && filler && age >= shownTargetMs) {
             here.tier = PollChoice::Due;
-            here.overdueMs = age - shownTargetMs;
-        } else if (age >= ceiling) {
+            here.overdueMs = age - shownDeadlineMs;
+        } else if (!filler && age >= target) {
             here.tier = PollChoice::Due;
-            here.overdueMs = age - ceiling;
-        } else if (age >= target) {
-            // Live values a view shows count as twice as old: read more often than the
-            // others, without starving them (a tier of their own would).
-            here.tier = ownTier(b);
-            here.overdueMs = (b.shown && filler ? 2 : 1) * (age - target);
+            here.overdueMs = age - (b.pollClass == PollClass::Setting ? deadline : target);
+        } else if (filler) {
+            // Live values: as often as the rest allows, the oldest first (those a view
+            // shows count as twice as old).
+            here.tier = PollChoice::Filler;
+            here.overdueMs = (b.shown ? 2 : 1) * (age - target);
+        } else if (b.pollClass == PollClass::Setting && age >= settingEarlyMs) {
+            // A setting may be read early where the line has time, so the settings of a
+            // line read together at its start do not stay due together every minute.
+            here.tier = PollChoice::Filler;
+            here.overdueMs = age - settingEarlyMs;
         } else {
             continue;
         }

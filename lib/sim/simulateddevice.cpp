@@ -307,6 +307,23 @@ double SimulatedDevice::number(const QString &id) const
 
 bool SimulatedDevice::setFlag(const QString &reference, bool on)
 {
+    if (!setOneFlag(reference, on))
+        return false;
+    // The same state reported twice (a bool word and a bit of a status word): both agree,
+    // as on the device.
+    if (m_map->simulation) {
+        for (const auto &[first, second] : m_map->simulation->links) {
+            if (first == reference)
+                setOneFlag(second, on);
+            else if (second == reference)
+                setOneFlag(first, on);
+        }
+    }
+    return true;
+}
+
+bool SimulatedDevice::setOneFlag(const QString &reference, bool on)
+{
     const RegisterEntry *e = m_map->entry(reference.section(QLatin1Char('.'), 0, 0));
     if (!e)
         return false;

@@ -39,7 +39,8 @@ public:
     quint16 word(quint16 address) const { return m_words.value(address); }
     // Sets raw words at defined addresses; returns false if any address is undefined.
     bool setWords(quint16 address, const QList<quint16> &words);
-    // Switches a bit ("entry.bit") or a bool entry.
+    // Switches a bit ("entry.bit") or a bool entry, and the state's other word where the map
+    // links two (a bool word and a bit of a status word report one state).
     bool setFlag(const QString &reference, bool on);
     bool flag(const QString &reference) const;
     // Makes a float read as a device error value ("input unplugged"); Ok clears it.
@@ -52,6 +53,7 @@ signals:
     void registersWritten(quint16 start, quint16 count);
 
 private:
+    bool setOneFlag(const QString &reference, bool on);
     QByteArray exception(quint8 function, quint8 code) const;
     QByteArray readRegisters(quint8 function, quint16 start, quint16 count) const;
     QByteArray writeRegisters(quint8 function, quint16 start, const QList<quint16> &values, bool broadcast);

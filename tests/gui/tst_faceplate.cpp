@@ -146,6 +146,8 @@ void tst_Faceplate::scaleThatGivesNoBarSaysWhy()
     QVERIFY(sim->setNumber("power_limit", 0));
     QVERIFY(sim->setNumber("load_voltage_limit", -5));
     QVERIFY(sim->setWords(nominalAddress, {7}));   // the map knows 0, 1 and 2
+    // Scales are settings, read within the minute: one cycle now instead of waiting.
+    window->bus()->requestCycle(tile->device());
     QTRY_COMPARE_WITH_TIMEOUT(tile->barsDrawn(), 1, 20000);
     const QString tip = tile->toolTip();
     QVERIFY2(tip.contains("Power – No bar: its scale, 0 W, is not above zero."), qPrintable(tip));
@@ -156,6 +158,7 @@ void tst_Faceplate::scaleThatGivesNoBarSaysWhy()
     QVERIFY(sim->setNumber("power_limit", powerLimit));
     QVERIFY(sim->setNumber("load_voltage_limit", voltageLimit));
     QVERIFY(sim->setWords(nominalAddress, {nominal}));
+    window->bus()->requestCycle(tile->device());
     QTRY_COMPARE_WITH_TIMEOUT(tile->barsDrawn(), 4, 20000);
 }
 
@@ -236,6 +239,7 @@ void tst_Faceplate::scaleOfTwoNegativePartsGivesNoBar()
     });
     QVERIFY(sim->setNumber("power_limit", -20));
     QVERIFY(sim->setNumber("load_voltage_limit", -10));
+    window.bus()->requestCycle(tile->device());   // (scales are settings, read within the minute)
     QTRY_COMPARE_WITH_TIMEOUT(tile->barsDrawn(), 2, 20000);
     QVERIFY2(tile->toolTip().contains("Power – No bar: Power limit value = -20, a part of its scale, is not above zero."),
              qPrintable(tile->toolTip()));

@@ -276,13 +276,16 @@ void tst_RegisterMaps::pollClasses_data()
     QTest::addColumn<QString>("entry");
     QTest::addColumn<QString>("expected");
     QTest::newRow("ipc300 malfunction bits: alarm") << "ipc300" << "malfunction_signal_1" << "alarm";
-    QTest::newRow("ipc300 faceplate mode word: alarm") << "ipc300" << "manual_mode_active" << "alarm";
+    QTest::newRow("ipc300 faceplate mode word: alarm") << "ipc300" << "binary_signal_2" << "alarm";
+    // The same state as a word of its own, which the faceplate takes from the bits.
+    QTest::newRow("ipc300 manual mode word: live") << "ipc300" << "manual_mode_active" << "live";
     QTest::newRow("ipc300 load voltage: live") << "ipc300" << "load_voltage" << "live";
     QTest::newRow("ipc300 setpoint (RAM): setting") << "ipc300" << "input_setpoint" << "setting";
     QTest::newRow("ipc300 software version (text): setting") << "ipc300" << "software_version" << "setting";
     QTest::newRow("ipc300 nominal current (identity): setting") << "ipc300" << "nominal_current" << "setting";
     QTest::newRow("tya200 malfunction bits: alarm") << "tya200" << "malfunction_signals_3" << "alarm";
-    QTest::newRow("tya200 status bits: live") << "tya200" << "binary_signals_1" << "live";
+    QTest::newRow("tya200 faceplate mode bits: alarm") << "tya200" << "binary_signals_1" << "alarm";
+    QTest::newRow("tya200 inputs: live") << "tya200" << "digital_input_1" << "live";
     QTest::newRow("dtron300 program state (warning bit): alarm") << "dtron300" << "program_status" << "alarm";
     QTest::newRow("dtron300 controller state (faceplate mode): alarm") << "dtron300" << "controller_status" << "alarm";
     QTest::newRow("dtron300 process value: live") << "dtron300" << "filtered_process_value" << "live";

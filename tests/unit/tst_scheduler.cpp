@@ -50,6 +50,21 @@ qint64 longestUnread(const QList<qint64> &reads, qint64 fromMs, qint64 toMs)
     return std::max(longest, toMs - last);
 }
 
+// The age of an entry's value (the time since it was last read) sampled every second from
+// fromMs to toMs, as the HMI benchmark samples its faceplates.
+QList<qint64> sampledAges(const QList<qint64> &reads, qint64 fromMs, qint64 toMs)
+{
+    QList<qint64> ages;
+    qsizetype next = 0;
+    qint64 last = -1;
+    for (qint64 t = fromMs; t <= toMs; t += 1000) {
+        while (next < reads.size() && reads[next] <= t)
+            last = reads[next++];
+        ages << (last < 0 ? t : t - last);
+    }
+    return ages;
+}
+
 // The shortest time between two reads of an entry after fromMs.
 qint64 shortestInterval(const QList<qint64> &reads, qint64 fromMs)
 {
@@ -126,11 +141,12 @@ void tst_Scheduler::classDeadlinesHoldOnAFullLine_data()
     QTest::addColumn<int>("alarmMs");       // the longest an alarm word may go unread
     QTest::addColumn<bool>("faceplates");   // every faceplate shown, as on the HMI's overview
     QTest::addColumn<int>("faceplateMs");   // the longest a faceplate value may go unread
+    QTest::addColumn<int>("faceplateP99Ms"); // its age, sampled every second, at the 99th percentile
     QTest::addColumn<bool>("everyMinute");  // every readable entry read at least every minute
     const QStringList three{"ipc300", "tya200", "dtron300"};
     const QStringList four{"ipc300", "tya200", "dtron300", "quantrol"};
-    QTest::newRow("38400, IPC 300, TYA 200, dTRON 300") << 38400 << three << 1300 << false << 60000 << true;
-    QTest::newRow("19200, all four families") << 19200 << four << 2500 << false << 60000 << true;
+    QTest::newRow("38400, IPC 300, TYA 200, dTRON 300") << 38400 << three << 1300 << false << 60000 << 60000 << true;
+    QTest::newRow("19200, all four families") << 19200 << four << 2500 << false << 60000 << 60000 << true;
     // Every faceplate shown: its setpoints are read as live values, and its live values
     // at a target of their own (3 s), after the alarm words and, with settings and
     // whatever reached the ceiling, the most overdue first. Alarm words and faceplates
@@ -138,8 +154,8 @@ void tst_Scheduler::classDeadlinesHoldOnAFullLine_data()
     // every second, 62 faceplate blocks): the faceplates get what the alarm words and the
     // settings leave. These are the longest times, not percentiles (before the faceplates
     // had a target of their own: alarm 2.3 s and faceplate 23 s at 38400).
-    QTest::newRow("38400, faceplates shown") << 38400 << three << 1500 << true << 10000 << true;
-    QTest::newRow("19200, all four families, faceplates shown") << 19200 << four << 2500 << true << 45000 << false;
+    QTest::newRow("38400, faceplates shown") << 38400 << three << 1500 << true << 10000 << 3000 << true;
+    QTest::newRow("19200, all four families, faceplates shown") << 19200 << four << 2500 << true << 45000 << 45000 << false;
 }
 
 void tst_Scheduler::classDeadlinesHoldOnAFullLine()
@@ -151,6 +167,7 @@ void tst_Scheduler::classDeadlinesHoldOnAFullLine()
     QFETCH(int, alarmMs);
     QFETCH(bool, faceplates);
     QFETCH(int, faceplateMs);
+    QFETCH(int, faceplateP99Ms);
     QFETCH(bool, everyMinute);
     const QList<QPair<QString, int>> devices = fullLine(families);
     Line line(devices, baud);
@@ -178,6 +195,12 @@ void tst_Scheduler::classDeadlinesHoldOnAFullLine()
     QHash<PollClass, qint64> longest;
     QHash<PollClass, qint64> shortest;
     qint64 longestFaceplate = 0;
+    QList<qint64> faceplateAges;
+    QStringList failures;   // (checked after the figures are printed)
+    const auto check = [&failures](bool ok, const QString &what) {
+        if (!ok)
+            failures << what;
+    };
     for (int i = 0; i < ids.size(); ++i) {
         const auto map = line.bus->deviceMap(ids[i]);
         for (const RegisterEntry &e : map->entries()) {
@@ -188,12 +211,13 @@ void tst_Scheduler::classDeadlinesHoldOnAFullLine()
             const QString where = QStringLiteral("%1@%2 %3 (%4)").arg(map->family).arg(devices[i].second).arg(e.id, pollClassName(e.pollClass));
             // Every readable entry at least every minute.
             if (everyMinute)
-                QVERIFY2(unread <= 60000, qPrintable(QStringLiteral("%1 unread for %2 ms").arg(where).arg(unread)));
+                check(unread <= 60000, QStringLiteral("%1 unread for %2 ms").arg(where).arg(unread));
             if (e.pollClass == PollClass::Alarm)
-                QVERIFY2(unread <= alarmMs, qPrintable(QStringLiteral("%1 unread for %2 ms").arg(where).arg(unread)));
+                check(unread <= alarmMs, QStringLiteral("%1 unread for %2 ms").arg(where).arg(unread));
             if (map->faceplateEntries(false).contains(e.id)) {
-                QVERIFY2(unread <= faceplateMs, qPrintable(QStringLiteral("%1 (faceplate) unread for %2 ms").arg(where).arg(unread)));
+                check(unread <= faceplateMs, QStringLiteral("%1 (faceplate) unread for %2 ms").arg(where).arg(unread));
                 longestFaceplate = std::max(longestFaceplate, unread);
+                faceplateAges += sampledAges(times, from, to);
             }
             longest[e.pollClass] = std::max(longest.value(e.pollClass), unread);
             // (A shown setting is read as a live value: not counted as a setting.)
@@ -204,20 +228,52 @@ void tst_Scheduler::classDeadlinesHoldOnAFullLine()
             // Validity follows the class: nothing went stale on the way.
             const EntryState *s = line.bus->entryState(ids[i], e.id);
             if (everyMinute)
-                QVERIFY2(s && s->validity == Validity::Current, qPrintable(where + QStringLiteral(" is not current")));
+                check(s && s->validity == Validity::Current, where + QStringLiteral(" is not current"));
         }
     }
-    // Settings are not read more often than their class asks (the line time goes to the rest).
-    QVERIFY2(shortest.value(PollClass::Setting) >= DevicePoll::settingTargetMs,
-             qPrintable(QString::number(shortest.value(PollClass::Setting))));
+    // Settings are not read more often than their class allows (the line time goes to the
+    // rest): early only where the line had time.
+    check(shortest.value(PollClass::Setting) >= DevicePoll::settingEarlyMs,
+          QStringLiteral("a setting read again after %1 ms").arg(shortest.value(PollClass::Setting)));
     // The power units kept their keepalive.
     for (int i = 0; i < devices.size(); ++i) {
-        if (devices[i].first == "ipc300" || devices[i].first == "tya200")
-            QVERIFY(longestGap(*line.transport, quint8(devices[i].second), from, to) < 4000);
+        if (devices[i].first == "ipc300" || devices[i].first == "tya200") {
+            const qint64 gap = longestGap(*line.transport, quint8(devices[i].second), from, to);
+            check(gap < 4000, QStringLiteral("%1 ms between two requests to %2").arg(gap).arg(devices[i].second));
+        }
     }
-    qInfo("longest unread: alarm %lld ms, faceplate %lld ms, live %lld ms, setting %lld ms; %lld requests in %lld s",
-          longest.value(PollClass::Alarm), longestFaceplate, longest.value(PollClass::Live),
-          longest.value(PollClass::Setting), qint64(line.transport->sent.size()), to / 1000);
+    // What the line's time went to, by the class each request read.
+    QMap<QString, double> share;
+    {
+        const auto &sent = line.transport->sent;
+        for (qsizetype k = 1; k < sent.size(); ++k) {
+            if (sent[k - 1].atMs < from)
+                continue;
+            const ModbusRequest &r = sent[k - 1].request;
+            const int dev = r.slave - 1;
+            QString c = QStringLiteral("other");
+            if (dev >= 0 && dev < ids.size()) {
+                const auto map = line.bus->deviceMap(ids[dev]);
+                if (const RegisterEntry *e = map->entryAt(r.start)) {
+                    const PollClass pc = line.bus->pollClass(ids[dev], e->id);
+                    c = pollClassName(pc) + (pc == PollClass::Live && map->faceplateEntries(false).contains(e->id) ? QStringLiteral(" (faceplates)") : QString());
+                }
+            }
+            share[c] += sent[k].atMs - sent[k - 1].atMs;
+        }
+    }
+    QStringList shares;
+    for (auto it = share.cbegin(); it != share.cend(); ++it)
+        shares << QStringLiteral("%1 %2 %").arg(it.key()).arg(100.0 * it.value() / double(to - from), 0, 'f', 1);
+    std::sort(faceplateAges.begin(), faceplateAges.end());
+    const qint64 faceplateP99 = faceplateAges.isEmpty() ? 0 : faceplateAges.at(faceplateAges.size() * 99 / 100);
+    qInfo("longest unread: alarm %lld ms, faceplate %lld ms (sampled age p99 %lld ms), live %lld ms, setting %lld ms; "
+          "%lld requests in %lld s; line time: %s",
+          longest.value(PollClass::Alarm), longestFaceplate, faceplateP99, longest.value(PollClass::Live),
+          longest.value(PollClass::Setting), qint64(line.transport->sent.size()), to / 1000,
+          qPrintable(shares.join(QStringLiteral(", "))));
+    check(faceplateP99 <= faceplateP99Ms, QStringLiteral("faceplate age p99 %1 ms").arg(faceplateP99));
+    QVERIFY2(failures.isEmpty(), qPrintable(QStringLiteral("%1 (%2 in all)").arg(failures.mid(0, 5).join(QStringLiteral("; "))).arg(failures.size())));
 }
 
 void tst_Scheduler::keepaliveAndPollsHoldDuringScanAndRestore()
@@ -336,9 +392,9 @@ void tst_Scheduler::shownEntryMovesUpAClassAndBack()
     QCOMPARE(line.bus->pollClass(id, "load_voltage_limit"), PollClass::Setting);
     QCOMPARE(line.bus->pollClass(id, "load_voltage"), PollClass::Live);
     reads.clear();
-    line.run(20000);
+    line.run(10000);   // (the setting block, read at the start, is read early from 20 s of age)
     QCOMPARE(reads.value("load_voltage_limit"), 0);
-    QVERIFY(reads.value("load_voltage") > 20);
+    QVERIFY(reads.value("load_voltage") > 10);
     // Moved back, the setting is as current as a setting read then.
     QCOMPARE(line.bus->entryState(id, "load_voltage_limit")->validity, Validity::Current);
 
