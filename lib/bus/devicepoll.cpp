@@ -231,7 +231,7 @@ PollChoice DevicePoll::choose(qint64 now, bool polling, PollChoice::Tier from) c
         }
     }
     const int ceiling = targetMs(PollClass::Setting);
-    const qint64 deadline = ceiling + (maximumAgeMs - settingTargetMs);
+    const qint64 deadline = ceiling + (settingDeadlineMs - settingTargetMs);
     for (int i = 0; i < m_info.plan.blocks.size(); ++i) {
         const ReadBlock &b = m_info.plan.blocks.at(i);
         const qint64 done = doneMs(b);
@@ -244,7 +244,7 @@ PollChoice DevicePoll::choose(qint64 now, bool polling, PollChoice::Tier from) c
             here.tier = b.pollClass == PollClass::Alarm ? PollChoice::AlarmDue : PollChoice::Due;
             // Asked for at once (after a write, a reconnect, an identity check): ahead of
             // whatever is merely late in its tier, such as the shown values of a full line.
-            here.overdueMs = maximumAgeMs + std::max<qint64>(0, now - askedMs);
+            here.overdueMs = settingDeadlineMs + std::max<qint64>(0, now - askedMs);
         } else if (!polling) {
             continue;
         } else if (b.pollClass == PollClass::Alarm) {
@@ -253,8 +253,8 @@ PollChoice DevicePoll::choose(qint64 now, bool polling, PollChoice::Tier from) c
             here.tier = PollChoice::AlarmDue;
             here.overdueMs = age - target;
         } else if (age >= ceiling) {
-            // Due, the most overdue first: ranked by the time left to its deadline, the
-            // minute every entry is read within. (Below: the same for each kind.)
+            // Due, ranked by the time left to its deadline (below: the same for each kind),
+            // so every entry is read within the minute.
             here.tier = PollChoice::Due;
             here.overdueMs = age - deadline;
         } else if (b.shown && filler && age >= shownTargetMs) {

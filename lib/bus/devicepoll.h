@@ -74,14 +74,15 @@ public:
     static constexpr int failuresBeforeOffline = 2;   // blocks failed after all their retries
     static constexpr int firstBackoffMs = 1000;
     static constexpr int maximumBackoffMs = 30000;
-    // Target ages: an alarm block is read again after 1.1 s (an alarm held for 2 s is seen
-    // within 1.5 s at the 99th percentile, and 31 devices' alarm words leave a 38400 line
-    // room for their faceplates), a setting after 55 s (so within the minute whatever else
-    // is due), live values whenever nothing else is. No block goes unread longer than
-    // maximumAgeMs: past the ceiling each is due, ranked by the time left to it.
-    static constexpr int alarmTargetMs = 1100;
-    static constexpr int settingTargetMs = 55000;
-    static constexpr int maximumAgeMs = 60000;
+    // Target ages: an alarm block is read again after 1.2 s (an alarm held for 2 s is seen
+    // within 1.5 s at the 99th percentile, and 31 devices' alarm words, some 38 % of a
+    // 38400 line, leave room for their faceplates), a setting from 50 s, ranked by the time left to 55 s (so
+    // within the minute on a full line, whose time goes to the shown values until then),
+    // live values whenever nothing else is. Past the ceiling (the setting target) every
+    // block is due, ranked the same way.
+    static constexpr int alarmTargetMs = 1200;
+    static constexpr int settingTargetMs = 50000;
+    static constexpr int settingDeadlineMs = 55000;
     // Settings may be read from this age on where the line has time (with the live values).
     static constexpr int settingEarlyMs = 20000;
     // Live values a view shows (a faceplate, an open page): due from shownTargetMs, ranked

@@ -147,21 +147,11 @@ int main(int argc, char *argv[])
     const int startupRuns = std::max(0, parser.value(QStringLiteral("startup-runs")).toInt());
     const QString platform = parser.value(QStringLiteral("platform"));
     const QString hmiProgram = parser.value(QStringLiteral("hmi"));
-    const std::optional<LineFormat> format = LineFormat::parse(baud, QStringLiteral("8N1"));
-    if (!format) {
-        std::fprintf(stderr, "baud %d is not a line speed\n", baud);
-        return 2;
-    }
     const FamilyRegistry registry = FamilyRegistry::load({}, true);
-    const QStringList families = familiesAt(registry, baud);
-    if (families.isEmpty()) {
-        std::fprintf(stderr, "no family runs at %d baud\n", baud);
-        return 2;
-    }
-    if (const QString wrong = checkMarkers(registry, families); !wrong.isEmpty()) {
-        std::fprintf(stderr, "marker bits: %s\n", qPrintable(wrong));
-        return 1;
-    }
+    const BenchLine setup = benchLine(registry, baud);
+    if (setup.exitCode != 0)
+        return setup.exitCode;
+    const QStringList &families = setup.families;
     Home demoHome;   // the demo's own, so its journal is not the one read below
     Home home;
     if (!demoHome.make() || !home.make()) {
@@ -222,7 +212,7 @@ int main(int argc, char *argv[])
         else
             live.insert(name, device);
     }
-    if (!sim.open(pty.deviceEnd(), *format)) {
+    if (!sim.open(pty.deviceEnd(), setup.format)) {
         std::fprintf(stderr, "the simulator cannot open %s\n", qPrintable(pty.deviceEnd()));
         return 1;
     }

@@ -232,22 +232,11 @@ int main(int argc, char **argv)
     const int changeMs = std::max(10, parser.value(QStringLiteral("change-ms")).toInt());
     const int holdMs = std::max(0, parser.value(QStringLiteral("hold-ms")).toInt());
     const int deadPerLine = std::clamp(parser.value(QStringLiteral("dead")).toInt(), 0, devicesPerLine - 1);
-    const std::optional<LineFormat> format = LineFormat::parse(baud, QStringLiteral("8N1"));
-    if (!format) {
-        std::fprintf(stderr, "baud %d is not a line speed\n", baud);
-        return 2;
-    }
     const FamilyRegistry registry = FamilyRegistry::load({}, true);
-    // The families whose devices run at this speed (the Quantrol tops out at 19200 baud).
-    const QStringList families = familiesAt(registry, baud);
-    if (families.isEmpty()) {
-        std::fprintf(stderr, "no family runs at %d baud\n", baud);
-        return 2;
-    }
-    if (const QString wrong = checkMarkers(registry, families); !wrong.isEmpty()) {
-        std::fprintf(stderr, "marker bits: %s\n", qPrintable(wrong));
-        return 1;
-    }
+    const BenchLine setup = benchLine(registry, baud);
+    if (setup.exitCode != 0)
+        return setup.exitCode;
+    const QStringList &families = setup.families;
     std::printf("station: %d lines x %d devices (%s) at %d baud, %d of them per line dead, %d viewers\n", lineCount,
                 devicesPerLine, qPrintable(families.join(QLatin1Char('/'))), baud, deadPerLine, viewerCount);
     std::printf("marker bits (alarm or warning bits of alarm words):");
@@ -300,7 +289,7 @@ int main(int argc, char **argv)
             live << device;
         }
         readAges.watch(sim.get(), lineName, live);
-        if (!sim->open(pty->deviceEnd(), *format))
+        if (!sim->open(pty->deviceEnd(), setup.format))
             return 1;
         lineArray.append(QJsonObject{{QStringLiteral("name"), lineName},
                                      {QStringLiteral("port"), pty->masterEnd()},

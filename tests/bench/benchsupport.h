@@ -5,6 +5,7 @@
 #pragma once
 
 #include "protocol/familyregistry.h"
+#include "protocol/lineformat.h"
 #include "sim/simulatorline.h"
 
 #include <QByteArray>
@@ -141,6 +142,16 @@ inline QStringList familiesAt(const FamilyRegistry &registry, int baud)
     return families;
 }
 
+// A benchmark's line: its format at this baud rate and the families that run at it (the
+// Quantrol tops out at 19200), their marker bits checked. exitCode is not 0 when the
+// benchmark cannot run; why is printed.
+struct BenchLine
+{
+    LineFormat format;
+    QStringList families;
+    int exitCode = 0;
+};
+
 // The alarm or warning bit each family's devices set and clear (never an input bit). The
 // Quantrol's alarm bits follow its limit monitors, so its threshold is moved with the bit
 // (the simulation would otherwise put the bit back at its next tick).
@@ -187,6 +198,27 @@ inline QString checkMarkers(const FamilyRegistry &registry, const QStringList &f
                 .arg(family, marker->entry, pollClassName(entry->pollClass));
     }
     return {};
+}
+
+inline BenchLine benchLine(const FamilyRegistry &registry, int baud)
+{
+    BenchLine line;
+    const std::optional<LineFormat> format = LineFormat::parse(baud, QStringLiteral("8N1"));
+    if (!format) {
+        std::fprintf(stderr, "baud %d is not a line speed\n", baud);
+        line.exitCode = 2;
+        return line;
+    }
+    line.format = *format;
+    line.families = familiesAt(registry, baud);
+    if (line.families.isEmpty()) {
+        std::fprintf(stderr, "no family runs at %d baud\n", baud);
+        line.exitCode = 2;
+    } else if (const QString wrong = checkMarkers(registry, line.families); !wrong.isEmpty()) {
+        std::fprintf(stderr, "marker bits: %s\n", qPrintable(wrong));
+        line.exitCode = 1;
+    }
+    return line;
 }
 
 inline void setMarker(SimulatedDevice *device, bool on)
