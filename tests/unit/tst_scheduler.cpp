@@ -145,7 +145,7 @@ void tst_Scheduler::classDeadlinesHoldOnAFullLine_data()
     QTest::addColumn<bool>("everyMinute");  // every readable entry read at least every minute
     const QStringList three{"ipc300", "tya200", "dtron300"};
     const QStringList four{"ipc300", "tya200", "dtron300", "quantrol"};
-    QTest::newRow("38400, IPC 300, TYA 200, dTRON 300") << 38400 << three << 1300 << false << 60000 << 60000 << true;
+    QTest::newRow("38400, IPC 300, TYA 200, dTRON 300") << 38400 << three << 1500 << false << 60000 << 60000 << true;
     QTest::newRow("19200, all four families") << 19200 << four << 2500 << false << 60000 << 60000 << true;
     // Every faceplate shown: its setpoints are read as live values, and its live values
     // at a target of their own (3 s), after the alarm words and, with settings and
