@@ -224,12 +224,10 @@ PollChoice DevicePoll::choose(qint64 now, bool polling, PollChoice::Tier from) c
     // A block whose answer was lost is asked again before anything else of the device,
     // so a device that stopped answering is called offline after its retries, not once
     // each of its blocks has timed out (a minute for a dTRON at 19200).
-    for (int i = 0; i < m_attempts.size(); ++i) {
-        if (m_attempts.at(i) > 0) {
-            const PollChoice retry{i, ownTier(m_info.plan.blocks.at(i)), now - m_pausedUntilMs};
-            return retry.tier >= from ? retry : best;
-        }
-    }
+    // It takes the device's own place: as urgent as the device's most urgent block, so a
+    // retry of a live block never holds up the alarm words behind a tier nobody serves.
+    const int retry = int(std::find_if(m_attempts.cbegin(), m_attempts.cend(), [](int a) { return a > 0; })
+                          - m_attempts.cbegin());
     const int ceiling = targetMs(PollClass::Setting);
     const qint64 deadline = ceiling + (settingDeadlineMs - settingTargetMs);
     for (int i = 0; i < m_info.plan.blocks.size(); ++i) {
@@ -268,7 +266,7 @@ PollChoice DevicePoll::choose(qint64 now, bool polling, PollChoice::Tier from) c
             // shows count as twice as old).
             here.tier = PollChoice::Filler;
             here.overdueMs = (b.shown ? 2 : 1) * (age - target);
-        } else if (b.pollClass == PollClass::Setting && age >= settingEarlyMs) {
+        } else if (b.pollClass == PollClass::Setting && age >= std::max(settingEarlyMs, m_info.intervalMs)) {
             // A setting may be read early where the line has time, so the settings of a
             // line read together at its start do not stay due together every minute.
             here.tier = PollChoice::Filler;
@@ -278,6 +276,14 @@ PollChoice DevicePoll::choose(qint64 now, bool polling, PollChoice::Tier from) c
         }
         if (here.tier >= from && better(here, best))
             best = here;
+    }
+    if (retry < m_attempts.size()) {
+        if (best.block >= 0) {
+            best.block = retry;
+            return best;
+        }
+        const PollChoice own{retry, ownTier(m_info.plan.blocks.at(retry)), now - m_pausedUntilMs};
+        return own.tier >= from ? own : best;
     }
     return best;
 }
