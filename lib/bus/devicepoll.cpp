@@ -221,11 +221,11 @@ PollChoice DevicePoll::choose(qint64 now, bool polling, PollChoice::Tier from) c
                 : b.pollClass == PollClass::Live && m_info.intervalMs <= 0 ? PollChoice::Filler
                                                                            : PollChoice::Due;
     };
-    // A block whose answer was lost is asked again before anything else of the device,
-    // so a device that stopped answering is called offline after its retries, not once
-    // each of its blocks has timed out (a minute for a dTRON at 19200).
-    // It takes the device's own place: as urgent as the device's most urgent block, so a
-    // retry of a live block never holds up the alarm words behind a tier nobody serves.
+    // A block whose answer was lost is asked again before anything else of the device, so
+    // a device that stopped answering is offline after its retries, not once each of its
+    // blocks has timed out (a minute for a dTRON at 19200). It takes the place of the
+    // device's most urgent block: a retry of a live block never holds the alarm words up
+    // behind a tier a full line does not serve.
     const int retry = int(std::find_if(m_attempts.cbegin(), m_attempts.cend(), [](int a) { return a > 0; })
                           - m_attempts.cbegin());
     const int ceiling = targetMs(PollClass::Setting);
