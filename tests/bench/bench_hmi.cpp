@@ -118,7 +118,7 @@ int main(int argc, char *argv[])
             "HMI benchmark: alarm change to HMI, faceplate value age, CPU, memory and start-up time of jumo-hmi."));
     parser.addHelpOption();
     const auto option = [&parser](const char *name, const char *text, const char *value) {
-        parser.addOption({QString::fromLatin1(name), QString::fromLatin1(text), QStringLiteral("n"), QString::fromLatin1(value)});
+        addNumberOption(parser, name, text, value);
     };
     option("seconds", "Seconds measured (default 90).", "90");
     option("devices", "Devices on the line, 1..31, the dead ones included (default 31).", "31");

@@ -196,7 +196,7 @@ int main(int argc, char **argv)
                        "remote viewers."));
     parser.addHelpOption();
     const auto option = [&parser](const char *name, const char *text, const char *value) {
-        parser.addOption({QString::fromLatin1(name), QString::fromLatin1(text), QStringLiteral("n"), QString::fromLatin1(value)});
+        addNumberOption(parser, name, text, value);
     };
     option("lines", "Lines (default 8).", "8");
     option("devices", "Devices per line, 1..31 (default 31).", "31");

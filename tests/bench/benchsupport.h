@@ -9,6 +9,7 @@
 #include "sim/simulatorline.h"
 
 #include <QByteArray>
+#include <QCommandLineParser>
 #include <QDateTime>
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -140,6 +141,12 @@ inline QStringList familiesAt(const FamilyRegistry &registry, int baud)
             families << family;
     }
     return families;
+}
+
+// A numeric option ("--seconds <n>") with its default.
+inline void addNumberOption(QCommandLineParser &parser, const char *name, const char *text, const char *value)
+{
+    parser.addOption({QString::fromLatin1(name), QString::fromLatin1(text), QStringLiteral("n"), QString::fromLatin1(value)});
 }
 
 // A benchmark's line: its format at this baud rate and the families that run at it (the
