@@ -328,6 +328,7 @@ void DevicePoll::restart(qint64 now)
     m_consecutiveFailures = 0;
     m_cycleStartMs = now;
     m_readsThisCycle = 0;
+    ++m_cycle;
 }
 
 PollOutcome DevicePoll::finished(int block, const ModbusResult &result, int maxRetries, qint64 now, bool polling)
@@ -410,6 +411,7 @@ void DevicePoll::markRead(const ReadBlock &block, qint64 now, bool good)
                 m_cycleShownAgeMs = std::max(m_cycleShownAgeMs, now - previous);
         }
         m_doneMs.insert(e->id, now);
+        m_cycleOf.insert(e->id, m_cycle);
     }
     ++m_readsThisCycle;
 }
@@ -424,8 +426,7 @@ void DevicePoll::checkCycle(qint64 now, PollOutcome &outcome, bool polling)
         const qint64 done = doneMs(b);
         if (forced(b))
             return;
-        // (The block that ended the last cycle was read at its start: not in this one.)
-        if (done > m_cycleStartMs)
+        if (readThisCycle(b))
             continue;
         if (!polling || b.pollClass == PollClass::Live || now - done >= targetMs(b.pollClass))
             return;
@@ -476,7 +477,16 @@ void DevicePoll::finishCycle(qint64 now, PollOutcome &outcome)
     m_cycleShownAgeMs = 0;
     m_cycleStartMs = now;
     m_readsThisCycle = 0;
+    ++m_cycle;   // the block that ended this cycle counts for it, not for the next
     m_requestedMs = -1;
+}
+
+bool DevicePoll::readThisCycle(const ReadBlock &block) const
+{
+    // By cycle, not by time: a read answered within the millisecond its cycle began (a
+    // gateway on the same host) is in it.
+    return std::all_of(block.entries.cbegin(), block.entries.cend(),
+                       [this](const RegisterEntry *e) { return m_cycleOf.value(e->id, -1) == m_cycle; });
 }
 
 void DevicePoll::markFailure(PollOutcome &outcome)

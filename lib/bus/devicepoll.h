@@ -152,6 +152,7 @@ private:
     void markRead(const ReadBlock &block, qint64 now, bool good);
     void checkCycle(qint64 now, PollOutcome &outcome, bool polling);
     void finishCycle(qint64 now, PollOutcome &outcome);
+    bool readThisCycle(const ReadBlock &block) const;
     void markFailure(PollOutcome &outcome);
     void markSuccess(PollOutcome &outcome);
     int probeBlock() const;
@@ -171,6 +172,8 @@ private:
     std::array<qint64, pollClassCount> m_forcedMs{neverMs, neverMs, neverMs};
     qint64 m_requestedMs = -1;            // a whole cycle asked for at this time
     qint64 m_cycleStartMs = 0;
+    int m_cycle = 0;                      // the cycle under way
+    QHash<QString, int> m_cycleOf;        // entry -> the cycle it was last read in
     int m_readsThisCycle = 0;
     std::array<qint64, pollClassCount> m_cycleClassAgeMs{};
     qint64 m_cycleShownAgeMs = 0;
