@@ -1285,14 +1285,15 @@ void tst_Hmi::faceplatesReadAtAGlance()
     QVERIFY2(ipc->valuesText().contains(QRegularExpression("Voltage: \\d+[.,]\\d V")), qPrintable(ipc->valuesText()));
     QVERIFY(ipc->toolTip().contains("(nominal)"));
     QVERIFY(ipc->toolTip().contains("(limit set on the device)"));
-    QCOMPARE(ipc->modeText(), QString("Automatic"));
+    QTRY_COMPARE_WITH_TIMEOUT(ipc->modeText(), QString("Automatic"), 20000);
     // A process controller: the process value first (drawn large), mode and program.
     QTRY_VERIFY_WITH_TIMEOUT(dtron->valuesText().startsWith("Process value: ")
                                      && !dtron->valuesText().contains(ValueText::noValue()), 20000);
-    QCOMPARE(dtron->barsDrawn(), 1);
-    QCOMPARE(dtron->modeText(), QString("Automatic"));
+    // (The bar's scale, the mode and the program come from other blocks than the value.)
+    QTRY_COMPARE_WITH_TIMEOUT(dtron->barsDrawn(), 1, 20000);
+    QTRY_COMPARE_WITH_TIMEOUT(dtron->modeText(), QString("Automatic"), 20000);
     // A stopped program has no segment or time left to show; a running one has.
-    QCOMPARE(dtron->programText(), QString("Stopped"));
+    QTRY_COMPARE_WITH_TIMEOUT(dtron->programText(), QString("Stopped"), 20000);
 
     // What the devices report shows on the faceplates: manual mode, an alarm named, a warning.
     SimulatedDevice *ipcSim = m_sim.line().device(1);
