@@ -1892,12 +1892,17 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>bei %1: %2 an Adresse %3 (%4)</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+31"/>
+        <source>at %1: address %3 answers as %2, and no other address did: its own address is %3, or its answer there was lost (search again)</source>
+        <translation>bei %1: Adresse %3 antwortet als %2, und keine andere Adresse: seine eigene Adresse ist %3, oder seine Antwort dort ging verloren (erneut suchen)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>at %1: address %3 answers as %2, as every %2 does whatever its own address; its own is outside %4..%5 (--from and --to look further)</source>
         <translation>bei %1: Adresse %3 antwortet als %2, wie jeder %2, welche Adresse er auch hat; seine eigene liegt außerhalb von %4..%5 (--from und --to suchen weiter)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+13"/>
         <source>%1 at address %2 answers at %3 baud in %4: the device or the adapter takes one for the other (a pseudo-terminal does not carry even parity; many UARTs take 8N2 for 8N1); its own is in its interface settings</source>
         <translation>%1 an Adresse %2 antwortet bei %3 Baud in %4: das Gerät oder der Adapter hält das eine für das andere (ein Pseudo-Terminal überträgt keine gerade Parität; viele UARTs nehmen 8N2 für 8N1); seine eigene Einstellung steht in seinen Schnittstelleneinstellungen</translation>
     </message>
@@ -2019,7 +2024,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>Diese Einstellungen &amp;übernehmen und die markierten Geräte hinzufügen</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>address 255 at %1</source>
         <translation>Adresse 255 bei %1</translation>
     </message>
@@ -2045,12 +2050,17 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         </translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+47"/>
         <source>answers, but matches no known family</source>
         <translation>antwortet, passt aber zu keiner bekannten Familie</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+18"/>
+        <source>%1 answers here and at no other address: its own address is %2, or its answer there was lost (search again)</source>
+        <translation>%1 antwortet hier und an keiner anderen Adresse: seine eigene Adresse ist %2, oder seine Antwort dort ging verloren (erneut suchen)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>%1 answers here, as every one does; its own address is outside %2..%3</source>
         <translation>%1 antwortet hier, wie jeder; seine eigene Adresse liegt außerhalb von %2..%3</translation>
     </message>
@@ -2075,12 +2085,12 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>fertig in %1 s</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+15"/>
         <source>%1 at address %2</source>
         <translation>%1 an Adresse %2</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+1"/>
         <source>%1 answered at more than one data format of a baud rate: the device or the adapter takes one for the other (a pseudo-terminal does not carry even parity; many UARTs take 8N2 for 8N1). The device&apos;s own setting is in its interface menu.</source>
         <translation>%1 antwortete bei mehr als einem Datenformat einer Baudrate: das Gerät oder der Adapter hält das eine für das andere (ein Pseudo-Terminal überträgt keine gerade Parität; viele UARTs nehmen 8N2 für 8N1). Die eigene Einstellung des Geräts steht in seinem Schnittstellenmenü.</translation>
     </message>

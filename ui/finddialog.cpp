@@ -109,10 +109,11 @@ FindDialog::FindDialog(const BusSettings &line, const FamilyRegistry &registry, 
     connect(m_from, &QSpinBox::valueChanged, this, &FindDialog::updatePlan);
     connect(m_to, &QSpinBox::valueChanged, this, &FindDialog::updatePlan);
     connect(m_setting, &QComboBox::currentIndexChanged, this, &FindDialog::showChosenSetting);
-    connect(m_finder.get(), &LineFinder::trying, this, [this](const LineFormat &format, int index, int count, bool hint) {
+    connect(m_finder.get(), &LineFinder::trying, this, [this](const LineFormat &format, int step, int count, bool hint) {
+        // The hint pass is short (one probe per setting): the bar's first tenth.
         m_trying = hint ? tr("address 255 at %1").arg(settingName(format)) : settingName(format);
-        m_progress->setRange(0, count * 2);
-        m_progress->setValue(hint ? index : count + index);
+        m_progress->setRange(0, 1000);
+        m_progress->setValue(hint ? 100 * step / std::max(1, count) : 100 + 900 * step / std::max(1, count));
     });
     connect(m_finder.get(), &LineFinder::probing, this, [this](int address, int, int) {
         const int left = int((m_finder->remainingMs() + 999) / 1000);
@@ -170,6 +171,12 @@ bool FindDialog::isSearching() const
 
 void FindDialog::onFound(const LineFinder::Finding &finding)
 {
+    if (!std::any_of(m_answered.cbegin(), m_answered.cend(), [&](const LineFormat &f) { return f == finding.format; })) {
+        // A setting where only address 255 answered is one to offer all the same: a
+        // device is on the line at it.
+        m_answered << finding.format;
+        m_setting->addItem(settingName(finding.format));
+    }
     if (finding.alwaysAnswered)
         return;   // shown at the end where its own address was not found
     auto *item = new QTreeWidgetItem(m_found);
@@ -185,10 +192,6 @@ void FindDialog::onFound(const LineFinder::Finding &finding)
         item->setText(DeviceColumn, tr("answers, but matches no known family"));
         item->setFlags(Qt::ItemIsEnabled);
     }
-    if (!std::any_of(m_answered.cbegin(), m_answered.cend(), [&](const LineFormat &f) { return f == finding.format; })) {
-        m_answered << finding.format;
-        m_setting->addItem(settingName(finding.format));
-    }
     for (int c = 0; c < m_found->columnCount() - 1; ++c)
         m_found->resizeColumnToContents(c);
 }
@@ -198,22 +201,20 @@ void FindDialog::onFinished()
     for (QWidget *w : std::initializer_list<QWidget *>{m_from, m_to, m_startButton})
         w->setEnabled(true);
     m_cancelButton->setEnabled(false);
-    const QList<LineFinder::Finding> findings = m_finder->findings();
-    for (const LineFinder::Finding &f : findings) {
-        if (!f.alwaysAnswered)
-            continue;
-        const bool ownFound = std::any_of(findings.cbegin(), findings.cend(), [&](const LineFinder::Finding &g) {
-            return !g.alwaysAnswered && g.family == f.family && g.format == f.format;
-        });
-        if (ownFound)
-            continue;
+    const bool complete = m_finder->result() == Job::Result::Succeeded;
+    for (const LineFinder::Finding &f : complete ? m_finder->ownAddressNotFound() : QList<LineFinder::Finding>()) {
         auto *item = new QTreeWidgetItem(m_found);
         item->setText(SettingColumn, settingName(f.format));
         item->setText(AddressColumn, QString::number(f.address));
-        item->setText(DeviceColumn, tr("%1 answers here, as every one does; its own address is outside %2..%3")
-                                            .arg(f.family->displayName())
-                                            .arg(m_from->value())
-                                            .arg(m_to->value()));
+        item->setText(DeviceColumn, m_finder->scannedEveryAddressOf(*f.family)
+                                            ? tr("%1 answers here and at no other address: its own address is %2, "
+                                                 "or its answer there was lost (search again)")
+                                                      .arg(f.family->displayName())
+                                                      .arg(f.address)
+                                            : tr("%1 answers here, as every one does; its own address is outside %2..%3")
+                                                      .arg(f.family->displayName())
+                                                      .arg(m_from->value())
+                                                      .arg(m_to->value()));
         item->setFlags(Qt::ItemIsEnabled);
     }
     const double seconds = double(m_finder->elapsedMs()) / 1000.0;
@@ -243,16 +244,8 @@ void FindDialog::onFinished()
     // A device found at two formats of one baud rate: the device or the adapter takes one
     // for the other.
     QStringList twice;
-    for (const LineFinder::Finding &f : findings) {
-        if (f.alwaysAnswered || !f.family)
-            continue;
-        const auto formats = std::count_if(findings.cbegin(), findings.cend(), [&](const LineFinder::Finding &g) {
-            return !g.alwaysAnswered && g.family == f.family && g.address == f.address && g.format.baudRate == f.format.baudRate;
-        });
-        const QString name = tr("%1 at address %2").arg(f.family->displayName()).arg(f.address);
-        if (formats > 1 && !twice.contains(name))
-            twice << name;
-    }
+    for (const LineFinder::SeveralFormats &several : m_finder->answeredAtSeveralFormats())
+        twice << tr("%1 at address %2").arg(several.family->displayName()).arg(several.address);
     m_note->setText(tr("%1 answered at more than one data format of a baud rate: the device or the adapter takes one "
                        "for the other (a pseudo-terminal does not carry even parity; many UARTs take 8N2 for 8N1). "
                        "The device's own setting is in its interface menu.")

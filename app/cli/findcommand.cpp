@@ -152,9 +152,9 @@ std::optional<int> FindCommand::run(const QStringList &arguments)
               << Qt::endl;
         return exitcode::Usage;
     }
-    connect(m_finder.get(), &LineFinder::trying, this, [this](const LineFormat &format, int index, int count, bool hint) {
-        m_trying = hint ? tr("address 255 at %1 (%2 of %3)").arg(settingName(format)).arg(index + 1).arg(count)
-                        : tr("%1 (%2 of %3)").arg(settingName(format)).arg(index + 1).arg(count);
+    connect(m_finder.get(), &LineFinder::trying, this, [this](const LineFormat &format, int step, int count, bool hint) {
+        m_trying = hint ? tr("address 255 at %1 (%2 of %3)").arg(settingName(format)).arg(step + 1).arg(count)
+                        : tr("%1 (%2 of %3)").arg(settingName(format)).arg(step + 1).arg(count);
         showProgress(m_trying);
     });
     connect(m_finder.get(), &LineFinder::probing, this, [this](int address, int, int) {
@@ -236,15 +236,15 @@ void FindCommand::onFinished()
     const bool complete = m_finder && m_finder->result() == Job::Result::Succeeded;
     // A family answering at 255 whose own address the range did not hold (known only when
     // the whole range was scanned at that setting).
-    int onlyAt255 = 0;
-    for (const LineFinder::Finding &f : findings) {
-        if (!f.alwaysAnswered || !complete)
-            continue;
-        const bool ownFound = std::any_of(findings.cbegin(), findings.cend(), [&](const LineFinder::Finding &g) {
-            return !g.alwaysAnswered && g.family == f.family && g.format == f.format;
-        });
-        onlyAt255 += ownFound ? 0 : 1;
-        if (!ownFound)
+    const QList<LineFinder::Finding> onlyAlways = complete ? m_finder->ownAddressNotFound() : QList<LineFinder::Finding>();
+    for (const LineFinder::Finding &f : onlyAlways) {
+        if (m_finder->scannedEveryAddressOf(*f.family))
+            m_out << tr("at %1: address %3 answers as %2, and no other address did: its own address is %3, or its "
+                        "answer there was lost (search again)")
+                             .arg(settingName(f.format), f.family->family)
+                             .arg(f.address)
+                  << Qt::endl;
+        else
             m_out << tr("at %1: address %3 answers as %2, as every %2 does whatever its own address; its own is "
                         "outside %4..%5 (--from and --to look further)")
                              .arg(settingName(f.format), f.family->family)
@@ -253,27 +253,18 @@ void FindCommand::onFinished()
                              .arg(m_last)
                   << Qt::endl;
     }
+    const int onlyAt255 = int(onlyAlways.size());
     // One device at several settings of one baud rate: the adapter or the device took one
     // format for another.
-    QStringList seen;
-    for (const LineFinder::Finding &f : findings) {
-        if (f.alwaysAnswered || !f.family)
-            continue;
-        QStringList at;
-        for (const LineFinder::Finding &g : findings) {
-            if (!g.alwaysAnswered && g.family == f.family && g.address == f.address && g.format.baudRate == f.format.baudRate)
-                at << g.format.formatName();
-        }
-        const QString key = QStringLiteral("%1@%2/%3").arg(f.family->family).arg(f.address).arg(f.format.baudRate);
-        if (at.size() > 1 && !seen.contains(key)) {
-            seen << key;
+    if (m_finder) {
+        for (const LineFinder::SeveralFormats &several : m_finder->answeredAtSeveralFormats()) {
             m_err << tr("%1 at address %2 answers at %3 baud in %4: the device or the adapter takes one for the "
                         "other (a pseudo-terminal does not carry even parity; many UARTs take 8N2 for 8N1); its "
                         "own is in its interface settings")
-                             .arg(f.family->family)
-                             .arg(f.address)
-                             .arg(f.format.baudRate)
-                             .arg(at.join(QStringLiteral(", ")))
+                             .arg(several.family->family)
+                             .arg(several.address)
+                             .arg(several.baudRate)
+                             .arg(several.formats.join(QStringLiteral(", ")))
                   << Qt::endl;
         }
     }

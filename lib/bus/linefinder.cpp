@@ -100,12 +100,16 @@ qint64 LineFinder::plannedMs(int firstAddress, int lastAddress)
         BusSettings at = m_own;
         at.format = setting.format;
         m_bus.setSettings(at);
-        const DeviceScanner scanner(m_bus, m_families);
+        DeviceScanner scanner(m_bus, m_families);
+        scanner.setMode(DeviceScanner::Mode::Quick);   // as nextScan() has it
         const QList<int> addresses = addressesOf(setting, firstAddress, lastAddress);
-        // Hint (waited out to the full timeout), quick pass, the listener after it (a
-        // thorough probe of one address).
-        total += (setting.alwaysAnswered() ? scanner.fullTimeoutMs() : 0)
-                + qint64(addresses.size()) * scanner.quickTimeoutMs() + scanner.thoroughWorstMs(1);
+        // Hint (waited out to the full timeout), then the quick pass and the listener after
+        // it (a thorough probe of one address); a range too short to listen after its quick
+        // pass is probed thoroughly.
+        total += setting.alwaysAnswered() ? scanner.fullTimeoutMs() : 0;
+        total += scanner.effectiveMode(addresses.size()) == DeviceScanner::Mode::Quick
+                ? qint64(addresses.size()) * scanner.quickTimeoutMs() + scanner.thoroughWorstMs(1)
+                : scanner.thoroughWorstMs(addresses.size());
     }
     m_bus.setSettings(m_own);
     return total;
@@ -168,7 +172,11 @@ void LineFinder::nextHint()
         for (const auto &family : setting.families) {
             if (!family->protocol.alwaysAnswersAddress || family->identify.isEmpty())
                 continue;
-            emit trying(setting.format, int(m_index), int(m_settings.size()), true);
+            const auto hints = std::count_if(m_settings.cbegin(), m_settings.cend(),
+                                             [](const Setting &s) { return s.alwaysAnswered(); });
+            const auto step = std::count_if(m_settings.cbegin(), m_settings.cbegin() + m_index,
+                                            [](const Setting &s) { return s.alwaysAnswered(); });
+            emit trying(setting.format, int(step), int(hints), true);
             if (!openAt(setting.format))
                 return;
             m_strays = m_bus.strayReplies();
@@ -231,7 +239,7 @@ void LineFinder::nextScan()
         return;
     }
     const Setting &setting = m_settings.at(m_order.at(m_index));
-    emit trying(setting.format, m_order.at(m_index), int(m_settings.size()), false);
+    emit trying(setting.format, m_index, int(m_order.size()), false);
     if (!openAt(setting.format))
         return;
     // Every family is asked: a device set to this setting is of one that supports it, but
@@ -300,6 +308,54 @@ std::optional<LineFormat> LineFinder::bestSetting() const
         }
     }
     return best;
+}
+
+QList<LineFinder::Finding> LineFinder::ownAddressNotFound() const
+{
+    QList<Finding> out;
+    for (const Finding &f : std::as_const(m_findings)) {
+        if (!f.alwaysAnswered)
+            continue;
+        const bool own = std::any_of(m_findings.cbegin(), m_findings.cend(), [&](const Finding &g) {
+            return !g.alwaysAnswered && g.family == f.family && g.format == f.format;
+        });
+        if (!own)
+            out << f;
+    }
+    return out;
+}
+
+bool LineFinder::scannedEveryAddressOf(const RegisterMap &family) const
+{
+    const std::optional<int> always = family.protocol.alwaysAnswersAddress;
+    for (int a = family.protocol.addressMin; a <= family.protocol.addressMax; ++a) {
+        if (a != always && (a < m_first || a > m_last))
+            return false;
+    }
+    return true;
+}
+
+QList<LineFinder::SeveralFormats> LineFinder::answeredAtSeveralFormats() const
+{
+    QList<SeveralFormats> out;
+    for (const Finding &f : std::as_const(m_findings)) {
+        if (f.alwaysAnswered || !f.family)
+            continue;
+        const bool listed = std::any_of(out.cbegin(), out.cend(), [&](const SeveralFormats &s) {
+            return s.family == f.family && s.address == f.address && s.baudRate == f.format.baudRate;
+        });
+        if (listed)
+            continue;
+        SeveralFormats several{f.family, f.address, f.format.baudRate, {}};
+        for (const Finding &g : std::as_const(m_findings)) {
+            if (!g.alwaysAnswered && g.family == f.family && g.address == f.address && g.format.baudRate == f.format.baudRate
+                && !several.formats.contains(g.format.formatName()))
+                several.formats << g.format.formatName();
+        }
+        if (several.formats.size() > 1)
+            out << several;
+    }
+    return out;
 }
 
 } // namespace jumo

@@ -71,9 +71,28 @@ public:
     // of settings() where several tie. Null when nothing answered.
     std::optional<LineFormat> bestSetting() const;
 
+    // Devices heard at their family's always-answered address (255) at a setting whose own
+    // address the scan of that setting did not find. Complete once the search Succeeded.
+    QList<Finding> ownAddressNotFound() const;
+    // Whether a setting's scan probed every address a device of this family can have, so
+    // that one heard at 255 only has 255 for its own, or lost its answer at its own.
+    bool scannedEveryAddressOf(const RegisterMap &family) const;
+    // One device (family and address) that answered at more than one data format of a baud
+    // rate: the device or the adapter takes one format for the other.
+    struct SeveralFormats
+    {
+        std::shared_ptr<const RegisterMap> family;
+        int address = 0;
+        int baudRate = 0;
+        QStringList formats;
+    };
+    QList<SeveralFormats> answeredAtSeveralFormats() const;
+
 signals:
-    // A setting is being tried: its index in settings(), and whether this is the hint pass.
-    void trying(const jumo::LineFormat &format, int index, int count, bool hint);
+    // A setting is being tried: the step of its pass (0 .. count - 1; the hint pass tries
+    // the settings of families with an always-answered address, the scan pass every
+    // setting, those where a hint was heard first), and whether this is the hint pass.
+    void trying(const jumo::LineFormat &format, int step, int count, bool hint);
     // An address of the current setting's scan is probed.
     void probing(int address, int done, int total);
     void found(const jumo::LineFinder::Finding &finding);

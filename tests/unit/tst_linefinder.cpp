@@ -15,6 +15,7 @@ using namespace jumo::test;
 namespace {
 
 // A line whose devices each keep their own setting: a request sent at another is lost.
+// ("8N1|8N2": a device whose UART takes either.)
 struct MixedLine
 {
     explicit MixedLine(const QList<std::tuple<QString, int, int, QString>> &devices)
@@ -22,7 +23,8 @@ struct MixedLine
     {
         for (const auto &[family, address, baud, format] : devices) {
             line.add(families().family(family), quint8(address));
-            formats.insert(quint8(address), *LineFormat::parse(baud, format));
+            for (const QString &one : format.split(QLatin1Char('|')))
+                formats.insert(quint8(address), *LineFormat::parse(baud, one));
         }
         bus = std::make_unique<Bus>(&line.clock, [this](const BusSettings &s) {
             auto t = std::make_unique<FakeTransport>(&line.clock, line.simulated(), s.format);
@@ -32,7 +34,7 @@ struct MixedLine
                     const bool addressed = d->address() == r.slave
                             || (!formats.contains(r.slave) && d->map().protocol.alwaysAnswersAddress == int(r.slave));
                     if (addressed)
-                        return formats.value(d->address()) != format;
+                        return !formats.values(d->address()).contains(format);
                 }
                 return true;
             };
@@ -46,7 +48,7 @@ struct MixedLine
     }
 
     Line line;
-    QHash<quint8, LineFormat> formats;
+    QMultiHash<quint8, LineFormat> formats;
     FakeTransport *transport = nullptr;
     std::unique_ptr<Bus> bus;
 };
@@ -79,6 +81,10 @@ private slots:
     void findsEachDeviceAtItsOwnSetting();
     void narrowedSearchTriesOnlyWhatItIsGiven();
     void cancelLeavesTheBusAsItWas();
+    void plannedTimeHoldsForShortAndLongRanges_data();
+    void plannedTimeHoldsForShortAndLongRanges();
+    void stepsFollowTheOrderTried();
+    void devicesHeardOnlyAt255AndAtTwoFormats();
 };
 
 void tst_LineFinder::settingsAreWhatTheFamiliesSupport()
@@ -156,6 +162,92 @@ void tst_LineFinder::cancelLeavesTheBusAsItWas()
     QVERIFY(!finder.findings().isEmpty());
     QCOMPARE(mixed.bus->state(), LineState::Disconnected);
     QCOMPARE(name(mixed.bus->settings().format), QStringLiteral("38400 8O1"));
+}
+
+void tst_LineFinder::plannedTimeHoldsForShortAndLongRanges_data()
+{
+    QTest::addColumn<int>("last");
+    QTest::newRow("1..1") << 1;   // probed thoroughly: too short to listen after a quick pass
+    QTest::newRow("1..3") << 3;
+    QTest::newRow("1..6") << 6;
+    QTest::newRow("1..31") << 31;
+}
+
+void tst_LineFinder::plannedTimeHoldsForShortAndLongRanges()
+{
+    // Where nothing answers, the search takes the time it announced, not a multiple of it.
+    QFETCH(int, last);
+    MixedLine mixed({});
+    LineFinder finder(*mixed.bus, families().families());
+    const qint64 planned = finder.plannedMs(1, last);
+    QSignalSpy finished(&finder, &Job::finished);
+    finder.start(1, last);
+    QVERIFY(mixed.line.runUntil([&] { return finished.count() == 1; }, 3600 * 1000));
+    QCOMPARE(finder.result(), Job::Result::Succeeded);
+    qInfo("addresses 1..%d and 255: planned %.1f s, took %.1f s", last, double(planned) / 1000.0,
+          double(finder.elapsedMs()) / 1000.0);
+    QVERIFY2(finder.elapsedMs() <= planned + planned / 10,
+             qPrintable(QStringLiteral("%1 of %2 ms").arg(finder.elapsedMs()).arg(planned)));
+    QVERIFY2(finder.elapsedMs() >= planned / 2, qPrintable(QStringLiteral("%1 of %2 ms").arg(finder.elapsedMs()).arg(planned)));
+}
+
+void tst_LineFinder::stepsFollowTheOrderTried()
+{
+    // The progress of each pass counts up in the order the settings are tried, the
+    // settings heard at 255 first.
+    MixedLine mixed({{"tya200", 4, 19200, "8E1"}});
+    LineFinder finder(*mixed.bus, families().families());
+    QList<int> hintSteps;
+    QList<int> scanSteps;
+    int hintCount = 0;
+    int scanCount = 0;
+    connect(&finder, &LineFinder::trying, &finder, [&](const LineFormat &, int step, int count, bool hint) {
+        (hint ? hintSteps : scanSteps) << step;
+        (hint ? hintCount : scanCount) = count;
+    });
+    QSignalSpy finished(&finder, &Job::finished);
+    finder.start(1, 6);
+    QVERIFY(mixed.line.runUntil([&] { return finished.count() == 1; }, 3600 * 1000));
+    QList<int> upTo12;
+    QList<int> upTo16;
+    for (int i = 0; i < 16; ++i)
+        (i < 12 ? upTo12 : upTo16) << i;
+    upTo16 = upTo12 + upTo16;
+    QCOMPARE(hintCount, 12);   // 4800 baud is the dTRON's alone, which has no address 255
+    QCOMPARE(hintSteps, upTo12);
+    QCOMPARE(scanCount, 16);
+    QCOMPARE(scanSteps, upTo16);
+}
+
+void tst_LineFinder::devicesHeardOnlyAt255AndAtTwoFormats()
+{
+    MixedLine mixed({{"tya200", 40, 19200, "8E1"}, {"dtron300", 7, 9600, "8N1|8N2"}});
+    LineFinder finder(*mixed.bus, families().families());
+    QSignalSpy finished(&finder, &Job::finished);
+    finder.start(1, 10);
+    QVERIFY(mixed.line.runUntil([&] { return finished.count() == 1; }, 3600 * 1000));
+    // The TYA's own address is outside the range: heard at 255 only, and said so.
+    const QList<LineFinder::Finding> only = finder.ownAddressNotFound();
+    QCOMPARE(describe(only), QStringList({"19200 8E1: tya200@255 (always)"}));
+    QVERIFY(!finder.scannedEveryAddressOf(*only.first().family));
+    // The dTRON answers at both formats of 9600 baud: one device, named once.
+    const QList<LineFinder::SeveralFormats> several = finder.answeredAtSeveralFormats();
+    QCOMPARE(several.size(), 1);
+    QCOMPARE(several.first().family->family, QStringLiteral("dtron300"));
+    QCOMPARE(several.first().address, 7);
+    QCOMPARE(several.first().baudRate, 9600);
+    QCOMPARE(several.first().formats, QStringList({"8N1", "8N2"}));
+    // A setting where only 255 answered is still the line's best guess over none.
+    QCOMPARE(name(*finder.bestSetting()), QStringLiteral("9600 8N1"));
+
+    // With every address a TYA can have in the range, 255 is its own (or an answer was lost).
+    LineFinder whole(*mixed.bus, families().families());
+    whole.restrict({19200}, {"8E1"});
+    QSignalSpy wholeFinished(&whole, &Job::finished);
+    whole.start(1, 254);
+    QVERIFY(mixed.line.runUntil([&] { return wholeFinished.count() == 1; }, 3600 * 1000));
+    QVERIFY(whole.ownAddressNotFound().isEmpty());   // 40 is in the range now
+    QVERIFY(whole.scannedEveryAddressOf(*families().family("tya200")));
 }
 
 QTEST_GUILESS_MAIN(tst_LineFinder)
