@@ -74,8 +74,9 @@ public:
     // Devices heard at their family's always-answered address (255) at a setting whose own
     // address the scan of that setting did not find. Complete once the search Succeeded.
     QList<Finding> ownAddressNotFound() const;
-    // Whether a setting's scan probed every address a device of this family can have, so
-    // that one heard at 255 only has 255 for its own, or lost its answer at its own.
+    // Whether the scan (the same range at every setting) probed every address a device of
+    // this family can have, so that one heard at 255 only has 255 for its own, or lost its
+    // answer at its own.
     bool scannedEveryAddressOf(const RegisterMap &family) const;
     // One device (family and address) that answered at more than one data format of a baud
     // rate: the device or the adapter takes one format for the other.

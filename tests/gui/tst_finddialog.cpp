@@ -30,6 +30,7 @@ class tst_FindDialog : public QObject
 private slots:
     void initTestCase();
     void findsTheDeviceAndTakesItsSettings();
+    void offersASettingWhereOnlyAddress255Answered();
 
 private:
     QTemporaryDir m_dir;
@@ -104,6 +105,34 @@ void tst_FindDialog::findsTheDeviceAndTakesItsSettings()
     DeviceTile *tile = window.deviceTile("tya200", 4);
     QVERIFY(tile);
     QTRY_COMPARE_WITH_TIMEOUT(tile->stateText(), QString("Online"), 30000);
+}
+
+void tst_FindDialog::offersASettingWhereOnlyAddress255Answered()
+{
+    // The TYA's own address (4) is outside 5..10: it is heard at 255 only, and that is
+    // still a setting to take over for the line.
+    BusSettings line;
+    line.portName = m_line.masterEnd();
+    FindDialog dialog(line, families());
+    dialog.show();
+    dialog.findChild<QSpinBox *>("findFrom")->setValue(5);
+    dialog.findChild<QSpinBox *>("findTo")->setValue(10);
+    QTest::mouseClick(dialog.findChild<QPushButton *>("startFind"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!dialog.isSearching(), 180000);
+    auto *results = dialog.findChild<QTreeWidget *>("findResults");
+    QStringList rows;
+    for (int i = 0; i < results->topLevelItemCount(); ++i)
+        rows << QStringLiteral("%1|%2|%3").arg(results->topLevelItem(i)->text(0), results->topLevelItem(i)->text(1),
+                                               results->topLevelItem(i)->text(2));
+    const QString outside = "JUMO TYA 200 thyristor power units answers here, as every one does; its own address is outside 5..10";
+    QCOMPARE(rows, QStringList({"19200 baud 8N1|255|" + outside, "19200 baud 8E1|255|" + outside}));
+    auto *setting = dialog.findChild<QComboBox *>("findSetting");
+    QCOMPARE(setting->count(), 2);
+    QVERIFY(setting->isEnabled());
+    QVERIFY(dialog.findChild<QPushButton *>("useFound")->isEnabled());
+    setting->setCurrentText("19200 baud 8E1");
+    QCOMPARE(dialog.chosenFormat(), LineFormat::parse(19200, "8E1"));
+    QVERIFY(dialog.chosen().isEmpty());   // no device to add: its address is not known
 }
 
 QTEST_MAIN(tst_FindDialog)

@@ -237,7 +237,7 @@ void tst_LineFinder::devicesHeardOnlyAt255AndAtTwoFormats()
     QCOMPARE(several.first().address, 7);
     QCOMPARE(several.first().baudRate, 9600);
     QCOMPARE(several.first().formats, QStringList({"8N1", "8N2"}));
-    // A setting where only 255 answered is still the line's best guess over none.
+    // Devices with their own address outweigh one heard at 255 only.
     QCOMPARE(name(*finder.bestSetting()), QStringLiteral("9600 8N1"));
 
     // With every address a TYA can have in the range, 255 is its own (or an answer was lost).
