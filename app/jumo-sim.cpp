@@ -131,6 +131,19 @@ int main(int argc, char *argv[])
                 << Qt::endl;
             return 2;
         }
+        if (!map->protocol.supports(format->baudRate, format->formatName())) {
+            // A real one would never answer: a simulated line must not pass where a real fails.
+            QStringList bauds;
+            for (int baud : map->protocol.baudRates)
+                bauds << QString::number(baud);
+            err << QCoreApplication::translate("main", "'%1': %2 devices cannot be set to %3 baud %4 (they support %5 baud, %6)")
+                            .arg(device, map->shortName)
+                            .arg(format->baudRate)
+                            .arg(format->formatName(), bauds.join(QStringLiteral(", ")),
+                                 map->protocol.dataFormats.join(QStringLiteral(", ")))
+                << Qt::endl;
+            return 2;
+        }
         line.addDevice(map, quint8(address));
     }
 

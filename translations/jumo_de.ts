@@ -2612,7 +2612,7 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
 <context>
     <name>jumo::LineCommands</name>
     <message>
-        <location filename="../app/cli/linecommands.cpp" line="+104"/>
+        <location filename="../app/cli/linecommands.cpp" line="+112"/>
         <source>the audit log did not take a record: %1</source>
         <translation>das Audit-Protokoll hat einen Eintrag nicht aufgenommen: %1</translation>
     </message>
@@ -2654,12 +2654,12 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
     <message>
         <location line="+0"/>
         <location line="+2"/>
-        <location line="+808"/>
+        <location line="+815"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-808"/>
+        <location line="-815"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
@@ -2670,12 +2670,12 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
     </message>
     <message>
         <location line="+0"/>
-        <location line="+808"/>
+        <location line="+815"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-805"/>
+        <location line="-812"/>
         <source>Never write to any line (control-room mode; the system configuration can set it for everyone, a station file for one line).</source>
         <translation>Auf keine Leitung schreiben (Leitwarten-Modus; die Systemkonfiguration kann ihn für alle festlegen, eine Stationsdatei für eine Leitung).</translation>
     </message>
@@ -2856,19 +2856,14 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>schnelle Suche der Adressen %1..%2: jede einmal mit %3 ms abgefragt, erneut mit den vollen %4 ms, wo etwas gehört wurde (--thorough fragt jede Adresse mit der vollen Zeitüberschreitung ab)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+17"/>
         <source>as asked</source>
         <translation>wie verlangt</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>a Modbus TCP gateway answers every request itself, at its own timeout</source>
         <translation>ein Modbus-TCP-Gateway beantwortet jede Anfrage selbst, nach seiner eigenen Zeitüberschreitung</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the range is too short to listen for late answers after a quick pass</source>
-        <translation>der Bereich ist zu kurz, um nach einem schnellen Durchgang auf späte Antworten zu hören</translation>
     </message>
     <message numerus="yes">
         <location line="+1"/>
@@ -3056,7 +3051,7 @@ das nicht antwortet; 4 eine andere Familie an der Adresse.</translation>
         <translation>Name</translation>
     </message>
     <message>
-        <location line="-1242"/>
+        <location line="-1249"/>
         <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
         <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
     </message>
@@ -3080,8 +3075,16 @@ das nicht antwortet; 4 eine andere Familie an der Adresse.</translation>
         <source>Finds devices on the line and names their family; with several lines (--line, --station), on every line at once.</source>
         <translation>Sucht Geräte an der Leitung und benennt ihre Gerätefamilie; bei mehreren Leitungen (--line, --station) an allen Leitungen gleichzeitig.</translation>
     </message>
+    <message numerus="yes">
+        <location line="+81"/>
+        <source>the range is short, so %n address(es) outside it (%1) are probed once first, to hear late answers; what answers there is not reported</source>
+        <translation>
+            <numerusform>der Bereich ist kurz, daher wird %n Adresse außerhalb (%1) zuerst einmal abgefragt, um späte Antworten zu hören; was dort antwortet, wird nicht gemeldet</numerusform>
+            <numerusform>der Bereich ist kurz, daher werden %n Adressen außerhalb (%1) zuerst einmal abgefragt, um späte Antworten zu hören; was dort antwortet, wird nicht gemeldet</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+99"/>
+        <location line="+25"/>
         <source>scanning %1</source>
         <translation>Suche %1</translation>
     </message>
@@ -7033,6 +7036,14 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
     </message>
     <message numerus="yes">
         <location line="+6"/>
+        <source>The range is short: %n address(es) next to it are probed once first, to hear late answers, and not reported.</source>
+        <translation>
+            <numerusform>Der Bereich ist kurz: %n Adresse daneben wird zuerst einmal abgefragt, um späte Antworten zu hören, und nicht gemeldet.</numerusform>
+            <numerusform>Der Bereich ist kurz: %n Adressen daneben werden zuerst einmal abgefragt, um späte Antworten zu hören, und nicht gemeldet.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
         <source>Every address is probed at the full timeout of %1 ms: up to %n s.</source>
         <translation>
             <numerusform>Jede Adresse wird mit der vollen Zeitüberschreitung von %1 ms abgefragt: bis zu %n s.</numerusform>
@@ -7040,7 +7051,7 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         </translation>
     </message>
     <message>
-        <location line="-40"/>
+        <location line="-47"/>
         <source>From address</source>
         <translation>Von Adresse</translation>
     </message>
@@ -11803,7 +11814,12 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
         <translation>&apos;%1&apos; ist nicht FAMILY@ADDRESS mit einer bekannten Gerätefamilie</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
+        <source>&apos;%1&apos;: %2 devices cannot be set to %3 baud %4 (they support %5 baud, %6)</source>
+        <translation>&apos;%1&apos;: %2-Geräte können nicht auf %3 Baud %4 eingestellt werden (sie unterstützen %5 Baud, %6)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>cannot open %1: %2</source>
         <translation>%1 kann nicht geöffnet werden: %2</translation>
     </message>

@@ -128,9 +128,16 @@ void ScanDialog::updatePlan()
     const int to = std::max(from, m_to->value());
     const int full = m_scanner->fullTimeoutMs();
     if (m_scanner->effectiveMode(from, to) == DeviceScanner::Mode::Quick) {
-        m_plan->setText(tr("Each address is probed once at %1 ms, again at the full %2 ms where anything was heard.")
-                                .arg(m_scanner->quickTimeoutMs())
-                                .arg(full));
+        QString plan = tr("Each address is probed once at %1 ms, again at the full %2 ms where anything was heard.")
+                               .arg(m_scanner->quickTimeoutMs())
+                               .arg(full);
+        const qsizetype listeners = m_scanner->listenersFor(from, to).size();
+        if (listeners > 0)
+            plan += QLatin1Char(' ')
+                    + tr("The range is short: %n address(es) next to it are probed once first, to hear late "
+                         "answers, and not reported.",
+                         nullptr, int(listeners));
+        m_plan->setText(plan);
         return;
     }
     const int worst = int((m_scanner->thoroughWorstMs(from, to) + 999) / 1000);

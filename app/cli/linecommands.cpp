@@ -42,6 +42,14 @@ namespace jumo {
 
 namespace {
 
+QString joinedAddresses(const QList<int> &addresses)
+{
+    QStringList parts;
+    for (int a : addresses)
+        parts << QString::number(a);
+    return parts.join(QStringLiteral(", "));
+}
+
 QJsonValue jsonValue(const EntryState &state)
 {
     if (!state.isCurrent() || !state.value.isOk())
@@ -574,29 +582,36 @@ std::optional<int> LineCommands::scan(const QStringList &arguments)
                   << Qt::endl;
         });
         connect(line.scanner.get(), &Job::finished, this, [this, i] { scanFinished(i); });
-        m_err << lineMessage(i, scanPlan(*line.scanner, *line.bus, from, to)) << Qt::endl;
+        m_err << lineMessage(i, scanPlan(*line.scanner, from, to)) << Qt::endl;
         line.scanStartedMs = line.bus->clockMs();
         line.scanner->start(from, to);
     }
     return std::nullopt;
 }
 
-QString LineCommands::scanPlan(const DeviceScanner &scanner, const Bus &bus, int from, int to) const
+QString LineCommands::scanPlan(const DeviceScanner &scanner, int from, int to) const
 {
     const int full = scanner.fullTimeoutMs();
-    if (scanner.effectiveMode(from, to) == DeviceScanner::Mode::Quick)
-        return tr("quick scan of addresses %1..%2: each probed once at %3 ms, again at the full %4 ms where "
-                  "anything was heard (--thorough probes every address at the full timeout)")
-                .arg(from)
-                .arg(to)
-                .arg(scanner.quickTimeoutMs())
-                .arg(full);
+    if (scanner.effectiveMode(from, to) == DeviceScanner::Mode::Quick) {
+        QString plan = tr("quick scan of addresses %1..%2: each probed once at %3 ms, again at the full %4 ms where "
+                          "anything was heard (--thorough probes every address at the full timeout)")
+                               .arg(from)
+                               .arg(to)
+                               .arg(scanner.quickTimeoutMs())
+                               .arg(full);
+        const QList<int> listeners = scanner.listenersFor(from, to);
+        if (!listeners.isEmpty())
+            plan += QLatin1String("; ")
+                    + tr("the range is short, so %n address(es) outside it (%1) are probed once first, to hear "
+                         "late answers; what answers there is not reported",
+                         nullptr, int(listeners.size()))
+                              .arg(joinedAddresses(listeners));
+        return plan;
+    }
     const qint64 worst = (scanner.thoroughWorstMs(from, to) + 999) / 1000;
     const QString why = scanner.mode() == DeviceScanner::Mode::Thorough
             ? tr("as asked")
-            : bus.lineKind() == LineAddress::Kind::ModbusTcp
-            ? tr("a Modbus TCP gateway answers every request itself, at its own timeout")
-            : tr("the range is too short to listen for late answers after a quick pass");
+            : tr("a Modbus TCP gateway answers every request itself, at its own timeout");
     return tr("thorough scan of addresses %1..%2 (%3): a silent address costs two probes at %4 ms, each followed "
               "by as long a quiet time; up to %n s", nullptr, int(worst))
             .arg(from)

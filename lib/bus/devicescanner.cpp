@@ -38,10 +38,60 @@ DeviceScanner::Mode DeviceScanner::effectiveMode(qsizetype addresses) const
 {
     if (m_mode == Mode::Thorough || m_bus.lineKind() == LineAddress::Kind::ModbusTcp)
         return Mode::Thorough;
+    // A short range borrows listeners from 1..247 outside it; there are enough but on a
+    // line whose every address is taken.
+    const qsizetype free = 247 - addresses - m_bus.devices().size();
+    return addresses + std::max<qsizetype>(0, free) >= quickPassMinimum() ? Mode::Quick : Mode::Thorough;
+}
+
+qsizetype DeviceScanner::quickPassMinimum() const
+{
     // The listener after the quick pass must be an address that went quiet longer ago than
-    // a late answer may take; a short range has none.
-    const qint64 quickPass = qint64(addresses) * quickTimeoutMs();
-    return quickPass * 5 >= qint64(heardWindowMs()) * 6 ? Mode::Quick : Mode::Thorough;
+    // a late answer may take, with a fifth to spare: the probes after its own must span
+    // that, each silent (an address that answers takes less).
+    const qint64 quick = std::max(1, quickTimeoutMs());
+    return 1 + qsizetype((qint64(heardWindowMs()) * 6 + quick * 5 - 1) / (quick * 5));
+}
+
+QList<int> DeviceScanner::listenersFor(int firstAddress, int lastAddress) const
+{
+    QList<int> addresses;
+    for (int a = std::clamp(firstAddress, 1, 255); a <= std::clamp(lastAddress, 1, 255); ++a)
+        addresses << a;
+    return listenersFor(addresses);
+}
+
+QList<int> DeviceScanner::listenersFor(const QList<int> &addresses) const
+{
+    QList<int> listeners;
+    if (addresses.isEmpty() || effectiveMode(addresses.size()) != Mode::Quick)
+        return listeners;
+    // Enough on their own: the range's addresses may answer at once.
+    if (addresses.size() >= quickPassMinimum())
+        return listeners;
+    const qsizetype needed = quickPassMinimum();
+    QSet<int> taken(addresses.cbegin(), addresses.cend());
+    for (DeviceId id : m_bus.devices())
+        taken.insert(m_bus.deviceAddress(id));
+    // Next to the range: above it, then below. Never 248..255, where 255 is every IPC 300's
+    // and TYA 200's own address and would have them all answer at once.
+    int low = 248;
+    int high = 0;
+    for (int a : addresses) {
+        if (a <= 247) {
+            low = std::min(low, a);
+            high = std::max(high, a);
+        }
+    }
+    for (int a = high + 1; a <= 247 && listeners.size() < needed; ++a) {
+        if (!taken.contains(a))
+            listeners << a;
+    }
+    for (int a = low - 1; a >= 1 && listeners.size() < needed; --a) {
+        if (!taken.contains(a))
+            listeners.prepend(a);
+    }
+    return listeners;
 }
 
 int DeviceScanner::probeWords() const
@@ -96,6 +146,7 @@ void DeviceScanner::start(const QList<int> &addresses)
         if (a >= 1 && a <= 255 && !m_addresses.contains(a))
             m_addresses << a;
     }
+    m_total = int(m_addresses.size());
     m_next = 0;
     m_address = 0;
     m_quickPass = effectiveMode(m_addresses.size()) == Mode::Quick;
@@ -103,11 +154,13 @@ void DeviceScanner::start(const QList<int> &addresses)
     m_queued.clear();
     if (!m_quickPass)
         m_thorough = m_addresses;
+    const QList<int> listeners = listenersFor(m_addresses);
+    m_listeners = QSet<int>(listeners.cbegin(), listeners.cend());
+    m_addresses = listeners + m_addresses;
     m_silentAt.clear();
     m_strays = m_bus.strayReplies();
     m_straysSeenMs = m_bus.clockMs();
     m_done = 0;
-    m_total = int(m_addresses.size());
     m_reprobed = 0;
     m_quickCostMs = m_thoroughCostMs = 0;
     m_quickDone = m_thoroughDone = 0;
@@ -143,8 +196,10 @@ void DeviceScanner::nextAddress()
     m_addressWasQuick = m_quickPass;
     m_addressStartedMs = now;
     m_cache.clear();
-    emit progress(m_address, m_done, m_total);
-    ++m_done;
+    if (!m_listeners.contains(m_address)) {
+        emit progress(m_address, m_done, m_total);
+        ++m_done;
+    }
     const auto silent = m_silentAt.constFind(m_address);
     if (!m_quickPass && silent != m_silentAt.cend() && now < *silent + fullTimeoutMs()) {
         // Its answer to the quick probe may still come, and would be taken for this
@@ -162,7 +217,7 @@ void DeviceScanner::suspectRecentSilence(qint64 heardSince)
     // probe ended later still.
     QList<int> recent;
     for (auto it = m_silentAt.cbegin(); it != m_silentAt.cend(); ++it) {
-        if (*it >= heardSince - heardWindowMs() && !m_queued.contains(it.key()))
+        if (*it >= heardSince - heardWindowMs() && !m_queued.contains(it.key()) && !m_listeners.contains(it.key()))
             recent << it.key();
     }
     std::sort(recent.begin(), recent.end());
@@ -183,9 +238,12 @@ void DeviceScanner::beginThoroughPass(qint64 now)
     // Late answers to the last quick probes may still be on their way, and nothing hears
     // them while no request is out: an address that went quiet long before is probed
     // thoroughly first, and listens meanwhile.
+    // A borrowed listener first, so that no address of the range is probed for it.
     int listener = -1;
     for (auto it = m_silentAt.cbegin(); it != m_silentAt.cend(); ++it) {
-        if (now - *it > heardWindowMs() && (listener < 0 || it.key() < listener))
+        const bool better = listener < 0 || m_listeners.contains(it.key()) > m_listeners.contains(listener)
+                || (m_listeners.contains(it.key()) == m_listeners.contains(listener) && it.key() < listener);
+        if (now - *it > heardWindowMs() && better)
             listener = it.key();
     }
     if (listener < 0) {
@@ -196,8 +254,10 @@ void DeviceScanner::beginThoroughPass(qint64 now)
         m_thorough.removeOne(listener);
     } else {
         m_queued.insert(listener);
-        ++m_reprobed;
-        ++m_total;
+        if (!m_listeners.contains(listener)) {
+            ++m_reprobed;
+            ++m_total;
+        }
     }
     m_thorough.prepend(listener);
 }
@@ -229,6 +289,16 @@ bool DeviceScanner::passes(const IdentifyProbe &probe, const ProbeResult &result
 void DeviceScanner::evaluate()
 {
     if (isCancelled()) {
+        nextAddress();
+        return;
+    }
+    if (m_listeners.contains(m_address) && !m_cache.isEmpty()) {
+        // A listener's one probe is all it is for; whatever answered there is not reported.
+        if (m_cache.cbegin()->timedOut && m_bus.state() != LineState::Connected) {
+            m_running = false;
+            finish(Result::Failed, m_bus.lastError());
+            return;
+        }
         nextAddress();
         return;
     }

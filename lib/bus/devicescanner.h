@@ -10,6 +10,10 @@
 // anything was heard (a stray reply, a bad CRC, a reply that fits nothing) the addresses
 // probed within the time a late answer could take are probed again thoroughly, after one
 // thorough probe of an address probed long before, which listens for the last ones.
+//
+// A range too short to have such an address gets listeners: neighbouring addresses
+// (1..247, none of a device on the bus) probed once each before it, whose only job is to
+// have a request out while late answers may come. What answers there is not reported.
 #pragma once
 
 #include "bus/job.h"
@@ -37,10 +41,13 @@ public:
     void setMode(Mode mode) { m_mode = mode; }
     Mode mode() const { return m_mode; }
     // What a scan of these addresses on this line does: Quick is thorough over a Modbus TCP
-    // gateway (which answers every request itself, at its own timeout) and on a range too
-    // short to listen for late answers after its quick pass.
+    // gateway (which answers every request itself, at its own timeout).
     Mode effectiveMode(int firstAddress, int lastAddress) const { return effectiveMode(lastAddress - firstAddress + 1); }
     Mode effectiveMode(qsizetype addresses) const;
+    // The listeners a quick scan of these addresses probes first (none for a range long
+    // enough, or a thorough scan), in the order probed.
+    QList<int> listenersFor(int firstAddress, int lastAddress) const;
+    QList<int> listenersFor(const QList<int> &addresses) const;
     // A silent address's probe: at the full timeout, and at a quick scan's.
     int fullTimeoutMs() const;
     int quickTimeoutMs() const;
@@ -88,6 +95,9 @@ private:
     void beginThoroughPass(qint64 now);
     // A device answers within the full timeout of its request, or not at all.
     int heardWindowMs() const { return fullTimeoutMs(); }
+    // How many silent addresses a quick pass needs for its first one to have gone quiet
+    // long enough to listen after it; also how many listeners a shorter range borrows.
+    qsizetype quickPassMinimum() const;
     bool quickFirstProbe() const;
     int probeWords() const;
 
@@ -95,7 +105,8 @@ private:
     QList<std::shared_ptr<const RegisterMap>> m_families;   // in scan order
     ProtocolInfo m_slowest;                                   // timing that fits every family
     QHash<quint64, ProbeResult> m_cache;                      // (register, words) -> answer
-    QList<int> m_addresses;   // of the quick pass, in order
+    QList<int> m_addresses;   // of the quick pass, in order, the listeners first
+    QSet<int> m_listeners;    // probed once, to hear late answers; never reported
     int m_next = 0;           // quick pass: index of the next address
     int m_address = 0;        // probed now
     int m_pendingTicket = -1;

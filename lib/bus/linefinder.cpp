@@ -65,7 +65,7 @@ void LineFinder::restrict(const QList<int> &baudRates, const QStringList &format
                 continue;
             Setting setting{*format, {}};
             for (const auto &family : std::as_const(m_families)) {
-                if (family->protocol.baudRates.contains(baud) && family->protocol.dataFormats.contains(name))
+                if (family->protocol.supports(baud, name))
                     setting.families << family;
             }
             if (!setting.families.isEmpty())
@@ -103,12 +103,12 @@ qint64 LineFinder::plannedMs(int firstAddress, int lastAddress)
         DeviceScanner scanner(m_bus, m_families);
         scanner.setMode(DeviceScanner::Mode::Quick);   // as nextScan() has it
         const QList<int> addresses = addressesOf(setting, firstAddress, lastAddress);
-        // Hint (waited out to the full timeout), then the quick pass and the listener after
-        // it (a thorough probe of one address); a range too short to listen after its quick
-        // pass is probed thoroughly.
+        // Hint (waited out to the full timeout), then the quick pass (with the listeners a
+        // short range borrows) and the listener after it (a thorough probe of one address).
         total += setting.alwaysAnswered() ? scanner.fullTimeoutMs() : 0;
+        const qsizetype quickPass = addresses.size() + scanner.listenersFor(addresses).size();
         total += scanner.effectiveMode(addresses.size()) == DeviceScanner::Mode::Quick
-                ? qint64(addresses.size()) * scanner.quickTimeoutMs() + scanner.thoroughWorstMs(1)
+                ? qint64(quickPass) * scanner.quickTimeoutMs() + scanner.thoroughWorstMs(1)
                 : scanner.thoroughWorstMs(addresses.size());
     }
     m_bus.setSettings(m_own);

@@ -174,6 +174,12 @@ struct ProtocolInfo
     std::optional<int> busErrorTimeoutMs;
     QString notes;
 
+    // Whether a device of the family can be set to this baud rate and data format ("8E1").
+    bool supports(int baudRate, const QString &dataFormat) const
+    {
+        return baudRates.contains(baudRate) && dataFormats.contains(dataFormat);
+    }
+
     // What one request may really carry: the family's limit, capped by the Modbus RTU
     // frame (256 bytes: 125 words in a read reply, 123 in a 0x10 write), which is also
     // what QModbusRtuSerialClient accepts. IPC 300 and TYA 200 state 127 for both.

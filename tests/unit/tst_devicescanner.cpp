@@ -21,7 +21,10 @@ private slots:
     void lateDevicesAreFound_data();
     void lateDevicesAreFound();
     void thoroughScanGivesEveryAddressTheFullTimeout();
-    void shortRangesAndGatewaysAreScannedThoroughly();
+    void thoroughScanIsTheDefault();
+    void shortRangesBorrowListeners_data();
+    void shortRangesBorrowListeners();
+    void aShortRangeOfPromptDevicesIsProbedOnce();
     void monitoredAddressesGetNoQuickProbe();
 
 private:
@@ -138,22 +141,119 @@ void tst_DeviceScanner::thoroughScanGivesEveryAddressTheFullTimeout()
     QVERIFY2(thorough.lineMs >= 38 * 2 * full, qPrintable(QString::number(thorough.lineMs)));
 }
 
-void tst_DeviceScanner::shortRangesAndGatewaysAreScannedThoroughly()
+void tst_DeviceScanner::thoroughScanIsTheDefault()
 {
     Line line({{"ipc300", 1}}, 38400);
     QVERIFY(line.bus->open());
     DeviceScanner scanner(*line.bus, families().families());
     QCOMPARE(scanner.effectiveMode(1, 247), DeviceScanner::Mode::Thorough);   // not asked for
+    QVERIFY(scanner.listenersFor(1, 3).isEmpty());
     scanner.setMode(DeviceScanner::Mode::Quick);
     QCOMPARE(scanner.effectiveMode(1, 247), DeviceScanner::Mode::Quick);
-    QCOMPARE(scanner.effectiveMode(1, 31), DeviceScanner::Mode::Quick);
-    // Too short to have an address silent long enough to listen after the quick pass.
-    QCOMPARE(scanner.effectiveMode(1, 5), DeviceScanner::Mode::Thorough);
-    QCOMPARE(scanner.effectiveMode(7, 7), DeviceScanner::Mode::Thorough);
-    const Outcome shortRange = scan(line, 1, 5, DeviceScanner::Mode::Quick);
-    QCOMPARE(shortRange.found, QList<int>({1}));
-    for (const FakeTransport::Sent &s : std::as_const(line.transport->sent))
-        QCOMPARE(s.request.timeoutMs, scanner.fullTimeoutMs());
+    QCOMPARE(scanner.effectiveMode(7, 7), DeviceScanner::Mode::Quick);
+    QVERIFY(scanner.listenersFor(1, 247).isEmpty());
+    QVERIFY(scanner.listenersFor(1, 31).isEmpty());
+}
+
+void tst_DeviceScanner::shortRangesBorrowListeners_data()
+{
+    QTest::addColumn<QList<int>>("range");
+    QTest::addColumn<QString>("family");     // the device in the range, answering late
+    QTest::addColumn<int>("address");        // 0: none
+    QTest::addColumn<int>("neighbour");      // a dTRON just outside the range, 0: none
+    QTest::addColumn<bool>("monitored");     // the neighbour is on the bus
+    // A range too short for its own first address to have gone quiet long enough, by the
+    // end of the quick pass, to listen for the last ones' late answers.
+    QTest::newRow("1..3, empty") << QList<int>{1, 2, 3} << QString() << 0 << 0 << false;
+    QTest::newRow("1..3, dtron300 at 3 200 ms late, dtron300 at 5") << QList<int>{1, 2, 3} << "dtron300" << 3 << 5 << false;
+    QTest::newRow("1..3, tya200 at 1 200 ms late, monitored dtron300 at 4") << QList<int>{1, 2, 3} << "tya200" << 1 << 4 << true;
+    // As jumoctl find has it: 255 too, which is no place to look for listeners.
+    QTest::newRow("1, 2 and 255, empty") << QList<int>{1, 2, 255} << QString() << 0 << 0 << false;
+    QTest::newRow("7, tya200 at 7 200 ms late") << QList<int>{7} << "tya200" << 7 << 0 << false;
+    QTest::newRow("245..247, quantrol at 247 200 ms late") << QList<int>{245, 246, 247} << "quantrol" << 247 << 244 << false;
+}
+
+void tst_DeviceScanner::shortRangesBorrowListeners()
+{
+    QFETCH(QList<int>, range);
+    QFETCH(QString, family);
+    QFETCH(int, address);
+    QFETCH(int, neighbour);
+    QFETCH(bool, monitored);
+    QList<QPair<QString, int>> devices;
+    if (address > 0)
+        devices.append({family, address});
+    if (neighbour > 0)
+        devices.append({QStringLiteral("dtron300"), neighbour});
+    Line line(devices, 38400);
+    QVERIFY(line.bus->open());
+    if (monitored)   // polled at its own full timeout, never at the quick one
+        line.bus->addDevice(families().family("dtron300"), neighbour);
+    if (address > 0)
+        line.transport->answerDelayMs.insert(quint8(address), 200);
+
+    DeviceScanner scanner(*line.bus, families().families());
+    scanner.setMode(DeviceScanner::Mode::Quick);
+    const QList<int> listeners = scanner.listenersFor(range);
+    QVERIFY(!listeners.isEmpty());
+    for (int a : listeners) {
+        QVERIFY2(!range.contains(a) && a >= 1 && a <= 247, qPrintable(QString::number(a)));
+        QVERIFY(!(monitored && a == neighbour));
+    }
+
+    QList<int> found;
+    QList<int> shown;
+    int total = -1;
+    connect(&scanner, &DeviceScanner::found, &scanner, [&](int a) { found << a; });
+    connect(&scanner, &DeviceScanner::unknownDevice, &scanner, [&](int a) { found << -a; });
+    connect(&scanner, &DeviceScanner::progress, &scanner, [&](int a, int, int all) {
+        shown << a;
+        total = all;
+    });
+    QSignalSpy finished(&scanner, &Job::finished);
+    const qsizetype before = line.transport->sent.size();
+    const qint64 start = line.clock.nowMs();
+    scanner.start(range);
+    QVERIFY(line.runUntil([&] { return finished.count() == 1; }, 3600 * 1000));
+    QCOMPARE(scanner.result(), Job::Result::Succeeded);
+    const qint64 lineMs = line.clock.nowMs() - start;
+
+    // The range's device and nothing else: what answers at a listener is not reported.
+    QCOMPARE(found, address > 0 ? QList<int>({address}) : QList<int>());
+    QCOMPARE(line.transport->lateAnswersTakenAsOwn, 0);
+    // Progress is the range's.
+    for (int a : std::as_const(shown))
+        QVERIFY2(range.contains(a), qPrintable(QString::number(a)));
+    QCOMPARE(total, range.size() + scanner.reprobed());
+    // The listeners go first, quickly; nothing but the range goes to 248..255, and nothing
+    // to the monitored device at the quick timeout.
+    int firstQuick = -1;
+    for (qsizetype i = before; i < line.transport->sent.size(); ++i) {
+        const FakeTransport::Sent &s = line.transport->sent.at(i);
+        if (firstQuick < 0 && s.request.timeoutMs == scanner.quickTimeoutMs())
+            firstQuick = s.request.slave;
+        QVERIFY2(s.request.slave <= 247 || range.contains(s.request.slave), qPrintable(QString::number(s.request.slave)));
+        if (monitored && s.request.slave == neighbour)
+            QVERIFY(s.request.timeoutMs != scanner.quickTimeoutMs());
+    }
+    QVERIFY2(listeners.contains(firstQuick), qPrintable(QString::number(firstQuick)));
+    const qint64 thorough = scanner.thoroughWorstMs(range.size());
+    if (address == 0)   // an empty range: its addresses silent, quickly
+        QVERIFY2(lineMs * 2 < thorough, qPrintable(QStringLiteral("%1 ms, thorough %2 ms").arg(lineMs).arg(thorough)));
+    qInfo("%s: %.2f s of line time (thorough at most %.2f s), %lld listener(s), %d address(es) probed again",
+          QTest::currentDataTag(), double(lineMs) / 1000.0, double(thorough) / 1000.0, qint64(listeners.size()),
+          scanner.reprobed());
+}
+
+void tst_DeviceScanner::aShortRangeOfPromptDevicesIsProbedOnce()
+{
+    // Addresses that answer at once end their probes early: the listeners span the time a
+    // late answer may take on their own, so the last quick probes need no second look
+    // (jumoctl scan 3..5 with a TYA 200 at 4 probed 3 and 5 again when they did not).
+    Line line({{"tya200", 4}, {"ipc300", 5}}, 38400);
+    const Outcome quick = scan(line, 3, 5, DeviceScanner::Mode::Quick);
+    QCOMPARE(quick.found, QList<int>({4, 5}));
+    QCOMPARE(quick.reprobed, 0);
 }
 
 void tst_DeviceScanner::monitoredAddressesGetNoQuickProbe()

@@ -332,6 +332,18 @@ void tst_Jumoctl::simulatorRefusesBadNumbers()
     QVERIFY(p.waitForFinished(30000));
     QCOMPARE(p.exitCode(), 2);
     QVERIFY(p.readAllStandardError().contains("--delay must be 0..10000 ms"));
+    // A setting the family's devices cannot have: a real one would never answer.
+    QTemporaryDir dir;
+    for (const QStringList &args : {QStringList{"--baud", "38400", "quantrol@3"},
+                                     QStringList{"--baud", "19200", "--format", "8E1", "ipc300@1", "quantrol@3"}}) {
+        p.start(QStringLiteral(JUMO_SIM_PATH), QStringList{"--pty", dir.path()} + args);
+        QVERIFY(p.waitForFinished(30000));
+        QCOMPARE(p.exitCode(), 2);
+        const QString err = QString::fromUtf8(p.readAllStandardError());
+        QVERIFY2(err.contains("'quantrol@3': Quantrol devices cannot be set to ") && err.contains("(they support 9600, 19200 baud, 8N1)"),
+                 qPrintable(err));
+        QVERIFY(!QFile::exists(dir.filePath("master")));
+    }
 }
 
 void tst_Jumoctl::portsByTheirStableNames()
