@@ -1876,8 +1876,16 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
             <numerusform>suche an %n Einstellungen (%1 Baud; %2) nach den Adressen %3..%4 und 255: etwa %5 s, wo nichts spät antwortet</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location line="+9"/>
+        <source>the range is short, so up to %n address(es) next to it are probed once first at each setting, to hear late answers, and not reported</source>
+        <translation>
+            <numerusform>der Bereich ist kurz, daher wird bei jeder Einstellung bis zu %n Adresse daneben zuerst einmal abgefragt, um späte Antworten zu hören, und nicht gemeldet</numerusform>
+            <numerusform>der Bereich ist kurz, daher werden bei jeder Einstellung bis zu %n Adressen daneben zuerst einmal abgefragt, um späte Antworten zu hören, und nicht gemeldet</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+14"/>
+        <location line="+10"/>
         <source>trying %1</source>
         <translation>probiere %1</translation>
     </message>
@@ -2654,12 +2662,12 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
     <message>
         <location line="+0"/>
         <location line="+2"/>
-        <location line="+815"/>
+        <location line="+818"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location line="-815"/>
+        <location line="-818"/>
         <source>Minimum response time configured in the devices, in ms (default 0).</source>
         <translation>In den Geräten eingestellte minimale Antwortzeit in ms (Standard 0).</translation>
     </message>
@@ -2670,12 +2678,12 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
     </message>
     <message>
         <location line="+0"/>
-        <location line="+815"/>
+        <location line="+818"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location line="-812"/>
+        <location line="-815"/>
         <source>Never write to any line (control-room mode; the system configuration can set it for everyone, a station file for one line).</source>
         <translation>Auf keine Leitung schreiben (Leitwarten-Modus; die Systemkonfiguration kann ihn für alle festlegen, eine Stationsdatei für eine Leitung).</translation>
     </message>
@@ -2861,12 +2869,12 @@ Hinter einem Gateway gelten Baudrate und Format seiner seriellen Seite.</transla
         <translation>wie verlangt</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>a Modbus TCP gateway answers every request itself, at its own timeout</source>
         <translation>ein Modbus-TCP-Gateway beantwortet jede Anfrage selbst, nach seiner eigenen Zeitüberschreitung</translation>
     </message>
     <message numerus="yes">
-        <location line="+1"/>
+        <location line="+3"/>
         <source>thorough scan of addresses %1..%2 (%3): a silent address costs two probes at %4 ms, each followed by as long a quiet time; up to %n s</source>
         <translation>
             <numerusform>gründliche Suche der Adressen %1..%2 (%3): eine stille Adresse kostet zwei Abfragen mit %4 ms, nach jeder eine ebenso lange Ruhezeit; bis zu %n s</numerusform>
@@ -3051,7 +3059,7 @@ das nicht antwortet; 4 eine andere Familie an der Adresse.</translation>
         <translation>Name</translation>
     </message>
     <message>
-        <location line="-1249"/>
+        <location line="-1252"/>
         <source>Show Qt&apos;s Modbus messages (CRC errors, timeouts, frames) on stderr.</source>
         <translation>Die Modbus-Meldungen von Qt (CRC-Fehler, Zeitüberschreitungen, Telegramme) auf stderr ausgeben.</translation>
     </message>
@@ -3084,7 +3092,12 @@ das nicht antwortet; 4 eine andere Familie an der Adresse.</translation>
         </translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+11"/>
+        <source>the range is too short to listen for late answers after a quick pass, and the timeout too long to borrow listeners for it</source>
+        <translation>der Bereich ist zu kurz, um nach einem schnellen Durchgang auf späte Antworten zu hören, und die Zeitüberschreitung zu lang, um dafür Nachbaradressen zu borgen</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>scanning %1</source>
         <translation>Suche %1</translation>
     </message>

@@ -179,8 +179,13 @@ std::optional<int> FindCommand::run(const QStringList &arguments)
                      .arg(rates.join(QStringLiteral(", ")), names.join(QLatin1Char(' ')))
                      .arg(m_first)
                      .arg(m_last)
-                     .arg(plannedS)
-          << Qt::endl;
+                     .arg(plannedS);
+    if (m_finder->plannedListeners() > 0)
+        m_err << "; "
+              << tr("the range is short, so up to %n address(es) next to it are probed once first at each setting, "
+                    "to hear late answers, and not reported",
+                    nullptr, int(m_finder->plannedListeners()));
+    m_err << Qt::endl;
     m_finder->start(m_first, m_last);
     return std::nullopt;
 }

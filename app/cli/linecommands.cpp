@@ -582,14 +582,14 @@ std::optional<int> LineCommands::scan(const QStringList &arguments)
                   << Qt::endl;
         });
         connect(line.scanner.get(), &Job::finished, this, [this, i] { scanFinished(i); });
-        m_err << lineMessage(i, scanPlan(*line.scanner, from, to)) << Qt::endl;
+        m_err << lineMessage(i, scanPlan(*line.scanner, *line.bus, from, to)) << Qt::endl;
         line.scanStartedMs = line.bus->clockMs();
         line.scanner->start(from, to);
     }
     return std::nullopt;
 }
 
-QString LineCommands::scanPlan(const DeviceScanner &scanner, int from, int to) const
+QString LineCommands::scanPlan(const DeviceScanner &scanner, const Bus &bus, int from, int to) const
 {
     const int full = scanner.fullTimeoutMs();
     if (scanner.effectiveMode(from, to) == DeviceScanner::Mode::Quick) {
@@ -611,7 +611,10 @@ QString LineCommands::scanPlan(const DeviceScanner &scanner, int from, int to) c
     const qint64 worst = (scanner.thoroughWorstMs(from, to) + 999) / 1000;
     const QString why = scanner.mode() == DeviceScanner::Mode::Thorough
             ? tr("as asked")
-            : tr("a Modbus TCP gateway answers every request itself, at its own timeout");
+            : bus.lineKind() == LineAddress::Kind::ModbusTcp
+            ? tr("a Modbus TCP gateway answers every request itself, at its own timeout")
+            : tr("the range is too short to listen for late answers after a quick pass, and the timeout too long "
+                 "to borrow listeners for it");
     return tr("thorough scan of addresses %1..%2 (%3): a silent address costs two probes at %4 ms, each followed "
               "by as long a quiet time; up to %n s", nullptr, int(worst))
             .arg(from)

@@ -102,7 +102,7 @@ private:
     QString targetName(const Target &target) const;
     void scanFinished(qsizetype index);
     // What the scan will do and cost, said before it starts.
-    QString scanPlan(const DeviceScanner &scanner, int from, int to) const;
+    QString scanPlan(const DeviceScanner &scanner, const Bus &bus, int from, int to) const;
     void showScanProgress();
     void clearScanProgress();
     std::optional<int> scan(const QStringList &arguments);

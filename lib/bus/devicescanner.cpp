@@ -38,10 +38,12 @@ DeviceScanner::Mode DeviceScanner::effectiveMode(qsizetype addresses) const
 {
     if (m_mode == Mode::Thorough || m_bus.lineKind() == LineAddress::Kind::ModbusTcp)
         return Mode::Thorough;
-    // A short range borrows listeners from 1..247 outside it; there are enough but on a
-    // line whose every address is taken.
+    // A short range borrows listeners from 1..247 outside it: a few, unless a long timeout
+    // would make them a scan of their own.
+    if (addresses >= quickPassMinimum())
+        return Mode::Quick;
     const qsizetype free = 247 - addresses - m_bus.devices().size();
-    return addresses + std::max<qsizetype>(0, free) >= quickPassMinimum() ? Mode::Quick : Mode::Thorough;
+    return quickPassMinimum() <= std::min<qsizetype>(maxListeners, free) ? Mode::Quick : Mode::Thorough;
 }
 
 qsizetype DeviceScanner::quickPassMinimum() const
@@ -75,12 +77,15 @@ QList<int> DeviceScanner::listenersFor(const QList<int> &addresses) const
         taken.insert(m_bus.deviceAddress(id));
     // Next to the range: above it, then below. Never 248..255, where 255 is every IPC 300's
     // and TYA 200's own address and would have them all answer at once.
-    int low = 248;
-    int high = 0;
-    for (int a : addresses) {
-        if (a <= 247) {
-            low = std::min(low, a);
-            high = std::max(high, a);
+    int low = 248;   // a range of 248..255 alone borrows from 247 down
+    int high = 247;
+    if (std::any_of(addresses.cbegin(), addresses.cend(), [](int a) { return a <= 247; })) {
+        high = 0;
+        for (int a : addresses) {
+            if (a <= 247) {
+                low = std::min(low, a);
+                high = std::max(high, a);
+            }
         }
     }
     for (int a = high + 1; a <= 247 && listeners.size() < needed; ++a) {
@@ -231,8 +236,10 @@ void DeviceScanner::suspectRecentSilence(qint64 heardSince)
 
 void DeviceScanner::beginThoroughPass(qint64 now)
 {
-    const bool stillListening = std::any_of(m_silentAt.cbegin(), m_silentAt.cend(),
-                                            [&](qint64 at) { return now - at <= heardWindowMs(); });
+    // A borrowed listener's own late answer needs no hearing: nothing of it is reported.
+    bool stillListening = false;
+    for (auto it = m_silentAt.cbegin(); it != m_silentAt.cend(); ++it)
+        stillListening = stillListening || (now - *it <= heardWindowMs() && !m_listeners.contains(it.key()));
     if (!stillListening)
         return;
     // Late answers to the last quick probes may still be on their way, and nothing hears

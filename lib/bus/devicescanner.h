@@ -41,7 +41,9 @@ public:
     void setMode(Mode mode) { m_mode = mode; }
     Mode mode() const { return m_mode; }
     // What a scan of these addresses on this line does: Quick is thorough over a Modbus TCP
-    // gateway (which answers every request itself, at its own timeout).
+    // gateway (which answers every request itself, at its own timeout), and on a range too
+    // short to listen after its quick pass where a long timeout would need more than a few
+    // listeners.
     Mode effectiveMode(int firstAddress, int lastAddress) const { return effectiveMode(lastAddress - firstAddress + 1); }
     Mode effectiveMode(qsizetype addresses) const;
     // The listeners a quick scan of these addresses probes first (none for a range long
@@ -93,6 +95,8 @@ private:
     void suspectRecentSilence(qint64 heardSince);
     // After the quick pass: the thorough probes, the listener first.
     void beginThoroughPass(qint64 now);
+    // More would be a scan of their own: a short range is then probed thoroughly.
+    static constexpr qsizetype maxListeners = 16;
     // A device answers within the full timeout of its request, or not at all.
     int heardWindowMs() const { return fullTimeoutMs(); }
     // How many silent addresses a quick pass needs for its first one to have gone quiet

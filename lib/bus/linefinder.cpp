@@ -96,6 +96,7 @@ qint64 LineFinder::plannedMs(int firstAddress, int lastAddress)
     if (isRunning())
         return m_plannedMs;
     qint64 total = 0;
+    m_plannedListeners = 0;
     for (const Setting &setting : std::as_const(m_settings)) {
         BusSettings at = m_own;
         at.format = setting.format;
@@ -106,7 +107,9 @@ qint64 LineFinder::plannedMs(int firstAddress, int lastAddress)
         // Hint (waited out to the full timeout), then the quick pass (with the listeners a
         // short range borrows) and the listener after it (a thorough probe of one address).
         total += setting.alwaysAnswered() ? scanner.fullTimeoutMs() : 0;
-        const qsizetype quickPass = addresses.size() + scanner.listenersFor(addresses).size();
+        const qsizetype listeners = scanner.listenersFor(addresses).size();
+        m_plannedListeners = std::max(m_plannedListeners, listeners);
+        const qsizetype quickPass = addresses.size() + listeners;
         total += scanner.effectiveMode(addresses.size()) == DeviceScanner::Mode::Quick
                 ? qint64(quickPass) * scanner.quickTimeoutMs() + scanner.thoroughWorstMs(1)
                 : scanner.thoroughWorstMs(addresses.size());

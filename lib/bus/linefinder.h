@@ -57,6 +57,9 @@ public:
     // scan with its listener and the wait after it); late answers make it longer.
     // (Asks the closed bus for each setting's timeouts.)
     qint64 plannedMs(int firstAddress, int lastAddress);
+    // The most listeners a setting's scan borrows next to the range (see DeviceScanner),
+    // as the last plannedMs() found.
+    qsizetype plannedListeners() const { return m_plannedListeners; }
     qint64 remainingMs() const;
     // Line time from start() to the end (so far, while running).
     qint64 elapsedMs() const;
@@ -129,6 +132,7 @@ private:
     qint64 m_startedMs = 0;
     qint64 m_endedMs = -1;
     qint64 m_plannedMs = 0;
+    qsizetype m_plannedListeners = 0;
 };
 
 } // namespace jumo

@@ -153,6 +153,19 @@ void tst_DeviceScanner::thoroughScanIsTheDefault()
     QCOMPARE(scanner.effectiveMode(7, 7), DeviceScanner::Mode::Quick);
     QVERIFY(scanner.listenersFor(1, 247).isEmpty());
     QVERIFY(scanner.listenersFor(1, 31).isEmpty());
+    // 248..255 alone borrow from 247 down, not from 1 up.
+    const QList<int> high = scanner.listenersFor(250, 255);
+    QVERIFY(!high.isEmpty());
+    for (int a : high)
+        QVERIFY2(a <= 247 && a > 247 - high.size(), qPrintable(QString::number(a)));
+    // A long timeout would make the listeners a scan of their own: a short range is then
+    // probed thoroughly.
+    BusSettings slow = line.bus->settings();
+    slow.timeoutMs = 5000;
+    line.bus->setSettings(slow);
+    QCOMPARE(scanner.effectiveMode(1, 3), DeviceScanner::Mode::Thorough);
+    QVERIFY(scanner.listenersFor(1, 3).isEmpty());
+    QCOMPARE(scanner.effectiveMode(1, 247), DeviceScanner::Mode::Quick);
 }
 
 void tst_DeviceScanner::shortRangesBorrowListeners_data()
@@ -237,9 +250,19 @@ void tst_DeviceScanner::shortRangesBorrowListeners()
             QVERIFY(s.request.timeoutMs != scanner.quickTimeoutMs());
     }
     QVERIFY2(listeners.contains(firstQuick), qPrintable(QString::number(firstQuick)));
+    // A listener gets one quick probe, and a thorough one (asked twice when silent) if it
+    // is the one that listens after the quick pass.
+    for (int a : listeners) {
+        int probes = 0;
+        for (qsizetype i = before; i < line.transport->sent.size(); ++i)
+            probes += line.transport->sent.at(i).request.slave == a ? 1 : 0;
+        QVERIFY2(probes <= 3, qPrintable(QStringLiteral("%1: %2 probes").arg(a).arg(probes)));
+    }
     const qint64 thorough = scanner.thoroughWorstMs(range.size());
-    if (address == 0)   // an empty range: its addresses silent, quickly
+    if (address == 0) {   // an empty range: its addresses silent, quickly, and nothing heard
+        QCOMPARE(scanner.reprobed(), 0);
         QVERIFY2(lineMs * 2 < thorough, qPrintable(QStringLiteral("%1 ms, thorough %2 ms").arg(lineMs).arg(thorough)));
+    }
     qInfo("%s: %.2f s of line time (thorough at most %.2f s), %lld listener(s), %d address(es) probed again",
           QTest::currentDataTag(), double(lineMs) / 1000.0, double(thorough) / 1000.0, qint64(listeners.size()),
           scanner.reprobed());
@@ -251,9 +274,19 @@ void tst_DeviceScanner::aShortRangeOfPromptDevicesIsProbedOnce()
     // late answer may take on their own, so the last quick probes need no second look
     // (jumoctl scan 3..5 with a TYA 200 at 4 probed 3 and 5 again when they did not).
     Line line({{"tya200", 4}, {"ipc300", 5}}, 38400);
+    QVERIFY(line.bus->open());
+    const qsizetype before = line.transport->sent.size();
     const Outcome quick = scan(line, 3, 5, DeviceScanner::Mode::Quick);
     QCOMPARE(quick.found, QList<int>({4, 5}));
     QCOMPARE(quick.reprobed, 0);
+    // The silent address once, quickly (probed thoroughly it had two at the full timeout).
+    DeviceScanner timing(*line.bus, families().families());
+    QList<int> timeouts;
+    for (qsizetype i = before; i < line.transport->sent.size(); ++i) {
+        if (line.transport->sent.at(i).request.slave == 3)
+            timeouts << line.transport->sent.at(i).request.timeoutMs;
+    }
+    QCOMPARE(timeouts, QList<int>({timing.quickTimeoutMs()}));
 }
 
 void tst_DeviceScanner::monitoredAddressesGetNoQuickProbe()
