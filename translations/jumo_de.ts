@@ -7063,8 +7063,16 @@ Inbetriebnahme und Überwachung von JUMO-Leistungs- und Prozessreglern über Mod
             <numerusform>Jede Adresse wird mit der vollen Zeitüberschreitung von %1 ms abgefragt: bis zu %n s.</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location line="+21"/>
+        <source>probing %n address(es) next to the range first</source>
+        <translation>
+            <numerusform>zuerst wird %n Adresse neben dem Bereich abgefragt</numerusform>
+            <numerusform>zuerst werden %n Adressen neben dem Bereich abgefragt</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="-47"/>
+        <location line="-68"/>
         <source>From address</source>
         <translation>Von Adresse</translation>
     </message>

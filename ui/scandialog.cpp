@@ -156,7 +156,15 @@ void ScanDialog::start()
     for (QWidget *w : std::initializer_list<QWidget *>{m_from, m_to, m_thorough})
         w->setEnabled(false);   // what the scan does was said, and stays so
     m_startedMs = m_bus->clockMs();
-    m_scanner->start(m_from->value(), std::max(m_from->value(), m_to->value()));
+    // The bar starts from nothing: the borrowed listeners, probed first, say no progress.
+    const int from = m_from->value();
+    const int to = std::max(from, m_to->value());
+    const qsizetype listeners = m_scanner->listenersFor(from, to).size();
+    m_progress->setRange(0, 1);
+    m_progress->setValue(0);
+    m_progress->setFormat(listeners > 0 ? tr("probing %n address(es) next to the range first", nullptr, int(listeners))
+                                        : QString());
+    m_scanner->start(from, to);
 }
 
 bool ScanDialog::isScanning() const
