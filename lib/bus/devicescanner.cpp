@@ -66,28 +66,26 @@ QList<int> DeviceScanner::listenersFor(int firstAddress, int lastAddress) const
 QList<int> DeviceScanner::listenersFor(const QList<int> &addresses) const
 {
     QList<int> listeners;
-    if (addresses.isEmpty() || effectiveMode(addresses.size()) != Mode::Quick)
-        return listeners;
-    // Enough on their own: the range's addresses may answer at once.
-    if (addresses.size() >= quickPassMinimum())
-        return listeners;
+    // A range long enough has none; a short one borrows enough to listen on their own,
+    // since the range's addresses may answer at once.
     const qsizetype needed = quickPassMinimum();
+    if (addresses.isEmpty() || addresses.size() >= needed || effectiveMode(addresses.size()) != Mode::Quick)
+        return listeners;
     QSet<int> taken(addresses.cbegin(), addresses.cend());
     for (DeviceId id : m_bus.devices())
         taken.insert(m_bus.deviceAddress(id));
     // Next to the range: above it, then below. Never 248..255, where 255 is every IPC 300's
     // and TYA 200's own address and would have them all answer at once.
-    int low = 248;   // a range of 248..255 alone borrows from 247 down
-    int high = 247;
-    if (std::any_of(addresses.cbegin(), addresses.cend(), [](int a) { return a <= 247; })) {
-        high = 0;
-        for (int a : addresses) {
-            if (a <= 247) {
-                low = std::min(low, a);
-                high = std::max(high, a);
-            }
+    int low = 248;
+    int high = 0;
+    for (int a : addresses) {
+        if (a <= 247) {
+            low = std::min(low, a);
+            high = std::max(high, a);
         }
     }
+    if (high == 0)
+        high = 247;   // a range of 248..255 alone borrows from 247 down
     for (int a = high + 1; a <= 247 && listeners.size() < needed; ++a) {
         if (!taken.contains(a))
             listeners << a;
@@ -237,10 +235,14 @@ void DeviceScanner::suspectRecentSilence(qint64 heardSince)
 void DeviceScanner::beginThoroughPass(qint64 now)
 {
     // A borrowed listener's own late answer needs no hearing: nothing of it is reported.
-    bool stillListening = false;
-    for (auto it = m_silentAt.cbegin(); it != m_silentAt.cend(); ++it)
-        stillListening = stillListening || (now - *it <= heardWindowMs() && !m_listeners.contains(it.key()));
-    if (!stillListening)
+    const auto stillListening = [&] {
+        for (auto it = m_silentAt.cbegin(); it != m_silentAt.cend(); ++it) {
+            if (now - *it <= heardWindowMs() && !m_listeners.contains(it.key()))
+                return true;
+        }
+        return false;
+    };
+    if (!stillListening())
         return;
     // Late answers to the last quick probes may still be on their way, and nothing hears
     // them while no request is out: an address that went quiet long before is probed
